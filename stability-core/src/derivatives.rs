@@ -1,0 +1,42 @@
+//! The derivative set of the report's notation (§3): the twelve
+//! non-dimensional derivatives of eqs (2)–(4) and the three flight
+//! parameters that enter the stability quartic.
+
+/// A longitudinal derivative set in the report's notation (§3, eqs 2–4).
+///
+/// Forces are made non-dimensional on ½ρSV (velocity derivatives), ½ρSc̄
+/// (acceleration derivatives) and ½ρSVc̄ (rate derivatives); moments carry a
+/// further c̄. Time is measured in the unit τ = m/(½ρSV).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Derivatives {
+    /// x_u = X_u/(½ρSV), eq (9).
+    pub x_u: f64,
+    /// x_w = X_w/(½ρSV), eq (11).
+    pub x_w: f64,
+    /// x_ẇ = X_ẇ/(½ρSc̄), eq (18).
+    pub x_wdot: f64,
+    /// x_q = X_q/(½ρSVc̄), eq (15).
+    pub x_q: f64,
+    /// z_u = Z_u/(½ρSV), eq (10).
+    pub z_u: f64,
+    /// z_w = Z_w/(½ρSV), eq (12).
+    pub z_w: f64,
+    /// z_ẇ = Z_ẇ/(½ρSc̄), eq (19).
+    pub z_wdot: f64,
+    /// z_q = Z_q/(½ρSVc̄), eq (16).
+    pub z_q: f64,
+    /// m_u = M_u/(½ρSVc̄), eq (13).
+    pub m_u: f64,
+    /// m_w = M_w/(½ρSVc̄), eq (14).
+    pub m_w: f64,
+    /// m_ẇ = M_ẇ/(½ρSc̄²), eq (20).
+    pub m_wdot: f64,
+    /// m_q = M_q/(½ρSVc̄²), eq (17).
+    pub m_q: f64,
+    /// Lift coefficient of the undisturbed flight, C_L = W/(½ρV²S) (eq 24).
+    pub c_l: f64,
+    /// Relative density μ₁ = m/(½ρSc̄) (§3).
+    pub mu1: f64,
+    /// Non-dimensional pitching inertia i_B = B/(mc̄²) (§3).
+    pub i_b: f64,
+}

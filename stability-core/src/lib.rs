@@ -1,0 +1,15 @@
+//! Longitudinal (pitch-plane) dynamic stability of aircraft, after
+//! W.B. McCarter, *Note on the longitudinal stability characteristics and
+//! damping in pitch of delta wings at subsonic, transonic and supersonic
+//! speeds*, College of Aeronautics, Cranfield, 1953 ("the report").
+//!
+//! Equation numbers in this crate's documentation are the report's.
+
+pub mod aero;
+pub mod damping;
+pub mod derivatives;
+pub mod geometry;
+pub mod roots;
+pub mod stiffness;
+
+pub use derivatives::Derivatives;
