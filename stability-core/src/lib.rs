@@ -6,9 +6,11 @@
 //! Equation numbers in this crate's documentation are the report's.
 
 pub mod aero;
+pub mod classical;
 pub mod damping;
 pub mod derivatives;
 pub mod geometry;
+pub mod notation;
 pub mod roots;
 pub mod stiffness;
 

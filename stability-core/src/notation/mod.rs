@@ -1,0 +1,3 @@
+//! Derivative notations of other authors (the report's appendix).
+
+pub mod avl;
