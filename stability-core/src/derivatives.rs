@@ -7,7 +7,8 @@
 /// Forces are made non-dimensional on ½ρSV (velocity derivatives), ½ρSc̄
 /// (acceleration derivatives) and ½ρSVc̄ (rate derivatives); moments carry a
 /// further c̄. Time is measured in the unit τ = m/(½ρSV).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, derive_quartic::Quartic)]
+#[quartic(spec = "../specs/quartic.toml")]
 pub struct Derivatives {
     /// x_u = X_u/(½ρSV), eq (9).
     pub x_u: f64,

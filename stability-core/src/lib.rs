@@ -11,7 +11,9 @@ pub mod damping;
 pub mod derivatives;
 pub mod geometry;
 pub mod notation;
+pub mod quartic;
 pub mod roots;
 pub mod stiffness;
 
 pub use derivatives::Derivatives;
+pub use quartic::{Quartic, QuarticGradient};

@@ -1,0 +1,540 @@
+//! From polynomials to flat, allocation-free Rust.
+//!
+//! Several polynomials (outputs) over the same inputs become one straight-line
+//! program:
+//! 1. each symbol divided by becomes one reciprocal, `let inv_mu1 = 1.0 / mu1;`;
+//! 2. products shared between terms are computed once: the most frequent pair
+//!    of factors over all terms of all outputs becomes a `let`, repeatedly,
+//!    until no pair occurs twice (greedy pairwise common-subexpression
+//!    elimination); a `let` left with a single use is folded back;
+//! 3. each output is factored by the factor common to most of its terms,
+//!    recursively (multivariate Horner form), which saves multiplications.
+//!
+//! The program only uses `f64` arithmetic: no allocation, no branch, no call,
+//! nothing from `std`.
+
+use crate::expr::SymbolTable;
+use crate::poly::Poly;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::quote;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// A factor of a term.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+enum Atom {
+    /// An input symbol.
+    Sym(usize),
+    /// The reciprocal of an input symbol.
+    Inv(usize),
+    /// A shared product (index into the temporaries).
+    Tmp(usize),
+}
+
+/// An expression of the emitted program.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Node {
+    /// An input or a `let`.
+    Var(String),
+    Const(BigRational),
+    /// `1.0 / name`.
+    Recip(String),
+    Mul(Vec<Node>),
+    /// Signed summands (`true` = subtract).
+    Sum(Vec<(bool, Node)>),
+}
+
+/// A straight-line program: `let`s, then the outputs.
+#[derive(Clone, Debug)]
+pub struct Program {
+    /// The inputs the program reads, in spec order.
+    pub inputs: Vec<String>,
+    pub lets: Vec<(String, Node)>,
+    /// One expression per output (`Const(0)` for an output that is zero).
+    pub outputs: Vec<(String, Node)>,
+}
+
+type Term = (BigRational, Vec<Atom>);
+
+/// Build the program that evaluates `outputs` (polynomials over `table`).
+pub fn program(table: &SymbolTable, outputs: &[(String, Poly)]) -> Program {
+    let mut terms: Vec<Vec<Term>> = outputs
+        .iter()
+        .map(|(_, p)| {
+            crate::render::ordered_terms(p, table)
+                .into_iter()
+                .map(|(m, c)| {
+                    let mut atoms = Vec::new();
+                    for (id, e) in m.factors() {
+                        let a = if e > 0 { Atom::Sym(id) } else { Atom::Inv(id) };
+                        atoms.extend(std::iter::repeat_n(a, e.unsigned_abs() as usize));
+                    }
+                    atoms.sort();
+                    (c.clone(), atoms)
+                })
+                .collect()
+        })
+        .collect();
+
+    // 2. Greedy pairwise CSE.
+    let mut temps: Vec<Vec<Atom>> = Vec::new();
+    loop {
+        let mut counts: BTreeMap<(Atom, Atom), usize> = BTreeMap::new();
+        for (_, atoms) in terms.iter().flatten() {
+            let mut seen = BTreeSet::new();
+            for i in 0..atoms.len() {
+                for j in i + 1..atoms.len() {
+                    seen.insert((atoms[i], atoms[j]));
+                }
+            }
+            for p in seen {
+                *counts.entry(p).or_default() += 1;
+            }
+        }
+        // The most frequent pair; ties go to the first in atom order.
+        let best = counts
+            .iter()
+            .fold(None::<(&(Atom, Atom), usize)>, |best, (p, &c)| match best {
+                Some((_, bc)) if bc >= c => best,
+                _ => Some((p, c)),
+            });
+        let Some((&(a, b), count)) = best else { break };
+        if count < 2 {
+            break;
+        }
+        let t = Atom::Tmp(temps.len());
+        temps.push(vec![a, b]);
+        for (_, atoms) in terms.iter_mut().flatten() {
+            if take_pair(atoms, a, b) {
+                atoms.push(t);
+                atoms.sort();
+            }
+        }
+    }
+
+    // Fold temporaries used once back into their single user.
+    loop {
+        let mut uses = vec![0usize; temps.len()];
+        for atoms in terms.iter().flatten().map(|(_, a)| a).chain(temps.iter()) {
+            for a in atoms {
+                if let Atom::Tmp(k) = a {
+                    uses[*k] += 1;
+                }
+            }
+        }
+        let Some(k) = (0..temps.len()).rev().find(|&k| uses[k] == 1) else {
+            // Drop the unused ones (left behind by folding) and renumber.
+            let keep: Vec<usize> = (0..temps.len()).filter(|&k| uses[k] > 0).collect();
+            let renumber: BTreeMap<usize, usize> = keep
+                .iter()
+                .enumerate()
+                .map(|(new, &old)| (old, new))
+                .collect();
+            let fix = |atoms: &mut Vec<Atom>| {
+                for a in atoms.iter_mut() {
+                    if let Atom::Tmp(k) = a {
+                        *k = renumber[k];
+                    }
+                }
+                atoms.sort();
+            };
+            let mut kept: Vec<Vec<Atom>> = keep.iter().map(|&k| temps[k].clone()).collect();
+            kept.iter_mut().for_each(fix);
+            for (_, atoms) in terms.iter_mut().flatten() {
+                fix(atoms);
+            }
+            temps = kept;
+            break;
+        };
+        let body = std::mem::take(&mut temps[k]);
+        let splice = |atoms: &mut Vec<Atom>| {
+            if let Some(i) = atoms.iter().position(|a| *a == Atom::Tmp(k)) {
+                atoms.remove(i);
+                atoms.extend(body.iter().copied());
+                atoms.sort();
+                true
+            } else {
+                false
+            }
+        };
+        let mut done = false;
+        for t in temps.iter_mut() {
+            if !done {
+                done = splice(t);
+            }
+        }
+        for (_, atoms) in terms.iter_mut().flatten() {
+            if !done {
+                done = splice(atoms);
+            }
+        }
+    }
+
+    // Names.
+    let n = table.len();
+    let mut used_inputs = BTreeSet::new();
+    let mut used_inverses = BTreeSet::new();
+    let mut note = |a: &Atom| match a {
+        Atom::Sym(id) => {
+            used_inputs.insert(*id);
+        }
+        Atom::Inv(id) => {
+            used_inputs.insert(*id);
+            used_inverses.insert(*id);
+        }
+        Atom::Tmp(_) => {}
+    };
+    for atoms in terms.iter().flatten().map(|(_, a)| a).chain(temps.iter()) {
+        atoms.iter().for_each(&mut note);
+    }
+    let mut taken: BTreeSet<String> = table.symbols.iter().map(|s| s.name.clone()).collect();
+    let mut fresh = |wanted: String| {
+        let mut name = wanted.clone();
+        let mut k = 2;
+        while taken.contains(&name) {
+            name = format!("{wanted}_{k}");
+            k += 1;
+        }
+        taken.insert(name.clone());
+        name
+    };
+    let inv_names: BTreeMap<usize, String> = used_inverses
+        .iter()
+        .map(|&id| (id, fresh(format!("inv_{}", table.get(id).name))))
+        .collect();
+    // Exponents of each temporary over the input symbols, for its name.
+    let mut temp_exps: Vec<Vec<i32>> = Vec::new();
+    let mut temp_names: Vec<String> = Vec::new();
+    for (k, body) in temps.iter().enumerate() {
+        let mut e = vec![0i32; n];
+        for a in body {
+            match a {
+                Atom::Sym(id) => e[*id] += 1,
+                Atom::Inv(id) => e[*id] -= 1,
+                Atom::Tmp(j) => {
+                    for (i, x) in temp_exps[*j].iter().enumerate() {
+                        e[i] += x;
+                    }
+                }
+            }
+        }
+        let name = product_name(table, &e);
+        let name = if name.len() > 48 {
+            format!("t{k}")
+        } else {
+            name
+        };
+        temp_names.push(fresh(name));
+        temp_exps.push(e);
+    }
+    let atom_node = |a: &Atom| match a {
+        Atom::Sym(id) => Node::Var(table.get(*id).name.clone()),
+        Atom::Inv(id) => Node::Var(inv_names[id].clone()),
+        Atom::Tmp(k) => Node::Var(temp_names[*k].clone()),
+    };
+
+    let mut lets: Vec<(String, Node)> = inv_names
+        .iter()
+        .map(|(id, name)| (name.clone(), Node::Recip(table.get(*id).name.clone())))
+        .collect();
+    for (k, body) in temps.iter().enumerate() {
+        lets.push((
+            temp_names[k].clone(),
+            Node::Mul(body.iter().map(atom_node).collect()),
+        ));
+    }
+    let outputs = outputs
+        .iter()
+        .zip(terms)
+        .map(|((name, _), ts)| (name.clone(), horner(ts, &atom_node)))
+        .collect();
+    Program {
+        inputs: used_inputs
+            .iter()
+            .map(|&id| table.get(id).name.clone())
+            .collect(),
+        lets,
+        outputs,
+    }
+}
+
+/// Remove one `a` and one `b` from a sorted multiset; false if not both there.
+fn take_pair(atoms: &mut Vec<Atom>, a: Atom, b: Atom) -> bool {
+    let Some(i) = atoms.iter().position(|x| *x == a) else {
+        return false;
+    };
+    let j = atoms
+        .iter()
+        .enumerate()
+        .position(|(k, x)| k != i && *x == b);
+    let Some(j) = j else { return false };
+    let (hi, lo) = if i > j { (i, j) } else { (j, i) };
+    atoms.remove(hi);
+    atoms.remove(lo);
+    true
+}
+
+/// A readable name for a product of symbols: `m_q_over_i_b`, `x_u_z_w`,
+/// `inv_i_b_mu1`, `mu1_sq`.
+fn product_name(table: &SymbolTable, e: &[i32]) -> String {
+    let part = |id: usize, k: i32| {
+        let name = &table.get(id).name;
+        match k {
+            1 => name.clone(),
+            2 => format!("{name}_sq"),
+            3 => format!("{name}_cube"),
+            _ => format!("{name}_pow{k}"),
+        }
+    };
+    let num: Vec<String> = e
+        .iter()
+        .enumerate()
+        .filter(|(_, k)| **k > 0)
+        .map(|(i, k)| part(i, *k))
+        .collect();
+    let den: Vec<String> = e
+        .iter()
+        .enumerate()
+        .filter(|(_, k)| **k < 0)
+        .map(|(i, k)| part(i, -*k))
+        .collect();
+    match (num.is_empty(), den.is_empty()) {
+        (false, true) => num.join("_"),
+        (false, false) => format!("{}_over_{}", num.join("_"), den.join("_")),
+        (true, false) => format!("inv_{}", den.join("_")),
+        (true, true) => "one".into(),
+    }
+}
+
+/// Multivariate Horner form: factor the atom common to most terms, recursively.
+fn horner(terms: Vec<Term>, atom_node: &impl Fn(&Atom) -> Node) -> Node {
+    let mut summands: Vec<(bool, Node)> = Vec::new();
+    horner_into(terms, atom_node, &mut summands);
+    match summands.len() {
+        0 => Node::Const(BigRational::zero()),
+        1 if !summands[0].0 => summands
+            .pop()
+            .map(|(_, n)| n)
+            .unwrap_or(Node::Const(BigRational::zero())),
+        _ => Node::Sum(summands),
+    }
+}
+
+fn horner_into(terms: Vec<Term>, atom_node: &impl Fn(&Atom) -> Node, out: &mut Vec<(bool, Node)>) {
+    if terms.is_empty() {
+        return;
+    }
+    let mut counts: BTreeMap<Atom, usize> = BTreeMap::new();
+    for (_, atoms) in &terms {
+        let distinct: BTreeSet<&Atom> = atoms.iter().collect();
+        for a in distinct {
+            *counts.entry(*a).or_default() += 1;
+        }
+    }
+    let best = counts
+        .iter()
+        .fold(None::<(&Atom, usize)>, |best, (a, &c)| match best {
+            Some((_, bc)) if bc >= c => best,
+            _ => Some((a, c)),
+        });
+    match best {
+        Some((&a, c)) if c >= 2 => {
+            let (mut with, without): (Vec<Term>, Vec<Term>) =
+                terms.into_iter().partition(|(_, atoms)| atoms.contains(&a));
+            for (_, atoms) in with.iter_mut() {
+                if let Some(i) = atoms.iter().position(|x| *x == a) {
+                    atoms.remove(i);
+                }
+            }
+            // a·(Σ with) — pull a common sign out so that `a * (-x - y)`
+            // reads `-(a * (x + y))`.
+            let all_negative = with.iter().all(|(c, _)| c.is_negative());
+            if all_negative {
+                for (c, _) in with.iter_mut() {
+                    *c = -c.clone();
+                }
+            }
+            let inner = horner(with, atom_node);
+            let product = match inner {
+                Node::Const(ref k) if k.is_one() => atom_node(&a),
+                Node::Mul(mut fs) => {
+                    fs.insert(0, atom_node(&a));
+                    Node::Mul(fs)
+                }
+                other => Node::Mul(vec![atom_node(&a), other]),
+            };
+            out.push((all_negative, product));
+            horner_into(without, atom_node, out);
+        }
+        _ => {
+            for (c, atoms) in terms {
+                let neg = c.is_negative();
+                let mag = c.abs();
+                let mut factors: Vec<Node> = Vec::new();
+                if !mag.is_one() || atoms.is_empty() {
+                    factors.push(Node::Const(mag));
+                }
+                factors.extend(atoms.iter().map(atom_node));
+                let node = if factors.len() == 1 {
+                    factors.pop().unwrap_or(Node::Const(BigRational::one()))
+                } else {
+                    Node::Mul(factors)
+                };
+                out.push((neg, node));
+            }
+        }
+    }
+}
+
+// ------------------------------------------------------------------ emission
+
+fn ident(name: &str) -> Ident {
+    Ident::new(name, Span::call_site())
+}
+
+/// An `f64` literal for a rational: exact decimals where the value is a
+/// dyadic fraction, `(p / q)` otherwise (folded by the compiler).
+fn constant(r: &BigRational) -> TokenStream {
+    let dyadic = {
+        let d = r.denom();
+        let power_of_two = d.magnitude().count_ones() == 1;
+        power_of_two && d.bits() <= 53 && r.numer().bits() <= 53
+    };
+    if dyadic {
+        let v = r.to_f64().unwrap_or(0.0);
+        let lit = Literal::f64_unsuffixed(v);
+        quote!(#lit)
+    } else {
+        let p = Literal::f64_unsuffixed(r.numer().to_f64().unwrap_or(0.0));
+        let q = Literal::f64_unsuffixed(r.denom().to_f64().unwrap_or(1.0));
+        quote!((#p / #q))
+    }
+}
+
+/// Tokens of a node.
+pub fn node_tokens(node: &Node) -> TokenStream {
+    match node {
+        Node::Var(name) => {
+            let i = ident(name);
+            quote!(#i)
+        }
+        Node::Const(r) => constant(r),
+        Node::Recip(name) => {
+            let i = ident(name);
+            quote!(1.0 / #i)
+        }
+        Node::Mul(fs) => {
+            let parts: Vec<TokenStream> = fs
+                .iter()
+                .map(|f| match f {
+                    Node::Sum(_) | Node::Recip(_) => {
+                        let t = node_tokens(f);
+                        quote!((#t))
+                    }
+                    _ => node_tokens(f),
+                })
+                .collect();
+            let mut ts = TokenStream::new();
+            for (i, p) in parts.into_iter().enumerate() {
+                if i > 0 {
+                    ts.extend(quote!(*));
+                }
+                ts.extend(p);
+            }
+            ts
+        }
+        Node::Sum(items) => {
+            let mut ts = TokenStream::new();
+            for (i, (neg, n)) in items.iter().enumerate() {
+                let t = match n {
+                    Node::Sum(_) => {
+                        let t = node_tokens(n);
+                        quote!((#t))
+                    }
+                    _ => node_tokens(n),
+                };
+                match (i, neg) {
+                    (0, false) => ts.extend(t),
+                    (0, true) => ts.extend(quote!(-#t)),
+                    (_, false) => ts.extend(quote!(+ #t)),
+                    (_, true) => ts.extend(quote!(- #t)),
+                }
+            }
+            ts
+        }
+    }
+}
+
+/// The statements of a program: reads of the used inputs from `source`
+/// (e.g. `self`), the `let`s, and a `let` per non-zero output named by
+/// `output_name`.
+pub fn statements(
+    program: &Program,
+    source: &TokenStream,
+    output_name: impl Fn(&str) -> String,
+) -> TokenStream {
+    let mut ts = TokenStream::new();
+    for name in &program.inputs {
+        let i = ident(name);
+        ts.extend(quote!(let #i = #source.#i;));
+    }
+    for (name, node) in &program.lets {
+        let i = ident(name);
+        let v = node_tokens(node);
+        ts.extend(quote!(let #i = #v;));
+    }
+    for (name, node) in &program.outputs {
+        if matches!(node, Node::Const(c) if c.is_zero()) {
+            continue;
+        }
+        let i = ident(&output_name(name));
+        let v = node_tokens(node);
+        ts.extend(quote!(let #i = #v;));
+    }
+    ts
+}
+
+/// The value of an output in the program's final expression: its `let`
+/// name, or `0.0` when it is identically zero.
+pub fn output_ref(
+    program: &Program,
+    index: usize,
+    output_name: impl Fn(&str) -> String,
+) -> TokenStream {
+    let (name, node) = &program.outputs[index];
+    if matches!(node, Node::Const(c) if c.is_zero()) {
+        quote!(0.0)
+    } else {
+        let i = ident(&output_name(name));
+        quote!(#i)
+    }
+}
+
+/// Count of floating-point operations of a program (additions,
+/// multiplications, divisions), for the docs and for the tests that keep
+/// the generator honest.
+pub fn op_count(program: &Program) -> (usize, usize, usize) {
+    fn walk(n: &Node, c: &mut (usize, usize, usize)) {
+        match n {
+            Node::Var(_) | Node::Const(_) => {}
+            Node::Recip(_) => c.2 += 1,
+            Node::Mul(fs) => {
+                c.1 += fs.len().saturating_sub(1);
+                fs.iter().for_each(|f| walk(f, c));
+            }
+            Node::Sum(items) => {
+                c.0 += items.len().saturating_sub(1);
+                if items.first().is_some_and(|(neg, _)| *neg) {
+                    c.0 += 1;
+                }
+                items.iter().for_each(|(_, f)| walk(f, c));
+            }
+        }
+    }
+    let mut c = (0, 0, 0);
+    for (_, n) in program.lets.iter().chain(program.outputs.iter()) {
+        walk(n, &mut c);
+    }
+    c
+}
