@@ -311,6 +311,8 @@ fn product_name(table: &SymbolTable, e: &[i32]) -> String {
 fn horner(terms: Vec<Term>, atom_node: &impl Fn(&Atom) -> Node) -> Node {
     let mut summands: Vec<(bool, Node)> = Vec::new();
     horner_into(terms, atom_node, &mut summands);
+    // Added terms first: `z - 1.0` reads better than `-1.0 + z`.
+    summands.sort_by_key(|(neg, _)| *neg);
     match summands.len() {
         0 => Node::Const(BigRational::zero()),
         1 if !summands[0].0 => summands

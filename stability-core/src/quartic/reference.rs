@@ -168,3 +168,60 @@ pub fn natural_radius(v: &[f64; 15]) -> f64 {
     let s2 = (mu1 / i_b * m_w).abs().sqrt().max(1.0);
     (s1 * s2).sqrt().max(1.0)
 }
+
+/// A dual number a + bε with ε² = 0: pushing one through [`eq6_by_hand`]
+/// gives a coefficient and its derivative along the seeded direction
+/// (forward-mode differentiation), independently of the symbolic engine.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dual(pub f64, pub f64);
+
+impl From<f64> for Dual {
+    fn from(x: f64) -> Self {
+        Dual(x, 0.0)
+    }
+}
+
+impl Add for Dual {
+    type Output = Dual;
+    fn add(self, o: Dual) -> Dual {
+        Dual(self.0 + o.0, self.1 + o.1)
+    }
+}
+
+impl Sub for Dual {
+    type Output = Dual;
+    fn sub(self, o: Dual) -> Dual {
+        Dual(self.0 - o.0, self.1 - o.1)
+    }
+}
+
+impl Mul for Dual {
+    type Output = Dual;
+    fn mul(self, o: Dual) -> Dual {
+        Dual(self.0 * o.0, self.0 * o.1 + self.1 * o.0)
+    }
+}
+
+impl Div for Dual {
+    type Output = Dual;
+    fn div(self, o: Dual) -> Dual {
+        Dual(self.0 / o.0, (self.1 * o.0 - self.0 * o.1) / (o.0 * o.0))
+    }
+}
+
+impl Neg for Dual {
+    type Output = Dual;
+    fn neg(self) -> Dual {
+        Dual(-self.0, -self.1)
+    }
+}
+
+/// The gradient of [`eq6_by_hand`] by fifteen dual-number passes: row `i`
+/// is ∂[A..E]/∂(input `i`).
+pub fn gradient_by_dual_numbers(v: &[f64; 15]) -> [[f64; 5]; 15] {
+    std::array::from_fn(|i| {
+        let seeded: [Dual; 15] =
+            std::array::from_fn(|j| Dual(v[j], if i == j { 1.0 } else { 0.0 }));
+        eq6_by_hand(&seeded).map(|d| d.1)
+    })
+}

@@ -1,0 +1,61 @@
+//! The generated coefficient and gradient functions allocate nothing: a
+//! counting global allocator sees no allocation while they run.
+
+use stability_core::{Derivatives, Quartic, QuarticGradient};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::hint::black_box;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+// SAFETY: forwards to the system allocator, counting calls.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        // SAFETY: same contract as the caller's.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: same contract as the caller's.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+#[test]
+fn quartic_coefficients_and_gradient_do_not_allocate() {
+    let d = Derivatives {
+        x_u: -0.03,
+        x_w: 0.25,
+        x_wdot: 0.01,
+        x_q: 0.02,
+        z_u: -0.62,
+        z_w: -3.2,
+        z_wdot: -0.6,
+        z_q: -1.5,
+        m_u: 0.01,
+        m_w: -0.55,
+        m_wdot: -0.25,
+        m_q: -0.6,
+        c_l: 0.3,
+        mu1: 50.0,
+        i_b: 0.08,
+    };
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    let mut acc = 0.0;
+    for i in 0..1000 {
+        let mut di = d;
+        di.mu1 += i as f64;
+        let q = Quartic::from_derivatives(black_box(&di));
+        let g = QuarticGradient::of(black_box(&di));
+        acc += q.b + g.rows[5][1];
+    }
+    let after = ALLOCATIONS.load(Ordering::SeqCst);
+    black_box(acc);
+    assert_eq!(after - before, 0, "allocations in the hot path");
+}
