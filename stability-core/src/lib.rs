@@ -7,12 +7,16 @@
 
 pub mod aero;
 pub mod classical;
+pub mod criteria;
 pub mod damping;
 pub mod derivatives;
 pub mod geometry;
+pub mod modes;
 pub mod notation;
 pub mod quartic;
+pub mod response;
 pub mod roots;
+pub mod sensitivity;
 pub mod stiffness;
 
 pub use derivatives::Derivatives;

@@ -1,0 +1,360 @@
+//! Stability tests and standards: Routh's test (§4), the report's damping
+//! standard (§8, eq 41), static and manoeuvre margins (§9, eq 42) and the
+//! MIL-F-8785C damping levels.
+
+use crate::{Derivatives, Quartic};
+use serde::Serialize;
+use std::f64::consts::{LN_2, PI};
+
+/// The report's constant of eq (8): cycles to half amplitude = 0.11032·s/(−r);
+/// exactly ln 2/(2π).
+pub const CYCLES_CONSTANT: f64 = LN_2 / (2.0 * PI);
+
+// ------------------------------------------------------------------ §4 Routh
+
+/// Routh's test of §4.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Routh {
+    /// R = BCD − AD² − B²E.
+    pub discriminant: f64,
+    /// All of A, B, C, D, E and R have the same (strict) sign.
+    pub stable: bool,
+}
+
+impl Routh {
+    /// §4: "the necessary and sufficient conditions for stability are that
+    /// all coefficients of the quartic and in addition Routh's discriminant
+    /// R = BCD − AD² − B²E must be of the same sign".
+    pub fn of(q: &Quartic) -> Routh {
+        let r = q.b * q.c * q.d - q.a * q.d * q.d - q.b * q.b * q.e;
+        let all = [q.a, q.b, q.c, q.d, q.e, r];
+        let stable = all.iter().all(|&x| x > 0.0) || all.iter().all(|&x| x < 0.0);
+        Routh {
+            discriminant: r,
+            stable,
+        }
+    }
+}
+
+// --------------------------------------------------- §8 the damping standard
+
+/// The short-period approximations of §8 and §9.
+///
+/// Neglecting x_u, z_ẇ/μ₁ and z_q/μ₁ (and the couplings with u), B and C of
+/// eq (6) reduce to the short-period pair's
+/// `B ≈ −z_w − m_θ̇/i_B` and `C ≈ (m_q z_w − μ₁m_w)/i_B`, with
+/// m_θ̇ = m_q + m_ẇ; then λ² + Bλ + C = 0 gives the short period, and
+/// eq (7)–(8) with s ≈ √C give the report's
+/// `cycles to half amplitude ≈ 0.2206·√((m_q z_w − μ₁m_w)/i_B) / (−z_w − m_θ̇/i_B)`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ShortPeriodApproximation {
+    /// −z_w − m_θ̇/i_B.
+    pub b: f64,
+    /// (m_q z_w − μ₁ m_w)/i_B.
+    pub c: f64,
+    /// The root r + is of λ² + bλ + c (s ≥ 0; s = 0 when the pair is real).
+    pub re: f64,
+    pub im: f64,
+    /// §8: 0.2206·√c/b (s ≈ √C), when c > 0 and b > 0.
+    pub cycles_to_half_report: Option<f64>,
+    /// 0.11032·s/(−r) with the pair's exact s, when it decays.
+    pub cycles_to_half: Option<f64>,
+    /// §9 / Fig 32: ω̄ ≈ √(−m_w/(μ₁ i_B)), when m_w < 0.
+    pub frequency_parameter: Option<f64>,
+}
+
+impl ShortPeriodApproximation {
+    pub fn of(d: &Derivatives) -> Self {
+        let m_thetadot = d.m_q + d.m_wdot;
+        let b = -d.z_w - m_thetadot / d.i_b;
+        let c = (d.m_q * d.z_w - d.mu1 * d.m_w) / d.i_b;
+        let disc = c - b * b / 4.0;
+        let (re, im) = if disc >= 0.0 {
+            (-b / 2.0, disc.sqrt())
+        } else {
+            // Two real roots: report the slower (the one that decides decay).
+            let root = disc.abs().sqrt();
+            let slow = if b >= 0.0 {
+                -b / 2.0 + root
+            } else {
+                -b / 2.0 - root
+            };
+            (slow, 0.0)
+        };
+        let cycles_to_half_report =
+            (c > 0.0 && b > 0.0).then(|| 2.0 * CYCLES_CONSTANT * c.sqrt() / b);
+        let cycles_to_half = (im > 0.0 && re < 0.0).then(|| CYCLES_CONSTANT * im / -re);
+        let frequency_parameter = (d.m_w < 0.0).then(|| (-d.m_w / (d.mu1 * d.i_b)).sqrt());
+        ShortPeriodApproximation {
+            b,
+            c,
+            re,
+            im,
+            cycles_to_half_report,
+            cycles_to_half,
+            frequency_parameter,
+        }
+    }
+}
+
+/// The damping standard of §8: the short period must damp to half amplitude
+/// in one cycle.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DampingStandard {
+    /// m_θ̇ = m_q + m_ẇ.
+    pub m_thetadot: f64,
+    /// Eq (41): m_θ̇max ≈ −z_w i_B − 0.2206·√(i_B(m_q z_w − μ₁m_w)).
+    pub m_thetadot_max: Option<f64>,
+    /// Δm_θ̇ = m_θ̇max − m_θ̇: positive when the standard is met (§8).
+    pub margin: Option<f64>,
+    /// The same limit without the report's s ≈ √C: the m_θ̇ at which the
+    /// pair λ² + Bλ + C of §8 takes exactly one cycle to halve,
+    /// B = 2√(C/(1 + (2π/ln 2)²)) = 0.21930·√C.
+    pub m_thetadot_max_exact: Option<f64>,
+    pub margin_exact: Option<f64>,
+}
+
+impl DampingStandard {
+    pub fn of(d: &Derivatives) -> Self {
+        let m_thetadot = d.m_q + d.m_wdot;
+        let g = d.i_b * (d.m_q * d.z_w - d.mu1 * d.m_w);
+        let (max, max_exact) = if g >= 0.0 {
+            let k_exact = 2.0 / (1.0 + (2.0 * PI / LN_2).powi(2)).sqrt();
+            (
+                Some(-d.z_w * d.i_b - 2.0 * CYCLES_CONSTANT * g.sqrt()),
+                Some(-d.z_w * d.i_b - k_exact * g.sqrt()),
+            )
+        } else {
+            (None, None)
+        };
+        DampingStandard {
+            m_thetadot,
+            m_thetadot_max: max,
+            margin: max.map(|m| m - m_thetadot),
+            m_thetadot_max_exact: max_exact,
+            margin_exact: max_exact.map(|m| m - m_thetadot),
+        }
+    }
+}
+
+// ----------------------------------------------------------- §9 the margins
+
+/// Static margin from E, eq (42): `E = 2(μ₁/i_B)·C_L²·a·K_n`, a = ∂C_L/∂α.
+pub fn static_margin_from_e(e: f64, d: &Derivatives, lift_slope: f64) -> Option<f64> {
+    let den = 2.0 * d.mu1 / d.i_b * d.c_l * d.c_l * lift_slope;
+    (den != 0.0 && den.is_finite()).then(|| e / den)
+}
+
+/// E from the static margin, eq (42).
+pub fn e_from_static_margin(k_n: f64, d: &Derivatives, lift_slope: f64) -> f64 {
+    2.0 * d.mu1 / d.i_b * d.c_l * d.c_l * lift_slope * k_n
+}
+
+/// Manoeuvre margin from C (§9, "with some approximation"):
+/// `C ≈ (μ₁/i_B)·a·H_m`.
+///
+/// The report prints `C = −(μ₁/i_B)(∂C_L/∂α)H_m`; with C ≈ (m_q z_w −
+/// μ₁m_w)/i_B, z_w ≈ −a and H_m = −m_w/a − m_q/μ₁ (the stick-fixed
+/// manoeuvre margin, positive when stable), the sign is `+`: a stable
+/// aircraft has C > 0 and H_m > 0.
+pub fn manoeuvre_margin_from_c(c: f64, d: &Derivatives, lift_slope: f64) -> Option<f64> {
+    let den = d.mu1 / d.i_b * lift_slope;
+    (den != 0.0 && den.is_finite()).then(|| c / den)
+}
+
+/// C from the manoeuvre margin (§9).
+pub fn c_from_manoeuvre_margin(h_m: f64, d: &Derivatives, lift_slope: f64) -> f64 {
+    d.mu1 / d.i_b * lift_slope * h_m
+}
+
+/// The margins of §9 from the quartic's coefficients.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Margins {
+    /// K_n (stick fixed), eq (42).
+    pub static_margin: Option<f64>,
+    /// H_m (stick fixed), §9.
+    pub manoeuvre_margin: Option<f64>,
+}
+
+impl Margins {
+    pub fn of(q: &Quartic, d: &Derivatives, lift_slope: f64) -> Self {
+        Margins {
+            static_margin: static_margin_from_e(q.e, d, lift_slope),
+            manoeuvre_margin: manoeuvre_margin_from_c(q.c, d, lift_slope),
+        }
+    }
+}
+
+// ------------------------------------------------------------- MIL-F-8785C
+
+/// MIL-F-8785C flight-phase categories (§1.5): A non-terminal, rapid
+/// manoeuvring or precise tracking; B non-terminal, gradual; C terminal
+/// (take-off, approach, landing).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Category {
+    A,
+    B,
+    C,
+}
+
+/// A flying-qualities level: 1 (adequate), 2 (adequate with increased
+/// workload), 3 (controllable), or worse than 3.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+pub enum Level {
+    One,
+    Two,
+    Three,
+    WorseThanThree,
+}
+
+impl Level {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Level::One => "Level 1",
+            Level::Two => "Level 2",
+            Level::Three => "Level 3",
+            Level::WorseThanThree => "worse than Level 3",
+        }
+    }
+}
+
+/// MIL-F-8785C §3.2.2.1.2, Table IV: the short-period damping-ratio
+/// limits (ζ_min, ζ_max) of each level. Category A and C: Level 1 0.35–1.30,
+/// Level 2 0.25–2.00; Category B: Level 1 0.30–2.00, Level 2 0.20–2.00;
+/// Level 3: ζ ≥ 0.15.
+pub fn short_period_level(zeta: f64, category: Category) -> Level {
+    let (l1, l2) = match category {
+        Category::A | Category::C => ((0.35, 1.30), (0.25, 2.00)),
+        Category::B => ((0.30, 2.00), (0.20, 2.00)),
+    };
+    let within = |(lo, hi): (f64, f64)| zeta >= lo && zeta <= hi;
+    if within(l1) {
+        Level::One
+    } else if within(l2) {
+        Level::Two
+    } else if zeta >= 0.15 {
+        Level::Three
+    } else {
+        Level::WorseThanThree
+    }
+}
+
+/// MIL-F-8785C §3.2.1.2: phugoid stability. Level 1 ζ ≥ 0.04, Level 2
+/// ζ ≥ 0, Level 3 time to double amplitude ≥ 55 s. `time_to_double_s` is
+/// needed only when ζ < 0 (a real divergent root has ζ = −1).
+pub fn phugoid_level(zeta: f64, time_to_double_s: Option<f64>) -> Level {
+    if zeta >= 0.04 {
+        Level::One
+    } else if zeta >= 0.0 {
+        Level::Two
+    } else if time_to_double_s.is_some_and(|t| t >= 55.0) {
+        Level::Three
+    } else {
+        Level::WorseThanThree
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn delta() -> Derivatives {
+        Derivatives {
+            x_u: -0.03,
+            x_w: 0.25,
+            x_wdot: 0.0,
+            x_q: 0.0,
+            z_u: -0.62,
+            z_w: -3.2,
+            z_wdot: -0.6,
+            z_q: -1.5,
+            m_u: 0.0,
+            m_w: -0.55,
+            m_wdot: -0.25,
+            m_q: -0.6,
+            c_l: 0.3,
+            mu1: 50.0,
+            i_b: 0.08,
+        }
+    }
+
+    #[test]
+    fn routh_of_a_product_of_stable_quadratics() {
+        // (λ² + 2λ + 5)(λ² + 0.1λ + 0.2): A=1, B=2.1, C=5.4, D=0.9, E=1;
+        // R = 2.1·5.4·0.9 − 0.81 − 4.41 = 4.986.
+        let q = Quartic::from_array([1.0, 2.1, 5.4, 0.9, 1.0]);
+        let r = Routh::of(&q);
+        assert!((r.discriminant - 4.986).abs() < 1e-12);
+        assert!(r.stable);
+        // (λ² − 0.1λ + 5)(λ² + 2λ + 1): B = 1.9, C = 5.8, D = 9.9, E = 5;
+        // R = 1.9·5.8·9.9 − 98.01 − 18.05 = −6.962 < 0.
+        let q = Quartic::from_array([1.0, 1.9, 5.8, 9.9, 5.0]);
+        let r = Routh::of(&q);
+        assert!((r.discriminant + 6.962).abs() < 1e-9);
+        assert!(!r.stable);
+    }
+
+    #[test]
+    fn eq41_limit_gives_one_cycle_in_the_report_approximation() {
+        let mut d = delta();
+        let std = DampingStandard::of(&d);
+        let max = std.m_thetadot_max.unwrap();
+        // Put m_θ̇ at the limit (through m_ẇ, which leaves C unchanged):
+        d.m_wdot = max - d.m_q;
+        let approx = ShortPeriodApproximation::of(&d);
+        assert!((approx.cycles_to_half_report.unwrap() - 1.0).abs() < 1e-12);
+        // and the exact second-order limit gives exactly one cycle:
+        let mut d2 = delta();
+        d2.m_wdot = std.m_thetadot_max_exact.unwrap() - d2.m_q;
+        let approx2 = ShortPeriodApproximation::of(&d2);
+        assert!((approx2.cycles_to_half.unwrap() - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn short_period_approximation_by_hand() {
+        let d = delta();
+        let a = ShortPeriodApproximation::of(&d);
+        // B = 3.2 + 0.85/0.08 = 13.825; C = (1.92 + 27.5)/0.08 = 367.75
+        assert!((a.b - 13.825).abs() < 1e-12);
+        assert!((a.c - 367.75).abs() < 1e-10);
+        assert!(
+            (a.cycles_to_half_report.unwrap() - 0.2206356 * 367.75f64.sqrt() / 13.825).abs() < 1e-6
+        );
+    }
+
+    #[test]
+    fn margins_round_trip() {
+        let d = delta();
+        let e = e_from_static_margin(0.12, &d, 3.0);
+        assert!((static_margin_from_e(e, &d, 3.0).unwrap() - 0.12).abs() < 1e-15);
+        let c = c_from_manoeuvre_margin(0.2, &d, 3.0);
+        assert!((manoeuvre_margin_from_c(c, &d, 3.0).unwrap() - 0.2).abs() < 1e-15);
+    }
+
+    #[test]
+    fn eq42_from_the_expansion_of_e() {
+        // With m_u = 0 and z_u = −2C_L (no Mach effect): E = −2(μ₁/i_B)C_L²m_w,
+        // and m_w = −a·K_n, so K_n = E·i_B/(2μ₁C_L²a) recovers it.
+        let mut d = delta();
+        d.z_u = -2.0 * d.c_l;
+        let a = 3.0;
+        d.m_w = -a * 0.1;
+        let q = Quartic::from_derivatives(&d);
+        assert!((static_margin_from_e(q.e, &d, a).unwrap() - 0.1).abs() < 1e-14);
+    }
+
+    #[test]
+    fn mil_levels() {
+        assert_eq!(short_period_level(0.5, Category::A), Level::One);
+        assert_eq!(short_period_level(0.3, Category::A), Level::Two);
+        assert_eq!(short_period_level(0.3, Category::B), Level::One);
+        assert_eq!(short_period_level(1.5, Category::C), Level::Two);
+        assert_eq!(short_period_level(0.16, Category::B), Level::Three);
+        assert_eq!(short_period_level(0.1, Category::B), Level::WorseThanThree);
+        assert_eq!(short_period_level(2.5, Category::B), Level::Three);
+        assert_eq!(phugoid_level(0.05, None), Level::One);
+        assert_eq!(phugoid_level(0.01, None), Level::Two);
+        assert_eq!(phugoid_level(-0.01, Some(60.0)), Level::Three);
+        assert_eq!(phugoid_level(-0.01, Some(30.0)), Level::WorseThanThree);
+    }
+}

@@ -1,0 +1,316 @@
+//! The modes of motion from the quartic's roots (§4, eq 8; §9's ω̄).
+//!
+//! The roots are in units of 1/τ (τ = m/(½ρSV), §3). Two complex pairs are
+//! the short-period oscillation (the faster pair) and the phugoid (the
+//! slower); either may split into two real roots, which are reported as
+//! aperiodic modes. For a root λ = r ± is:
+//!
+//! - period `2π/s` (τ units);
+//! - time to half amplitude `ln 2/(−r)` when r < 0 (time to double
+//!   amplitude `ln 2/r` when r > 0);
+//! - cycles to half amplitude `(ln 2/2π)·s/(−r) = 0.11032·s/(−r)` (eq 8);
+//! - damping ratio `ζ = −r/|λ|`, undamped frequency `ωₙ = |λ|`;
+//! - frequency parameter `ω̄ = 2πf·c̄/V = s/μ₁` (§9), since f = s/(2πτ)
+//!   and τ·V/c̄ = μ₁.
+
+use num_complex::Complex64;
+use serde::Serialize;
+use std::f64::consts::{LN_2, PI};
+
+/// Which motion a root (or pair) is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ModeName {
+    /// The faster oscillatory pair.
+    ShortPeriod,
+    /// The slower oscillatory pair (the report's "long period" mode).
+    Phugoid,
+    /// A real root.
+    Aperiodic,
+}
+
+impl ModeName {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            ModeName::ShortPeriod => "short_period",
+            ModeName::Phugoid => "phugoid",
+            ModeName::Aperiodic => "aperiodic",
+        }
+    }
+}
+
+/// What an aperiodic root is the remnant of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Origin {
+    /// The short-period pair split into two real roots.
+    ShortPeriod,
+    /// The phugoid split into two real roots.
+    Phugoid,
+    /// All four roots are real.
+    Unknown,
+}
+
+/// One mode: an oscillatory pair (represented by its root with s > 0) or a
+/// real root. Quantities in units of τ; `None` where undefined.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Mode {
+    pub name: ModeName,
+    /// For an aperiodic root, the pair it came from.
+    pub origin: Option<Origin>,
+    /// r (1/τ).
+    pub re: f64,
+    /// s ≥ 0 (1/τ); 0 for a real root.
+    pub im: f64,
+    /// 2π/s (τ), oscillatory modes only.
+    pub period: Option<f64>,
+    /// ln 2/(−r) (τ) when the mode decays.
+    pub time_to_half: Option<f64>,
+    /// ln 2/r (τ) when the mode grows.
+    pub time_to_double: Option<f64>,
+    /// 0.11032·s/(−r), eq (8): oscillatory and decaying modes.
+    pub cycles_to_half: Option<f64>,
+    /// 0.11032·s/r: oscillatory and growing modes.
+    pub cycles_to_double: Option<f64>,
+    /// ζ = −r/|λ| (zero roots: undefined).
+    pub damping_ratio: Option<f64>,
+    /// ωₙ = |λ| (1/τ).
+    pub natural_frequency: f64,
+    /// ω̄ = s/μ₁ = 2πf·c̄/V (§9), oscillatory modes only.
+    pub frequency_parameter: Option<f64>,
+}
+
+impl Mode {
+    /// The mode of root `lam` (its conjugate is implied), named `name`.
+    pub fn of_root(lam: Complex64, name: ModeName, origin: Option<Origin>, mu1: f64) -> Mode {
+        let r = lam.re;
+        let s = lam.im.abs();
+        let wn = lam.norm();
+        let oscillatory = s > 0.0;
+        let positive = |x: f64| (x.is_finite() && x > 0.0).then_some(x);
+        Mode {
+            name,
+            origin,
+            re: r,
+            im: s,
+            period: if oscillatory {
+                positive(2.0 * PI / s)
+            } else {
+                None
+            },
+            time_to_half: if r < 0.0 { positive(LN_2 / -r) } else { None },
+            time_to_double: if r > 0.0 { positive(LN_2 / r) } else { None },
+            cycles_to_half: if oscillatory && r < 0.0 {
+                positive(LN_2 / (2.0 * PI) * s / -r)
+            } else {
+                None
+            },
+            cycles_to_double: if oscillatory && r > 0.0 {
+                positive(LN_2 / (2.0 * PI) * s / r)
+            } else {
+                None
+            },
+            damping_ratio: if wn > 0.0 { Some(-r / wn) } else { None },
+            natural_frequency: wn,
+            frequency_parameter: if oscillatory && mu1 > 0.0 {
+                positive(s / mu1)
+            } else {
+                None
+            },
+        }
+    }
+
+    /// Whether the mode grows (r > 0).
+    pub fn is_divergent(&self) -> bool {
+        self.re > 0.0
+    }
+
+    /// The same mode with times in seconds, given τ in seconds.
+    pub fn in_seconds(&self, tau: f64) -> ModeSeconds {
+        ModeSeconds {
+            re: self.re / tau,
+            im: self.im / tau,
+            period: self.period.map(|p| p * tau),
+            time_to_half: self.time_to_half.map(|t| t * tau),
+            time_to_double: self.time_to_double.map(|t| t * tau),
+            natural_frequency: self.natural_frequency / tau,
+        }
+    }
+}
+
+/// A mode's dimensional quantities (seconds, 1/s).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ModeSeconds {
+    pub re: f64,
+    pub im: f64,
+    pub period: Option<f64>,
+    pub time_to_half: Option<f64>,
+    pub time_to_double: Option<f64>,
+    pub natural_frequency: f64,
+}
+
+/// The modes of a quartic, fastest first.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Modes {
+    pub modes: Vec<Mode>,
+}
+
+impl Modes {
+    /// Identify the modes of the four roots (any order; complex roots come in
+    /// conjugate pairs). `mu1` converts s to the frequency parameter.
+    ///
+    /// Two pairs: the pair of larger modulus is the short period. One pair
+    /// and two reals: the pair is the short period if its modulus exceeds
+    /// both reals' (the phugoid has split), else the phugoid (the short
+    /// period has split). Four reals: aperiodic, origin unknown.
+    pub fn identify(roots: &[Complex64; 4], mu1: f64) -> Modes {
+        let mut pairs: Vec<Complex64> = roots.iter().filter(|z| z.im > 0.0).copied().collect();
+        let mut reals: Vec<f64> = roots.iter().filter(|z| z.im == 0.0).map(|z| z.re).collect();
+        pairs.sort_by(|a, b| b.norm().total_cmp(&a.norm()));
+        reals.sort_by(|a, b| b.abs().total_cmp(&a.abs()));
+        let mut modes = Vec::new();
+        match pairs.len() {
+            2 => {
+                modes.push(Mode::of_root(pairs[0], ModeName::ShortPeriod, None, mu1));
+                modes.push(Mode::of_root(pairs[1], ModeName::Phugoid, None, mu1));
+            }
+            1 => {
+                let pair = pairs[0];
+                let pair_is_fast = reals.iter().all(|r| pair.norm() >= r.abs());
+                let (name, origin) = if pair_is_fast {
+                    (ModeName::ShortPeriod, Origin::Phugoid)
+                } else {
+                    (ModeName::Phugoid, Origin::ShortPeriod)
+                };
+                let pair_mode = Mode::of_root(pair, name, None, mu1);
+                let real_modes = reals.iter().map(|&r| {
+                    Mode::of_root(
+                        Complex64::new(r, 0.0),
+                        ModeName::Aperiodic,
+                        Some(origin),
+                        mu1,
+                    )
+                });
+                if pair_is_fast {
+                    modes.push(pair_mode);
+                    modes.extend(real_modes);
+                } else {
+                    modes.extend(real_modes);
+                    modes.push(pair_mode);
+                }
+            }
+            _ => {
+                modes.extend(reals.iter().map(|&r| {
+                    Mode::of_root(
+                        Complex64::new(r, 0.0),
+                        ModeName::Aperiodic,
+                        Some(Origin::Unknown),
+                        mu1,
+                    )
+                }));
+            }
+        }
+        Modes { modes }
+    }
+
+    /// The short-period mode, if the short period is oscillatory.
+    pub fn short_period(&self) -> Option<&Mode> {
+        self.modes.iter().find(|m| m.name == ModeName::ShortPeriod)
+    }
+
+    /// The phugoid, if it is oscillatory.
+    pub fn phugoid(&self) -> Option<&Mode> {
+        self.modes.iter().find(|m| m.name == ModeName::Phugoid)
+    }
+
+    /// Whether any mode grows.
+    pub fn any_divergent(&self) -> bool {
+        self.modes.iter().any(Mode::is_divergent)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn c(re: f64, im: f64) -> Complex64 {
+        Complex64::new(re, im)
+    }
+
+    #[test]
+    fn eq8_constant_is_ln2_over_2pi() {
+        // The report prints 0.11032.
+        assert!((LN_2 / (2.0 * PI) - 0.11032).abs() < 5e-6);
+    }
+
+    #[test]
+    fn a_damped_pair_by_hand() {
+        // λ = −0.5 ± 4i: period 2π/4, time to half ln2/0.5,
+        // cycles = (ln2/2π)·4/0.5 = 0.8825424006, ζ = 0.5/√16.25.
+        let m = Mode::of_root(c(-0.5, 4.0), ModeName::ShortPeriod, None, 50.0);
+        assert!((m.period.unwrap() - 1.570_796_326_794_896_6).abs() < 1e-15);
+        assert!((m.time_to_half.unwrap() - 1.386_294_361_119_890_6).abs() < 1e-15);
+        assert!((m.cycles_to_half.unwrap() - 0.882_542_400_610_606_4).abs() < 1e-12);
+        assert!((m.damping_ratio.unwrap() - 0.124_034_734_589_208_4).abs() < 1e-15);
+        assert!((m.frequency_parameter.unwrap() - 0.08).abs() < 1e-16);
+        assert_eq!(m.time_to_double, None);
+        // cycles to half = time to half / period
+        assert!(
+            (m.cycles_to_half.unwrap() - m.time_to_half.unwrap() / m.period.unwrap()).abs() < 1e-15
+        );
+    }
+
+    #[test]
+    fn a_growing_pair_doubles() {
+        let m = Mode::of_root(c(0.2, 3.0), ModeName::ShortPeriod, None, 50.0);
+        assert_eq!(m.time_to_half, None);
+        assert!((m.time_to_double.unwrap() - LN_2 / 0.2).abs() < 1e-15);
+        assert!(m.damping_ratio.unwrap() < 0.0);
+        assert!(m.is_divergent());
+    }
+
+    #[test]
+    fn two_pairs_fastest_is_short_period() {
+        let roots = [c(-0.01, 0.05), c(-0.01, -0.05), c(-1.0, 5.0), c(-1.0, -5.0)];
+        let m = Modes::identify(&roots, 50.0);
+        assert_eq!(m.modes.len(), 2);
+        assert_eq!(m.short_period().unwrap().re, -1.0);
+        assert_eq!(m.phugoid().unwrap().im, 0.05);
+    }
+
+    #[test]
+    fn a_split_short_period_leaves_the_phugoid_oscillatory() {
+        let roots = [c(-3.0, 0.0), c(-0.8, 0.0), c(-0.01, 0.05), c(-0.01, -0.05)];
+        let m = Modes::identify(&roots, 50.0);
+        assert!(m.short_period().is_none());
+        assert!(m.phugoid().is_some());
+        let aperiodic: Vec<_> = m
+            .modes
+            .iter()
+            .filter(|x| x.name == ModeName::Aperiodic)
+            .collect();
+        assert_eq!(aperiodic.len(), 2);
+        assert!(
+            aperiodic
+                .iter()
+                .all(|x| x.origin == Some(Origin::ShortPeriod))
+        );
+    }
+
+    #[test]
+    fn a_split_phugoid_leaves_the_short_period_oscillatory() {
+        let roots = [c(-1.0, 5.0), c(-1.0, -5.0), c(0.02, 0.0), c(-0.05, 0.0)];
+        let m = Modes::identify(&roots, 50.0);
+        assert!(m.short_period().is_some());
+        assert!(m.any_divergent());
+        assert_eq!(m.modes[1].origin, Some(Origin::Phugoid));
+    }
+
+    #[test]
+    fn seconds_scale_by_tau() {
+        let m = Mode::of_root(c(-0.5, 4.0), ModeName::ShortPeriod, None, 50.0);
+        let s = m.in_seconds(2.0);
+        assert_eq!(s.period, Some(m.period.unwrap() * 2.0));
+        assert_eq!(s.re, -0.25);
+    }
+}
