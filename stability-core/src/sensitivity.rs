@@ -26,7 +26,9 @@ pub fn root_sensitivities(
         + 3.0 * q.b.abs() * lam.norm_sqr()
         + 2.0 * q.c.abs() * lam.norm()
         + q.d.abs();
-    if !(dp.norm() > 1e-12 * scale) {
+    // (written so that a NaN scale also refuses)
+    let simple = dp.norm() > 1e-12 * scale;
+    if !simple {
         return None;
     }
     let powers = [
