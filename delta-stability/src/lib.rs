@@ -5,6 +5,8 @@ pub mod cmd;
 pub mod diag;
 pub mod fmt;
 pub mod input;
+pub mod output;
+pub mod plot;
 
 /// Why a command failed.
 #[derive(Debug)]
