@@ -6,6 +6,7 @@
 //! Equation numbers in this crate's documentation are the report's.
 
 pub mod aero;
+pub mod analysis;
 pub mod classical;
 pub mod criteria;
 pub mod damping;

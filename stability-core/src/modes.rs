@@ -248,7 +248,7 @@ mod tests {
         // λ = −0.5 ± 4i: period 2π/4, time to half ln2/0.5,
         // cycles = (ln2/2π)·4/0.5 = 0.8825424006, ζ = 0.5/√16.25.
         let m = Mode::of_root(c(-0.5, 4.0), ModeName::ShortPeriod, None, 50.0);
-        assert!((m.period.unwrap() - 1.570_796_326_794_896_6).abs() < 1e-15);
+        assert!((m.period.unwrap() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
         assert!((m.time_to_half.unwrap() - 1.386_294_361_119_890_6).abs() < 1e-15);
         assert!((m.cycles_to_half.unwrap() - 0.882_542_400_610_606_4).abs() < 1e-12);
         assert!((m.damping_ratio.unwrap() - 0.124_034_734_589_208_4).abs() < 1e-15);
