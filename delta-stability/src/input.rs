@@ -10,11 +10,18 @@
 //! c_l = 0.3          # lift coefficient, eq (24)
 //! mu1 = 50.0         # relative density m/(½ρSc̄) > 0
 //! i_b = 0.08         # pitching inertia B/(mc̄²) > 0
+//! [dimensional]      # optional: times in seconds
+//! V = 250.0          # true airspeed, m/s
+//! rho = 0.41         # air density, kg/m³
+//! S = 93.0           # wing area, m²
+//! chord = 6.6        # the chord of the derivatives and of μ₁, m
+//! mass = 12000.0     # kg
 //! ```
 
 use crate::diag::InputError;
 use serde::Deserialize;
 use stability_core::Derivatives;
+use stability_core::analysis::Dimensional;
 use toml::Spanned;
 
 /// The notations a derivative file may be written in.
@@ -26,6 +33,19 @@ struct RawFile {
     notation: Spanned<String>,
     derivatives: Spanned<RawDerivatives>,
     flight: Spanned<RawFlight>,
+    dimensional: Option<Spanned<RawDimensional>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawDimensional {
+    #[serde(rename = "V")]
+    v: Spanned<f64>,
+    rho: Spanned<f64>,
+    #[serde(rename = "S")]
+    s: Spanned<f64>,
+    chord: Spanned<f64>,
+    mass: Spanned<f64>,
 }
 
 #[derive(Deserialize)]
@@ -59,6 +79,10 @@ pub struct DerivativeFile {
     pub path: String,
     pub notation: String,
     pub derivatives: Derivatives,
+    /// The dimensional flight condition, when given.
+    pub dimensional: Option<Dimensional>,
+    /// Inconsistencies worth a user's attention (not errors).
+    pub warnings: Vec<String>,
 }
 
 /// Read a derivative file from disk.
@@ -183,9 +207,58 @@ pub fn parse(path: &str, text: &str) -> Result<DerivativeFile, InputError> {
         mu1: g(&f.mu1),
         i_b: g(&f.i_b),
     };
+    let mut warnings = Vec::new();
+    let dimensional = match &raw.dimensional {
+        None => None,
+        Some(dim) => {
+            let dm = dim.get_ref();
+            for (name, v) in [
+                ("V", &dm.v),
+                ("rho", &dm.rho),
+                ("S", &dm.s),
+                ("chord", &dm.chord),
+                ("mass", &dm.mass),
+            ] {
+                let x = *v.get_ref();
+                if !(x.is_finite() && x > 0.0) {
+                    return Err(InputError::at(
+                        path,
+                        text,
+                        v.span(),
+                        format!("[dimensional] {name}"),
+                        format!("must be a positive finite number, not {x}"),
+                    ));
+                }
+            }
+            let dims = Dimensional {
+                v: g(&dm.v),
+                rho: g(&dm.rho),
+                s: g(&dm.s),
+                chord: g(&dm.chord),
+                mass: g(&dm.mass),
+            };
+            let mu1 = dims.mu1();
+            if (mu1 - derivatives.mu1).abs() > 0.01 * derivatives.mu1 {
+                warnings.push(format!(
+                    "{path}: [flight] mu1 = {} but [dimensional] gives m/(½ρSc̄) = {mu1:.4}; the quartic uses mu1 = {}",
+                    derivatives.mu1, derivatives.mu1
+                ));
+            }
+            let c_l = dims.c_l();
+            if (c_l - derivatives.c_l).abs() > 0.01 * derivatives.c_l.abs().max(1e-3) {
+                warnings.push(format!(
+                    "{path}: [flight] c_l = {} but [dimensional] gives W/(½ρV²S) = {c_l:.4} (g = 9.80665 m/s²); the quartic uses c_l = {}",
+                    derivatives.c_l, derivatives.c_l
+                ));
+            }
+            Some(dims)
+        }
+    };
     Ok(DerivativeFile {
         path: path.to_string(),
         notation: notation.clone(),
         derivatives,
+        dimensional,
+        warnings,
     })
 }

@@ -23,7 +23,15 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// The stability quartic A λ⁴ + B λ³ + C λ² + D λ + E = 0 of a derivative set (eqs 4–6).
+    /// The stability quartic of a derivative set, its roots, modes and criteria.
+    ///
+    /// Prints the coefficients of A λ⁴ + B λ³ + C λ² + D λ + E = 0 (eqs 4–6),
+    /// Routh's discriminant (§4), the four roots (units of 1/τ) and the modes:
+    /// short period, phugoid, or aperiodic where a pair splits — with period,
+    /// time to half (or double) amplitude, cycles to half amplitude (eq 8),
+    /// damping ratio, undamped frequency and frequency parameter ω̄ (§9);
+    /// then the report's one-cycle damping standard (§8, eq 41) and the
+    /// MIL-F-8785C damping levels.
     ///
     /// FILE is TOML in the report's notation:
     ///
@@ -35,6 +43,12 @@ enum Command {
     ///   c_l = 0.3       # lift coefficient of the level flight, eq (24)
     ///   mu1 = 50.0      # relative density m/(½ρSc̄)
     ///   i_b = 0.08      # pitching inertia B/(mc̄²)
+    ///   [dimensional]   # optional: adds times in seconds (τ = m/(½ρSV))
+    ///   V = 250.0       # m/s
+    ///   rho = 0.41      # kg/m³
+    ///   S = 93.0        # m²
+    ///   chord = 6.6     # m, the chord of the derivatives and of μ₁
+    ///   mass = 12000.0  # kg
     ///
     /// The coefficients are the exact expansion of the determinant of eq (4);
     /// the report's printed eq (6) has three misprints, corrected here (see
@@ -43,9 +57,46 @@ enum Command {
     Quartic {
         /// The derivative file (TOML).
         file: String,
-        /// Print one JSON object (key `coefficients`: A B C D E) instead of a table.
+        /// Print one JSON object (keys coefficients, routh_discriminant, stable, roots, modes, criteria) instead of a table.
         #[arg(long)]
         json: bool,
+    },
+    /// The longitudinal response (§11) to an elevon step or an initial disturbance.
+    ///
+    /// Solved exactly from the state-space form of eqs (2) (matrix
+    /// exponential of the augmented system; not a fixed-step integrator).
+    /// Time t̂ is in units of τ. For a step, the CSV also carries the
+    /// report's two-degree-of-freedom closed form, eqs (44)–(45).
+    Response {
+        /// The derivative file (TOML), as for `quartic`.
+        file: String,
+        /// `step`: an elevon applied instantaneously (a step of m₀); `initial`: a disturbance ŵ(0) = w0.
+        #[arg(long, default_value = "step")]
+        input: String,
+        /// End time, in units of τ.
+        #[arg(long)]
+        until: f64,
+        /// Number of intervals.
+        #[arg(long, default_value_t = 400)]
+        steps: usize,
+        /// Size of the moment step m₀ (eqs 2 units).
+        #[arg(long, default_value_t = 1.0)]
+        m0: f64,
+        /// Initial ŵ = w/V for `--input initial`.
+        #[arg(long, default_value_t = 0.01)]
+        w0: f64,
+        /// Set z_q = z_ẇ = 0 (the report's Fig 38).
+        #[arg(long)]
+        neglect_zq_zwdot: bool,
+        /// Hold û = 0: two degrees of freedom (§11).
+        #[arg(long)]
+        neglect_u: bool,
+        /// Write the time history as CSV.
+        #[arg(long)]
+        csv: Option<String>,
+        /// Write a plot as SVG.
+        #[arg(long)]
+        svg: Option<String>,
     },
 }
 
@@ -53,6 +104,29 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Quartic { file, json } => cmd::quartic::run(&file, json),
+        Command::Response {
+            file,
+            input,
+            until,
+            steps,
+            m0,
+            w0,
+            neglect_zq_zwdot,
+            neglect_u,
+            csv,
+            svg,
+        } => cmd::response::run(&cmd::response::Options {
+            file,
+            input,
+            until,
+            steps,
+            m0,
+            w0,
+            neglect_zq_zwdot,
+            neglect_u,
+            csv,
+            svg,
+        }),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -112,3 +112,138 @@ fn help_teaches_the_file_format() {
     assert!(text.contains("notation = \"report\""), "{text}");
     assert!(text.contains("docs/errata.md"), "{text}");
 }
+
+#[test]
+fn quartic_json_has_roots_modes_and_routh() {
+    let out = bin()
+        .current_dir(root())
+        .args([
+            "quartic",
+            "examples/tailless-delta-60-dimensional.toml",
+            "--json",
+        ])
+        .output()
+        .expect("run");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(!text.contains("NaN"));
+    let v: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let q: Vec<f64> = ["A", "B", "C", "D", "E"]
+        .iter()
+        .map(|k| v["coefficients"][k].as_f64().unwrap())
+        .collect();
+    // Routh's discriminant from the printed coefficients, by hand: BCD − AD² − B²E
+    let r = q[1] * q[2] * q[3] - q[0] * q[3] * q[3] - q[1] * q[1] * q[4];
+    assert!((v["routh_discriminant"].as_f64().unwrap() - r).abs() <= 1e-9 * r.abs());
+    assert_eq!(v["stable"], serde_json::Value::Bool(true));
+    let roots = v["roots"].as_array().unwrap();
+    assert_eq!(roots.len(), 4);
+    for z in roots {
+        let (re, im) = (z["re"].as_f64().unwrap(), z["im"].as_f64().unwrap());
+        // P(λ) ≈ 0 relative to its terms
+        let l = num_complex::Complex64::new(re, im);
+        let p = (((l * q[0] + q[1]) * l + q[2]) * l + q[3]) * l + q[4];
+        let scale: f64 = q
+            .iter()
+            .enumerate()
+            .map(|(k, c)| c.abs() * l.norm().powi(4 - k as i32))
+            .sum();
+        assert!(p.norm() <= 1e-12 * scale);
+        assert!(z["re_s"].is_number() && z["im_s"].is_number());
+    }
+    let modes = v["modes"].as_array().unwrap();
+    let names: Vec<&str> = modes.iter().map(|m| m["name"].as_str().unwrap()).collect();
+    assert_eq!(names, ["short_period", "phugoid"]);
+    for m in modes {
+        for key in [
+            "re",
+            "im",
+            "period",
+            "time_to_half",
+            "cycles_to_half",
+            "damping_ratio",
+            "natural_frequency",
+            "period_s",
+            "time_to_half_s",
+        ] {
+            assert!(m[key].is_number(), "{key} in {m}");
+        }
+        // eq (8): cycles = (ln 2/2π)·s/(−r), and seconds = τ units × τ
+        let (re, im) = (m["re"].as_f64().unwrap(), m["im"].as_f64().unwrap());
+        let cycles = std::f64::consts::LN_2 / (2.0 * std::f64::consts::PI) * im / -re;
+        assert!((m["cycles_to_half"].as_f64().unwrap() - cycles).abs() <= 1e-12 * cycles);
+        let tau = 12000.0 / (0.5 * 0.4135 * 60.0 * 280.0);
+        let p = m["period"].as_f64().unwrap();
+        assert!((m["period_s"].as_f64().unwrap() - p * tau).abs() <= 1e-12 * p * tau);
+    }
+}
+
+#[test]
+fn a_degenerate_quartic_is_a_clear_error() {
+    // z_wdot = mu1 makes A = 0.
+    let ex = example().replace("z_wdot = -0.6", "z_wdot = 50.0");
+    let (code, err) = run_on(&ex);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("A = 1 − z_ẇ/μ₁ = 0"), "{err}");
+}
+
+#[test]
+fn response_writes_csv_and_svg() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let csv = dir.path().join("r.csv");
+    let svg = dir.path().join("r.svg");
+    let out = bin()
+        .current_dir(root())
+        .args([
+            "response",
+            "examples/tailless-delta-45.toml",
+            "--input",
+            "step",
+            "--until",
+            "2",
+            "--steps",
+            "100",
+        ])
+        .arg("--csv")
+        .arg(&csv)
+        .arg("--svg")
+        .arg(&svg)
+        .output()
+        .expect("run");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("t_hat,u_hat,w_hat,q_hat,theta,w_hat_eq45")
+    );
+    assert_eq!(lines.count(), 101);
+    let svg = std::fs::read_to_string(&svg).unwrap();
+    assert!(svg.contains("<svg") && svg.contains("t̂ = t/τ"));
+}
+
+#[test]
+fn response_rejects_a_bad_input_kind() {
+    let out = bin()
+        .current_dir(root())
+        .args([
+            "response",
+            "examples/tailless-delta-45.toml",
+            "--input",
+            "ramp",
+            "--until",
+            "1",
+        ])
+        .output()
+        .expect("run");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--input must be `step` or `initial`"));
+}

@@ -1,3 +1,4 @@
 //! The subcommands.
 
 pub mod quartic;
+pub mod response;
