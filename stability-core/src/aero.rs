@@ -1,1 +1,505 @@
-//! (in progress)
+//! The aerodynamic coefficients against Mach number (§6): zero-lift drag
+//! C_D0, drag due to lift K = ∂C_D/∂C_L² (eq 22), lift slope a = ∂C_L/∂α and
+//! aerodynamic centre H₀ (fraction of the M.A.C. aft of its leading edge) —
+//! each with its exact Mach derivative, which the stiffness derivatives of
+//! eqs (9)–(14), (27)–(29) need.
+//!
+//! The report read these off curves (Figs 1–6) that did not survive. Here
+//! each comes either from the user's table ([`Table`], Mach against value,
+//! monotone cubic Hermite interpolation) or from a named, documented default
+//! method ([`defaults`]); `docs/models.md` sets out the choices.
+
+use crate::geometry::Planform;
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// A coefficient's value and its Mach derivative at one Mach number.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Value {
+    pub value: f64,
+    /// d(value)/dM, exact (analytic, or the interpolant's own derivative).
+    pub d_mach: f64,
+}
+
+impl Value {
+    pub fn new(value: f64, d_mach: f64) -> Value {
+        Value { value, d_mach }
+    }
+}
+
+/// Why a coefficient cannot be given.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum AeroError {
+    #[error("a table needs at least two points, not {0}")]
+    TooShort(usize),
+    #[error("the table's Mach and value columns have different lengths ({0} and {1})")]
+    Lengths(usize, usize),
+    #[error(
+        "row {row}: Mach {mach} does not increase on the row before ({previous}); the Mach column must increase strictly"
+    )]
+    NotIncreasing {
+        row: usize,
+        mach: f64,
+        previous: f64,
+    },
+    #[error("row {row}: {what} {value} is not a finite number")]
+    NonFinite {
+        row: usize,
+        what: &'static str,
+        value: f64,
+    },
+    #[error("Mach {mach} is outside the table's range [{lo}, {hi}] (tables are not extrapolated)")]
+    OutsideTable { mach: f64, lo: f64, hi: f64 },
+    #[error("Mach {0} is outside the default models' range [0, 3]")]
+    OutsideDefaults(f64),
+}
+
+/// A table of a coefficient against Mach number, interpolated by the
+/// monotone piecewise cubic Hermite scheme of F.N. Fritsch and R.E. Carlson,
+/// "Monotone piecewise cubic interpolation", SIAM J. Numer. Anal. 17(2),
+/// 1980: C¹, exact at the nodes, and without overshoot — where the data are
+/// monotone on an interval, so is the interpolant.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    mach: Vec<f64>,
+    value: Vec<f64>,
+    slope: Vec<f64>,
+}
+
+impl Table {
+    /// A table from its columns; rows count from 1 in errors.
+    pub fn new(mach: Vec<f64>, value: Vec<f64>) -> Result<Table, AeroError> {
+        if mach.len() != value.len() {
+            return Err(AeroError::Lengths(mach.len(), value.len()));
+        }
+        let n = mach.len();
+        if n < 2 {
+            return Err(AeroError::TooShort(n));
+        }
+        for i in 0..n {
+            if !mach[i].is_finite() {
+                return Err(AeroError::NonFinite {
+                    row: i + 1,
+                    what: "Mach",
+                    value: mach[i],
+                });
+            }
+            if !value[i].is_finite() {
+                return Err(AeroError::NonFinite {
+                    row: i + 1,
+                    what: "value",
+                    value: value[i],
+                });
+            }
+            if i > 0 && mach[i] <= mach[i - 1] {
+                return Err(AeroError::NotIncreasing {
+                    row: i + 1,
+                    mach: mach[i],
+                    previous: mach[i - 1],
+                });
+            }
+        }
+        // Secants, then Fritsch–Carlson slopes.
+        let delta: Vec<f64> = (0..n - 1)
+            .map(|i| (value[i + 1] - value[i]) / (mach[i + 1] - mach[i]))
+            .collect();
+        let mut slope = vec![0.0; n];
+        slope[0] = delta[0];
+        slope[n - 1] = delta[n - 2];
+        for i in 1..n - 1 {
+            slope[i] = if delta[i - 1] * delta[i] <= 0.0 {
+                0.0
+            } else {
+                (delta[i - 1] + delta[i]) / 2.0
+            };
+        }
+        for i in 0..n - 1 {
+            if delta[i] == 0.0 {
+                slope[i] = 0.0;
+                slope[i + 1] = 0.0;
+                continue;
+            }
+            let a = slope[i] / delta[i];
+            let b = slope[i + 1] / delta[i];
+            if a < 0.0 {
+                slope[i] = 0.0;
+            }
+            if b < 0.0 {
+                slope[i + 1] = 0.0;
+            }
+            let s = a * a + b * b;
+            if s > 9.0 {
+                let t = 3.0 / s.sqrt();
+                slope[i] = t * a * delta[i];
+                slope[i + 1] = t * b * delta[i];
+            }
+        }
+        Ok(Table { mach, value, slope })
+    }
+
+    /// The Mach range covered.
+    pub fn range(&self) -> (f64, f64) {
+        (self.mach[0], self.mach[self.mach.len() - 1])
+    }
+
+    /// The interpolated value and its derivative at `m`.
+    pub fn at(&self, m: f64) -> Result<Value, AeroError> {
+        let (lo, hi) = self.range();
+        if !(m >= lo && m <= hi) {
+            return Err(AeroError::OutsideTable { mach: m, lo, hi });
+        }
+        let i = match self.mach.partition_point(|&x| x <= m) {
+            0 => 0,
+            k => (k - 1).min(self.mach.len() - 2),
+        };
+        Ok(hermite(
+            (self.mach[i], self.value[i], self.slope[i]),
+            (self.mach[i + 1], self.value[i + 1], self.slope[i + 1]),
+            m,
+        ))
+    }
+}
+
+/// The cubic Hermite interpolant through (x₀, y₀, y₀′) and (x₁, y₁, y₁′), and
+/// its derivative, at x.
+pub fn hermite((x0, y0, d0): (f64, f64, f64), (x1, y1, d1): (f64, f64, f64), x: f64) -> Value {
+    let h = x1 - x0;
+    let t = (x - x0) / h;
+    let (t2, t3) = (t * t, t * t * t);
+    let h00 = 2.0 * t3 - 3.0 * t2 + 1.0;
+    let h10 = t3 - 2.0 * t2 + t;
+    let h01 = -2.0 * t3 + 3.0 * t2;
+    let h11 = t3 - t2;
+    let value = h00 * y0 + h10 * h * d0 + h01 * y1 + h11 * h * d1;
+    let dh00 = (6.0 * t2 - 6.0 * t) / h;
+    let dh10 = 3.0 * t2 - 4.0 * t + 1.0;
+    let dh01 = (-6.0 * t2 + 6.0 * t) / h;
+    let dh11 = 3.0 * t2 - 2.0 * t;
+    Value::new(value, dh00 * y0 + dh10 * d0 + dh01 * y1 + dh11 * d1)
+}
+
+/// The default methods, each a function of the planform and Mach number.
+pub mod defaults {
+    use super::*;
+
+    /// Below this Mach number the subsonic methods apply.
+    pub const SUBSONIC_LIMIT: f64 = 0.8;
+    /// Above this Mach number the supersonic methods apply.
+    pub const SUPERSONIC_LIMIT: f64 = 1.2;
+    /// Mean weighted thickness-chord ratio of the report's sections, eq (23):
+    /// τ² = 0.0036.
+    pub const THICKNESS: f64 = 0.06;
+
+    /// E(m) and dE/dm = (E − K)/(2m) (the `ellip` crate takes the parameter
+    /// m = k²); at m = 0 the limit −π/8.
+    pub fn ellip_e_and_slope(m: f64) -> (f64, f64) {
+        let e = ellip::ellipe(m).unwrap_or(f64::NAN);
+        if m.abs() < 1e-12 {
+            return (e, -PI / 8.0);
+        }
+        let k = ellip::ellipk(m).unwrap_or(f64::NAN);
+        (e, (e - k) / (2.0 * m))
+    }
+
+    /// Subsonic lift slope, the DATCOM form of Helmbold's equation with the
+    /// Prandtl–Glauert factor (USAF DATCOM §4.1.3.2; E. Polhamus, NASA TN
+    /// D-3767 and CR-145):
+    /// a = 2πA / (2 + √(A²(β² + tan²Λ_c/2)/κ² + 4)), β² = 1 − M², κ = 1.
+    pub fn lift_slope_subsonic(p: &Planform, m: f64) -> Value {
+        let a_r = p.aspect_ratio();
+        let t = p.sweep_at(0.5).tan();
+        let q = a_r * a_r * (1.0 - m * m + t * t) + 4.0;
+        let sq = q.sqrt();
+        let value = 2.0 * PI * a_r / (2.0 + sq);
+        // dq/dM = −2A²M
+        let d = 2.0 * PI * a_r / ((2.0 + sq) * (2.0 + sq)) / (2.0 * sq) * (2.0 * a_r * a_r * m);
+        Value::new(value, d)
+    }
+
+    /// Supersonic lift slope of a flat delta by linear theory (H.J. Stewart,
+    /// Q. Appl. Math. 4, 1946; A.E. Puckett, J. Aero. Sci. 13, 1946): with
+    /// β cot Λ < 1 (subsonic leading edges) a = 2π cot Λ/E(k),
+    /// k² = 1 − (β cot Λ)²; with β cot Λ ≥ 1 a = 4/β (Ackeret). The two
+    /// meet at the sonic leading edge (E(0) = π/2). For a tapered wing the
+    /// true-delta formula of the same leading edge is used.
+    pub fn lift_slope_supersonic(p: &Planform, m: f64) -> Value {
+        let cot = 1.0 / p.sweep_le.tan();
+        let beta2 = m * m - 1.0;
+        let mle2 = beta2 * cot * cot;
+        if mle2 < 1.0 {
+            let (e, de) = ellip_e_and_slope(1.0 - mle2);
+            let value = 2.0 * PI * cot / e;
+            // d(k²)/dM = −2M cot²Λ
+            let d = -2.0 * PI * cot / (e * e) * de * (-2.0 * m * cot * cot);
+            Value::new(value, d)
+        } else {
+            let beta = beta2.sqrt();
+            Value::new(4.0 / beta, -4.0 * m / (beta * beta * beta))
+        }
+    }
+
+    /// The lift slope at any Mach number: subsonic below
+    /// [`SUBSONIC_LIMIT`], supersonic above [`SUPERSONIC_LIMIT`], and
+    /// between them the cubic Hermite fairing matching both values and
+    /// slopes (C¹; a documented guess where linear theories fail, as the
+    /// report's Fig 5 was a faired guess).
+    pub fn lift_slope(p: &Planform, m: f64) -> Value {
+        faired(
+            m,
+            |x| lift_slope_subsonic(p, x),
+            |x| lift_slope_supersonic(p, x),
+        )
+    }
+
+    /// Zero-lift wave drag of a thin delta with the report's sections:
+    /// C_Dw = (16/3)τ² cot Λ / √(1 + β² cot²Λ) — the blend of the
+    /// two-dimensional linear-theory result for a biconvex section,
+    /// (16/3)τ²/β (Ackeret), reached as β cot Λ → ∞, and the slender-wing
+    /// limit (16/3)τ² cot Λ, independent of Mach number, as β cot Λ → 0
+    /// (wave drag ∝ aspect ratio, as the area rule has it). A documented
+    /// stand-in for the experimental curve of Fig 1.
+    pub fn wave_drag(p: &Planform, m: f64) -> Value {
+        let cot = 1.0 / p.sweep_le.tan();
+        let k = 16.0 / 3.0 * THICKNESS * THICKNESS;
+        let u = 1.0 + (m * m - 1.0) * cot * cot;
+        Value::new(
+            k * cot / u.sqrt(),
+            -k * cot * cot * cot * m / (u * u.sqrt()),
+        )
+    }
+
+    /// C_D0 as §6 describes it: 0.01 subsonic; 0.005 (friction) plus wave
+    /// drag ([`wave_drag`]) supersonic; faired between.
+    pub fn zero_lift_drag(p: &Planform, m: f64) -> Value {
+        faired(
+            m,
+            |_| Value::new(0.01, 0.0),
+            |x| {
+                let w = wave_drag(p, x);
+                Value::new(0.005 + w.value, w.d_mach)
+            },
+        )
+    }
+
+    /// K = ∂C_D/∂C_L² (eq 22) with no leading-edge suction, K = 1/a: the
+    /// drag due to lift of a thin, sharp-edged delta, ΔC_D = C_L·α. At
+    /// supersonic speeds it is linear theory's value (Robinson's, without
+    /// suction); through the transonic range it is exactly §6's rule, the
+    /// incompressible value times a_incomp/a.
+    pub fn drag_due_to_lift(p: &Planform, m: f64) -> Value {
+        let a = lift_slope(p, m);
+        Value::new(1.0 / a.value, -a.d_mach / (a.value * a.value))
+    }
+
+    /// Subsonic aerodynamic centre: H₀ = ¼ + ¼/√(1 + (βA/4)²) — between
+    /// slender-wing theory's ½ (two-thirds of the root chord from the apex,
+    /// R.T. Jones, NACA Rep. 835, 1946), approached as βA → 0, and the
+    /// two-dimensional quarter chord as βA → ∞; H₀ = 0.43 at βA = 4, close
+    /// to lifting-surface results for deltas (DATCOM Fig. 4.1.4.2-26).
+    pub fn aerodynamic_centre_subsonic(p: &Planform, m: f64) -> Value {
+        let a_r = p.aspect_ratio();
+        let u = 1.0 + (a_r / 4.0).powi(2) * (1.0 - m * m);
+        Value::new(
+            0.25 + 0.25 / u.sqrt(),
+            0.25 * (a_r / 4.0).powi(2) * m / (u * u.sqrt()),
+        )
+    }
+
+    /// The aerodynamic centre: subsonic as above; supersonic ½ (conical flow
+    /// puts the centre of pressure of a flat delta at two-thirds of the root
+    /// chord, the mid-point of the M.A.C.); faired between.
+    pub fn aerodynamic_centre(p: &Planform, m: f64) -> Value {
+        faired(
+            m,
+            |x| aerodynamic_centre_subsonic(p, x),
+            |_| Value::new(0.5, 0.0),
+        )
+    }
+
+    fn faired(m: f64, sub: impl Fn(f64) -> Value, sup: impl Fn(f64) -> Value) -> Value {
+        if m <= SUBSONIC_LIMIT {
+            sub(m)
+        } else if m >= SUPERSONIC_LIMIT {
+            sup(m)
+        } else {
+            let a = sub(SUBSONIC_LIMIT);
+            let b = sup(SUPERSONIC_LIMIT);
+            hermite(
+                (SUBSONIC_LIMIT, a.value, a.d_mach),
+                (SUPERSONIC_LIMIT, b.value, b.d_mach),
+                m,
+            )
+        }
+    }
+}
+
+/// Where a coefficient comes from.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum Source {
+    /// The default method of [`defaults`].
+    #[default]
+    Default,
+    /// The user's table.
+    Table(Table),
+}
+
+/// The aerodynamic model: one source per coefficient.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct AeroModel {
+    pub lift_slope: Source,
+    pub zero_lift_drag: Source,
+    pub drag_due_to_lift: Source,
+    pub aerodynamic_centre: Source,
+}
+
+/// The coefficients at one Mach number.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Coefficients {
+    pub mach: f64,
+    /// a = ∂C_L/∂α (per radian).
+    pub lift_slope: Value,
+    /// C_D0.
+    pub zero_lift_drag: Value,
+    /// K = ∂C_D/∂C_L².
+    pub drag_due_to_lift: Value,
+    /// H₀, fraction of the M.A.C. aft of its leading edge.
+    pub aerodynamic_centre: Value,
+}
+
+impl AeroModel {
+    /// The coefficients of `p` at Mach `m`.
+    pub fn at(&self, p: &Planform, m: f64) -> Result<Coefficients, AeroError> {
+        let get = |s: &Source, f: fn(&Planform, f64) -> Value| match s {
+            Source::Table(t) => t.at(m),
+            Source::Default => {
+                if (0.0..=3.0).contains(&m) {
+                    Ok(f(p, m))
+                } else {
+                    Err(AeroError::OutsideDefaults(m))
+                }
+            }
+        };
+        let lift_slope = get(&self.lift_slope, defaults::lift_slope)?;
+        let drag_due_to_lift = match &self.drag_due_to_lift {
+            Source::Table(t) => t.at(m)?,
+            // K = 1/a with the model's own lift slope (tables included)
+            Source::Default => Value::new(
+                1.0 / lift_slope.value,
+                -lift_slope.d_mach / (lift_slope.value * lift_slope.value),
+            ),
+        };
+        Ok(Coefficients {
+            mach: m,
+            lift_slope,
+            zero_lift_drag: get(&self.zero_lift_drag, defaults::zero_lift_drag)?,
+            drag_due_to_lift,
+            aerodynamic_centre: get(&self.aerodynamic_centre, defaults::aerodynamic_centre)?,
+        })
+    }
+}
+
+/// Level flight, eq (24): C_L·M² = W/(½ρa²S) is constant, so
+/// C_L(M) = (C_L M²)/M² and dC_L/dM = −2C_L/M.
+pub fn level_flight_lift(cl_m2: f64, m: f64) -> Value {
+    let cl = cl_m2 / (m * m);
+    Value::new(cl, -2.0 * cl / m)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::Size;
+
+    fn delta(deg: f64) -> Planform {
+        Planform::new(deg.to_radians(), 0.0, Size::RootChord(1.0)).unwrap()
+    }
+
+    #[test]
+    fn tables_interpolate_monotonically_with_exact_slopes() {
+        let t = Table::new(vec![0.5, 0.9, 1.0, 1.2, 2.0], vec![3.0, 3.5, 3.6, 3.2, 2.4]).unwrap();
+        // exact at the nodes
+        assert_eq!(t.at(1.0).unwrap().value, 3.6);
+        // no overshoot between monotone data
+        for i in 0..=100 {
+            let m = 1.2 + 0.8 * i as f64 / 100.0;
+            let v = t.at(m).unwrap().value;
+            assert!((2.4..=3.2).contains(&v), "{m}: {v}");
+        }
+        // the derivative is the interpolant's (central difference check)
+        let h = 1e-6;
+        let m = 0.77;
+        let fd = (t.at(m + h).unwrap().value - t.at(m - h).unwrap().value) / (2.0 * h);
+        assert!((fd - t.at(m).unwrap().d_mach).abs() < 1e-6);
+        assert!(matches!(t.at(2.5), Err(AeroError::OutsideTable { .. })));
+    }
+
+    #[test]
+    fn bad_tables_name_the_row() {
+        assert_eq!(
+            Table::new(vec![0.5, 0.9, 0.9], vec![1.0, 2.0, 3.0]),
+            Err(AeroError::NotIncreasing {
+                row: 3,
+                mach: 0.9,
+                previous: 0.9
+            })
+        );
+        assert!(matches!(
+            Table::new(vec![0.5], vec![1.0]),
+            Err(AeroError::TooShort(1))
+        ));
+        assert!(matches!(
+            Table::new(vec![0.5, f64::NAN], vec![1.0, 2.0]),
+            Err(AeroError::NonFinite { row: 2, .. })
+        ));
+    }
+
+    #[test]
+    fn linear_theory_reaches_the_slender_wing_value_at_m1() {
+        // a → 2π cot Λ = πA/2 as M → 1⁺ (E(1) = 1)
+        for deg in [45.0, 60.0] {
+            let p = delta(deg);
+            let a = defaults::lift_slope_supersonic(&p, 1.0 + 1e-9).value;
+            assert!((a - PI * p.aspect_ratio() / 2.0).abs() < 1e-6, "{deg}: {a}");
+        }
+    }
+
+    #[test]
+    fn the_two_supersonic_forms_meet_at_the_sonic_leading_edge() {
+        let p = delta(45.0);
+        let m_sonic = 2f64.sqrt(); // β cot 45° = 1
+        let below = defaults::lift_slope_supersonic(&p, m_sonic - 1e-9).value;
+        let above = defaults::lift_slope_supersonic(&p, m_sonic + 1e-9).value;
+        assert!((below - above).abs() < 1e-6 && (above - 4.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn default_slopes_are_exact_derivatives_and_fairings_are_c1() {
+        let p = delta(60.0);
+        let h = 1e-6;
+        let fns: [(&str, fn(&Planform, f64) -> Value); 5] = [
+            ("lift slope", defaults::lift_slope),
+            ("zero-lift drag", defaults::zero_lift_drag),
+            ("drag due to lift", defaults::drag_due_to_lift),
+            ("aerodynamic centre", defaults::aerodynamic_centre),
+            ("wave drag", defaults::wave_drag),
+        ];
+        for (name, f) in fns {
+            for m in [0.3, 0.79, 0.8, 0.95, 1.05, 1.2, 1.5, 2.5] {
+                let fd = (f(&p, m + h).value - f(&p, m - h).value) / (2.0 * h);
+                let d = f(&p, m).d_mach;
+                assert!(
+                    (fd - d).abs() < 1e-5 * (1.0 + d.abs()),
+                    "{name} at M = {m}: {d} vs {fd}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn supersonic_lift_slope_of_a_45_degree_delta_at_m_1_2() {
+        // β cot Λ = √0.44 = 0.6633, k² = 0.56, E(0.56) = 1.31978755716003
+        // (mpmath.ellipe(0.56)), a = 2π/E = 4.76076.
+        let a = defaults::lift_slope_supersonic(&delta(45.0), 1.2).value;
+        assert!((a - 2.0 * PI / 1.319_787_557_160_03).abs() < 1e-12, "{a}");
+    }
+}
