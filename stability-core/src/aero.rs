@@ -476,7 +476,8 @@ mod tests {
     fn default_slopes_are_exact_derivatives_and_fairings_are_c1() {
         let p = delta(60.0);
         let h = 1e-6;
-        let fns: [(&str, fn(&Planform, f64) -> Value); 5] = [
+        type Method = fn(&Planform, f64) -> Value;
+        let fns: [(&str, Method); 5] = [
             ("lift slope", defaults::lift_slope),
             ("zero-lift drag", defaults::zero_lift_drag),
             ("drag due to lift", defaults::drag_due_to_lift),
