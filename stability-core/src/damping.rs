@@ -1,1 +1,458 @@
-//! (in progress)
+//! The damping derivatives of §7 — z_q, z_ẇ, m_q, m_ẇ and the
+//! damping-in-pitch pair z_θ̇ = z_q + z_ẇ, m_θ̇ = m_q + m_ẇ (the OCR's z_δ,
+//! m_ϕ, m_ý …) — from each theory the report uses, in the report's notation
+//! (§3; lengths on the reference chord, h on the M.A.C., see `geometry`).
+//! `docs/damping-theories.md` gives each formula as printed, as recovered,
+//! and the evidence.
+//!
+//! | theory | eqs | source |
+//! | --- | --- | --- |
+//! | `garrick` | (32)–(33) | I.E. Garrick's low-aspect-ratio theory (after R.T. Jones), incompressible |
+//! | `garner-taper` | (34)–(35) | H.C. Garner's taper-1/7 version of the same theory |
+//! | `slender` | (37) | H.S. Ribner, slender-wing theory, NACA TN 1423 (1947) |
+//! | `supersonic` | (36) | K.W. Mangler; H.S. Ribner & F.S. Malvestuto, NACA Rep. 908 (1948): subsonic leading edges |
+//! | `transonic` | (38) | K.W. Mangler's low-frequency theory at M = 1, steady |
+//! | `transonic-frequency` | (39)–(40) | the same, with the frequency-dependent terms |
+
+use crate::geometry::Planform;
+use serde::Serialize;
+use std::f64::consts::PI;
+use std::fmt;
+use std::str::FromStr;
+
+/// A theory of the damping derivatives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Theory {
+    Garrick,
+    GarnerTaper,
+    Slender,
+    Supersonic,
+    Transonic,
+    TransonicFrequency,
+}
+
+impl Theory {
+    pub const ALL: [Theory; 6] = [
+        Theory::Garrick,
+        Theory::GarnerTaper,
+        Theory::Slender,
+        Theory::Supersonic,
+        Theory::Transonic,
+        Theory::TransonicFrequency,
+    ];
+
+    /// The theory's name in configs and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Theory::Garrick => "garrick",
+            Theory::GarnerTaper => "garner-taper",
+            Theory::Slender => "slender",
+            Theory::Supersonic => "supersonic",
+            Theory::Transonic => "transonic",
+            Theory::TransonicFrequency => "transonic-frequency",
+        }
+    }
+
+    /// The report's equations.
+    pub fn equations(self) -> &'static str {
+        match self {
+            Theory::Garrick => "(32)–(33)",
+            Theory::GarnerTaper => "(34)–(35)",
+            Theory::Slender => "(37)",
+            Theory::Supersonic => "(36)",
+            Theory::Transonic => "(38)",
+            Theory::TransonicFrequency => "(39)–(40)",
+        }
+    }
+
+    /// Whether the derivatives depend on the frequency parameter ω̄.
+    pub fn uses_frequency(self) -> bool {
+        self == Theory::TransonicFrequency
+    }
+}
+
+impl fmt::Display for Theory {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Theory {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Theory::ALL
+            .into_iter()
+            .find(|t| t.name() == s)
+            .ok_or_else(|| {
+                format!(
+                    "unknown damping theory `{s}`; the theories are {}",
+                    Theory::ALL.map(|t| format!("`{}`", t.name())).join(", ")
+                )
+            })
+    }
+}
+
+/// The planform quantities the theories use.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct WingInput {
+    pub aspect_ratio: f64,
+    /// Leading-edge sweep Λ (rad).
+    pub sweep_le: f64,
+    pub taper: f64,
+}
+
+impl From<&Planform> for WingInput {
+    fn from(p: &Planform) -> Self {
+        WingInput {
+            aspect_ratio: p.aspect_ratio(),
+            sweep_le: p.sweep_le,
+            taper: p.taper,
+        }
+    }
+}
+
+/// z_q, z_ẇ, m_q, m_ẇ in the report's notation.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct DampingDerivatives {
+    pub z_q: f64,
+    pub z_wdot: f64,
+    pub m_q: f64,
+    pub m_wdot: f64,
+}
+
+impl DampingDerivatives {
+    /// z_θ̇ = z_q + z_ẇ (damping in pitch, force).
+    pub fn z_thetadot(&self) -> f64 {
+        self.z_q + self.z_wdot
+    }
+
+    /// m_θ̇ = m_q + m_ẇ (damping in pitch, moment).
+    pub fn m_thetadot(&self) -> f64 {
+        self.m_q + self.m_wdot
+    }
+
+    /// Split a damping-in-pitch pair (z_θ̇, m_θ̇) — all Garrick's and Garner's
+    /// theory gives — with the acceleration derivatives of slender-wing
+    /// theory (37), z_ẇ = −πA/4, m_ẇ = z_ẇ(5/8 − h); for a true delta this
+    /// is (37) exactly.
+    fn split(z_thetadot: f64, m_thetadot: f64, a: f64, h: f64) -> Self {
+        let z_wdot = -PI * a / 4.0;
+        let m_wdot = z_wdot * (5.0 / 8.0 - h);
+        DampingDerivatives {
+            z_q: z_thetadot - z_wdot,
+            z_wdot,
+            m_q: m_thetadot - m_wdot,
+            m_wdot,
+        }
+    }
+}
+
+/// The functions of Fig 18 (supersonic theory): k² = 1 − β² cot²Λ,
+/// E = E(k), K = K(k), G = k²/((2k² − 1)E + (1 − k²)K), H = E·G.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Fig18 {
+    pub k2: f64,
+    pub e: f64,
+    pub k: f64,
+    pub g: f64,
+    pub h: f64,
+}
+
+impl Fig18 {
+    /// At β cot Λ (< 1); the `ellip` crate takes the parameter m = k².
+    pub fn at(beta_cot: f64) -> Fig18 {
+        let k2 = 1.0 - beta_cot * beta_cot;
+        let e = ellip::ellipe(k2).unwrap_or(f64::NAN);
+        let k = ellip::ellipk(k2).unwrap_or(f64::INFINITY);
+        // (1 − k²)K → 0 as k → 1
+        let tail = if k2 >= 1.0 { 0.0 } else { (1.0 - k2) * k };
+        // As k → 0 (the leading edge turning sonic) numerator and
+        // denominator vanish together: E, K ≈ (π/2)(1 ∓ k²/4) give a
+        // denominator (3π/4)k²(1 + O(k²)), so G → 4/(3π) and H → 2/3.
+        let g = if k2 < 1e-6 {
+            4.0 / (3.0 * PI)
+        } else {
+            k2 / ((2.0 * k2 - 1.0) * e + tail)
+        };
+        Fig18 {
+            k2,
+            e,
+            k,
+            g,
+            h: e * g,
+        }
+    }
+}
+
+/// Why a theory cannot be applied.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DampingError {
+    #[error("{theory}: h = {h} and Mach {mach} must be finite")]
+    NonFinite {
+        theory: &'static str,
+        h: f64,
+        mach: f64,
+    },
+    #[error("the leading-edge sweep must lie strictly between 0° and 90°, not {0}°")]
+    Sweep(f64),
+    #[error("supersonic theory (36) needs M > 1, not M = {0}")]
+    SubsonicMach(f64),
+    #[error(
+        "supersonic theory (36) needs subsonic leading edges, β cot Λ < 1; at M = {mach} β cot Λ = {beta_cot:.4} (the leading edge is sonic at M = {sonic:.4})"
+    )]
+    SupersonicLeadingEdge {
+        mach: f64,
+        beta_cot: f64,
+        sonic: f64,
+    },
+    #[error(
+        "garner-taper (34)–(35) is Garner's result for taper 1/7 only; this wing has taper {0}"
+    )]
+    Taper(f64),
+    #[error("transonic-frequency (39)–(40) needs a frequency parameter ω̄ > 0 (got {0:?})")]
+    Frequency(Option<f64>),
+}
+
+/// The derivatives of one theory, and what is worth a warning.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Damping {
+    pub theory: Theory,
+    pub derivatives: DampingDerivatives,
+    /// The functions of Fig 18, for the supersonic theory.
+    pub fig18: Option<Fig18>,
+    /// Validity limits approached (not errors).
+    pub warnings: Vec<String>,
+}
+
+/// The damping derivatives of `theory` for the wing at c.g. `h` and Mach
+/// number `mach`; `omega_bar` is the frequency parameter ω̄ = ωc̄/V, used by
+/// `transonic-frequency` only.
+pub fn damping_derivatives(
+    theory: Theory,
+    wing: &WingInput,
+    h: f64,
+    mach: f64,
+    omega_bar: Option<f64>,
+) -> Result<Damping, DampingError> {
+    if !(h.is_finite() && mach.is_finite()) {
+        return Err(DampingError::NonFinite {
+            theory: theory.name(),
+            h,
+            mach,
+        });
+    }
+    if !(wing.sweep_le > 0.0 && wing.sweep_le < PI / 2.0) {
+        return Err(DampingError::Sweep(wing.sweep_le.to_degrees()));
+    }
+    let a = wing.aspect_ratio;
+    let cot = 1.0 / wing.sweep_le.tan();
+    let mut warnings = Vec::new();
+    let mut fig18 = None;
+    let true_delta_only = |w: &mut Vec<String>| {
+        if wing.taper > 0.0 {
+            w.push(format!(
+                "{}: the theory is for a true delta; taper {} is treated with the true delta's formulas at this aspect ratio",
+                theory.name(),
+                wing.taper
+            ));
+        }
+    };
+    let derivatives = match theory {
+        Theory::Slender | Theory::Transonic => {
+            // (37); (38) gives the same z_q and m_q (its acceleration
+            // derivatives are the frequency-dependent ones of (39): in the
+            // steady limit they are taken from (37)).
+            if theory == Theory::Transonic && (mach - 1.0).abs() > 0.2 {
+                warnings.push(format!(
+                    "transonic (38): a theory for M ≈ 1, applied at M = {mach}"
+                ));
+            }
+            if theory == Theory::Slender && a * (1.0 - mach * mach).abs().sqrt() > 1.0 {
+                warnings.push(format!(
+                    "slender (37): slender-wing theory assumes βA ≪ 1; here βA = {:.2}",
+                    a * (1.0 - mach * mach).abs().sqrt()
+                ));
+            }
+            true_delta_only(&mut warnings);
+            let z_wdot = -PI * a / 4.0;
+            DampingDerivatives {
+                z_q: -PI * a / 2.0 * (1.0 - h),
+                z_wdot,
+                m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
+                m_wdot: z_wdot * (5.0 / 8.0 - h),
+            }
+        }
+        Theory::Garrick => {
+            // (32) z_θ̇ = −(πA/4)(3 − 2h), (33) m_θ̇ = −(πA/2)(h − 1)²
+            if mach > 0.7 {
+                warnings.push(format!(
+                    "garrick (32)–(33): an incompressible theory, applied at M = {mach}"
+                ));
+            }
+            true_delta_only(&mut warnings);
+            DampingDerivatives::split(
+                -PI * a / 4.0 * (3.0 - 2.0 * h),
+                -PI * a / 2.0 * (h - 1.0).powi(2),
+                a,
+                h,
+            )
+        }
+        Theory::GarnerTaper => {
+            // Garner, λ = 1/7: −½∂C_L/∂(φ̇c̄ₛ/V) = −πA(5/8 − x₀/(4c̄ₛ)),
+            // −½∂C_m/∂(φ̇c̄ₛ/V) = −πA[49/64 − (7/8)x₀/c̄ₛ + ¼(x₀/c̄ₛ)²], with
+            // x₀/c̄ₛ = (57/48)h + 9/16 and the report's factors 3/2 and 9/8:
+            // z_θ̇ = −πA(0.7265625 − 0.4453125h), m_θ̇ = −(9/8)(0.3525390625)πA(h − 1)²
+            // — the report's (34)–(35) print them rounded, 0.728 − 0.446h and 0.4.
+            if (wing.taper - 1.0 / 7.0).abs() > 1e-3 {
+                return Err(DampingError::Taper(wing.taper));
+            }
+            if mach > 0.7 {
+                warnings.push(format!(
+                    "garner-taper (34)–(35): an incompressible theory, applied at M = {mach}"
+                ));
+            }
+            let z = -PI * a * (0.726_562_5 - 0.445_312_5 * h);
+            let m = -9.0 / 8.0 * 0.352_539_062_5 * PI * a * (h - 1.0).powi(2);
+            DampingDerivatives::split(z, m, a, h)
+        }
+        Theory::Supersonic => {
+            if mach <= 1.0 {
+                return Err(DampingError::SubsonicMach(mach));
+            }
+            let beta = (mach * mach - 1.0).sqrt();
+            let beta_cot = beta * cot;
+            if beta_cot >= 1.0 {
+                return Err(DampingError::SupersonicLeadingEdge {
+                    mach,
+                    beta_cot,
+                    sonic: (1.0 + 1.0 / (cot * cot)).sqrt(),
+                });
+            }
+            if mach < 1.1 {
+                warnings.push(format!(
+                    "supersonic (36): linear theory needs ω̄/(M² − 1) ≪ 1; at M = {mach} M² − 1 = {:.3}",
+                    mach * mach - 1.0
+                ));
+            }
+            if beta_cot > 0.95 {
+                warnings.push(format!(
+                    "supersonic (36): the leading edge is nearly sonic (β cot Λ = {beta_cot:.3})"
+                ));
+            }
+            true_delta_only(&mut warnings);
+            let f = Fig18::at(beta_cot);
+            fig18 = Some(f);
+            eq36(a, h, mach, f.e, f.h)
+        }
+        Theory::TransonicFrequency => {
+            let w = match omega_bar {
+                Some(w) if w.is_finite() && w > 0.0 => w,
+                other => return Err(DampingError::Frequency(other)),
+            };
+            if (mach - 1.0).abs() > 0.2 {
+                warnings.push(format!(
+                    "transonic-frequency (39)–(40): a theory for M ≈ 1, applied at M = {mach}"
+                ));
+            }
+            true_delta_only(&mut warnings);
+            let (k, _) = mangler_k(w, wing.sweep_le);
+            let z_wdot = -PI * a / 4.0 * k;
+            let extra = 9.0 / 64.0 * PI * cot.powi(3);
+            DampingDerivatives {
+                z_q: -PI * a / 2.0 * (1.0 - h),
+                z_wdot,
+                m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
+                m_wdot: z_wdot * (5.0 / 8.0 - h) - extra,
+            }
+        }
+    };
+    Ok(Damping {
+        theory,
+        derivatives,
+        fig18,
+        warnings,
+    })
+}
+
+/// Eq (36), recovered (Mangler; Ribner & Malvestuto, NACA Rep. 908), in
+/// the report's notation, for given E and H (Fig 18):
+/// z_q = −(πA/4E)(3H − 2h − 1),
+/// z_ẇ = −(πA/4E)[1 − 3M²(1 − H)/(M² − 1)],
+/// m_q = −(πA/4E)(2h² − 3hH + (15/8)H − ½),
+/// m_ẇ = z_ẇ(5/8 − h)
+/// (with z_w = −πA/(2E), m_w = z_w(½ − h)). With H = E = 1 these are (37).
+pub fn eq36(a: f64, h: f64, mach: f64, e: f64, hh: f64) -> DampingDerivatives {
+    let c = PI * a / (4.0 * e);
+    let z_wdot = -c * (1.0 - 3.0 * mach * mach * (1.0 - hh) / (mach * mach - 1.0));
+    DampingDerivatives {
+        z_q: -c * (3.0 * hh - 2.0 * h - 1.0),
+        z_wdot,
+        m_q: -c * (2.0 * h * h - 3.0 * h * hh + 15.0 / 8.0 * hh - 0.5),
+        m_wdot: z_wdot * (5.0 / 8.0 - h),
+    }
+}
+
+/// Mangler's frequency functions, eq (40):
+/// k(ω̄) = 1 − ½cot²Λ[4.959 − 3 ln(ω̄ cot²Λ)],
+/// k′(ω̄) = ½π cot³Λ [4.959 − 3 ln(ω̄ cot²Λ)];
+/// k = 1, k′ = 0 where 3 ln(ω̄ cot²Λ) = 4.959.
+pub fn mangler_k(omega_bar: f64, sweep_le: f64) -> (f64, f64) {
+    let cot = 1.0 / sweep_le.tan();
+    let x = 4.959 - 3.0 * (omega_bar * cot * cot).ln();
+    (1.0 - 0.5 * cot * cot * x, 0.5 * PI * cot.powi(3) * x)
+}
+
+/// Eq (30): x_q ≈ (H₀ − h)x_w.
+pub fn x_q(h0: f64, h: f64, x_w: f64) -> f64 {
+    (h0 - h) * x_w
+}
+
+/// Eq (31): x_ẇ ≈ (∂C_D/∂α)(H₀ − h).
+pub fn x_wdot(h0: f64, h: f64, dcd_dalpha: f64) -> f64 {
+    dcd_dalpha * (h0 - h)
+}
+
+/// Eq (43), Munk's slender-body estimate of a fuselage's damping in pitch:
+/// Δm_θ̇ ≈ −2B_v(l − x)²/(Sc̄²) with B_v = πd²/4, i.e.
+/// −½πd²(l − x)²/(Sc̄²): d the body's base diameter, l its length forward
+/// of the wing apex, x the distance from the c.g. to the nose, in any one
+/// unit of length.
+pub fn fuselage_increment(d: f64, l: f64, x: f64, s: f64, chord: f64) -> f64 {
+    -0.5 * PI * d * d * (l - x).powi(2) / (s * chord * chord)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn wing(deg: f64) -> WingInput {
+        let sweep = deg.to_radians();
+        WingInput {
+            aspect_ratio: 4.0 / sweep.tan(),
+            sweep_le: sweep,
+            taper: 0.0,
+        }
+    }
+
+    #[test]
+    fn names_round_trip() {
+        for t in Theory::ALL {
+            assert_eq!(t.name().parse::<Theory>(), Ok(t));
+        }
+        assert!(
+            "mangler"
+                .parse::<Theory>()
+                .unwrap_err()
+                .contains("`transonic-frequency`")
+        );
+    }
+
+    #[test]
+    fn eq43_worked_example() {
+        // S = 1000 ft², c̄ = 30 ft, l = 20 ft, x = 35 ft, d = 10 ft:
+        // −(π/2)·100·225/(1000·900) = −0.03927 (the report prints −0.05).
+        let dm = fuselage_increment(10.0, 20.0, 35.0, 1000.0, 30.0);
+        assert!((dm + PI * 22500.0 / 1.8e6).abs() < 1e-15);
+        assert!((dm + 0.039_27).abs() < 1e-5);
+    }
+}
