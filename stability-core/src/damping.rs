@@ -425,15 +425,6 @@ pub fn fuselage_increment(d: f64, l: f64, x: f64, s: f64, chord: f64) -> f64 {
 mod tests {
     use super::*;
 
-    fn wing(deg: f64) -> WingInput {
-        let sweep = deg.to_radians();
-        WingInput {
-            aspect_ratio: 4.0 / sweep.tan(),
-            sweep_le: sweep,
-            taper: 0.0,
-        }
-    }
-
     #[test]
     fn names_round_trip() {
         for t in Theory::ALL {

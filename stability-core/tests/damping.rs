@@ -1,7 +1,8 @@
 //! The damping derivatives of §7 against independent routes: values worked
 //! by hand, the limits the report states, the kinematics of a shift of the
 //! pitching axis, and the elliptic-integral functions of Fig 18 against
-//! mpmath (30 digits).
+//! mpmath (30 digits, quoted to f64 precision).
+#![allow(clippy::excessive_precision)]
 
 use stability_core::damping::{
     DampingDerivatives, DampingError, Fig18, Theory, WingInput, damping_derivatives, eq36,
