@@ -2,6 +2,7 @@
 //! the subcommands. The binary (`src/main.rs`) is a thin clap front end.
 
 pub mod cmd;
+pub mod config;
 pub mod diag;
 pub mod fmt;
 pub mod input;

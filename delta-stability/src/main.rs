@@ -98,12 +98,52 @@ enum Command {
         #[arg(long)]
         svg: Option<String>,
     },
+    /// From a planform and flight condition to derivatives, modes and criteria.
+    ///
+    /// CONFIG (TOML) gives the planform (§2.2), the flight condition and the
+    /// model choices; the program computes the aerodynamic coefficients (§6,
+    /// documented defaults or your tables), the stiffness derivatives
+    /// (eqs 9–14, 25–29), the damping derivatives of a §7 theory, then the
+    /// quartic, its modes and the criteria. See examples/delta-45.toml and
+    /// examples/delta-60.toml, commented.
+    ///
+    /// Damping theories: faired (default: slender-wing theory through M = 1,
+    /// blended into the supersonic theory (36) by M = 1.2), garrick,
+    /// garner-taper, slender, supersonic, transonic, transonic-frequency
+    /// (which iterates ω̄ to the short period's own frequency).
+    Analyze {
+        /// The design-point config (TOML).
+        config: String,
+        /// Override the damping theory.
+        #[arg(long)]
+        damping: Option<String>,
+        /// Override the Mach number.
+        #[arg(long)]
+        mach: Option<f64>,
+        /// Override the c.g. position h (fraction of the M.A.C.).
+        #[arg(long)]
+        cg: Option<f64>,
+        /// Print one JSON object (keys derivatives, coefficients, modes, criteria, …).
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Quartic { file, json } => cmd::quartic::run(&file, json),
+        Command::Analyze {
+            config,
+            damping,
+            mach,
+            cg,
+            json,
+        } => cmd::analyze::run(
+            &config,
+            &cmd::analyze::Overrides { damping, mach, cg },
+            json,
+        ),
         Command::Response {
             file,
             input,

@@ -247,3 +247,90 @@ fn response_rejects_a_bad_input_kind() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("--input must be `step` or `initial`"));
 }
+
+#[test]
+fn analyze_gives_the_derivatives_coefficients_modes_and_criteria() {
+    let out = bin()
+        .current_dir(root())
+        .args([
+            "analyze",
+            "examples/delta-45.toml",
+            "--json",
+            "--mach",
+            "0.6",
+        ])
+        .output()
+        .expect("run");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(!text.contains("NaN"));
+    let v: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    for key in ["derivatives", "coefficients", "modes", "criteria"] {
+        assert!(!v[key].is_null(), "{key}");
+    }
+    let d = &v["derivatives"];
+    for name in [
+        "x_u", "x_w", "x_wdot", "x_q", "z_u", "z_w", "z_wdot", "z_q", "m_u", "m_w", "m_wdot",
+        "m_q", "c_l", "mu1", "i_b",
+    ] {
+        assert!(d[name].is_number(), "{name}");
+    }
+    // slender-wing damping (faired, subsonic) at h = 0.25, A = 4, by hand (eq 37)
+    let pi = std::f64::consts::PI;
+    assert!((d["z_q"].as_f64().unwrap() + 1.5 * pi).abs() < 1e-12);
+    assert!((d["m_q"].as_f64().unwrap() + 0.75 * pi).abs() < 1e-12);
+    // level flight, eq (24): C_L = 0.05/0.36
+    assert!((d["c_l"].as_f64().unwrap() - 0.05 / 0.36).abs() < 1e-15);
+}
+
+#[test]
+fn analyze_rejects_theories_outside_their_validity_and_bad_configs() {
+    let out = bin()
+        .current_dir(root())
+        .args([
+            "analyze",
+            "examples/delta-45.toml",
+            "--damping",
+            "supersonic",
+            "--mach",
+            "0.9",
+        ])
+        .output()
+        .expect("run");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("needs M > 1"));
+    let out = bin()
+        .current_dir(root())
+        .args(["analyze", "examples/delta-45.toml", "--damping", "mangler"])
+        .output()
+        .expect("run");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("`transonic-frequency`"));
+
+    let cfg = std::fs::read_to_string(root().join("examples/delta-45.toml")).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        (cfg.replace("sweep = 45.0", "sweep = 95.0"), "[planform] sweep: the leading-edge sweep must lie strictly between 0° and 90°"),
+        (cfg.replace("mu1 = 50.0", "mu1 = -3.0"), "[flight] mu1: the relative density μ₁ must be positive"),
+        (
+            cfg.replace("damping = \"faired\"", "damping = \"faired\"\n[model.tables]\nlift_slope = { mach = [0.5, 0.4], value = [3.0, 3.1] }"),
+            "row 2: Mach 0.4 does not increase",
+        ),
+        (cfg.replace("root_chord = 10.0", "root_chord = 10.0\nspan = 3.0"), "give only one size"),
+    ];
+    for (text, expected) in cases {
+        let p = dir.path().join("c.toml");
+        std::fs::write(&p, text).unwrap();
+        let out = bin().arg("analyze").arg(&p).output().expect("run");
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains(expected) && err.contains("c.toml:"),
+            "{expected}\n{err}"
+        );
+    }
+}

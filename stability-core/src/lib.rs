@@ -7,6 +7,7 @@
 
 pub mod aero;
 pub mod analysis;
+pub mod case;
 pub mod classical;
 pub mod criteria;
 pub mod damping;

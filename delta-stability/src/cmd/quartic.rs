@@ -81,9 +81,10 @@ fn levels_json(a: &Analysis, tau: Option<f64>) -> Value {
     json!({ "short_period": short, "phugoid": ph })
 }
 
-pub fn to_json(input: &DerivativeFile, a: &Analysis) -> Value {
+/// The analysis as JSON: the keys `coefficients`, `routh_discriminant`,
+/// `stable`, `roots`, `modes`, `criteria` (and `tau_s`).
+pub fn analysis_json(a: &Analysis, tau: Option<f64>) -> serde_json::Map<String, Value> {
     let q = &a.quartic;
-    let tau = input.dimensional.map(|d| d.tau());
     let roots: Vec<Value> = a
         .roots
         .iter()
@@ -99,9 +100,7 @@ pub fn to_json(input: &DerivativeFile, a: &Analysis) -> Value {
     let sp = &a.short_period_approximation;
     let ds = &a.damping_standard;
     let cycles = a.modes.short_period().and_then(|m| m.cycles_to_half);
-    json!({
-        "file": input.path,
-        "notation": input.notation,
+    let v = json!({
         "coefficients": { "A": q.a, "B": q.b, "C": q.c, "D": q.d, "E": q.e },
         "routh_discriminant": a.routh.discriminant,
         "stable": a.routh.stable,
@@ -125,8 +124,20 @@ pub fn to_json(input: &DerivativeFile, a: &Analysis) -> Value {
             },
             "mil_f_8785c": levels_json(a, tau),
         },
-        "warnings": input.warnings,
-    })
+    });
+    match v {
+        Value::Object(map) => map,
+        _ => serde_json::Map::new(),
+    }
+}
+
+pub fn to_json(input: &DerivativeFile, a: &Analysis) -> Value {
+    let mut map = serde_json::Map::new();
+    map.insert("file".into(), json!(input.path));
+    map.insert("notation".into(), json!(input.notation));
+    map.extend(analysis_json(a, input.dimensional.map(|d| d.tau())));
+    map.insert("warnings".into(), json!(input.warnings));
+    Value::Object(map)
 }
 
 fn cell(v: Option<f64>) -> String {
@@ -134,15 +145,22 @@ fn cell(v: Option<f64>) -> String {
 }
 
 pub fn table(input: &DerivativeFile, a: &Analysis) -> String {
+    analysis_table(
+        &format!(
+            "Stability quartic of {} (eqs 4–6; the errata of docs/errata.md applied)",
+            input.path
+        ),
+        a,
+        input.dimensional.map(|d| d.tau()),
+    )
+}
+
+/// The analysis as a readable page, under `title`.
+pub fn analysis_table(title: &str, a: &Analysis, tau: Option<f64>) -> String {
     use std::fmt::Write;
     let mut s = String::new();
     let q = &a.quartic;
-    let tau = input.dimensional.map(|d| d.tau());
-    let _ = writeln!(
-        s,
-        "Stability quartic of {} (eqs 4–6; the errata of docs/errata.md applied)",
-        input.path
-    );
+    let _ = writeln!(s, "{title}");
     let _ = writeln!(
         s,
         "  A λ⁴ + B λ³ + C λ² + D λ + E = 0,  λ in units of 1/τ, τ = m/(½ρSV)"

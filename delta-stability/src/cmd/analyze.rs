@@ -1,0 +1,199 @@
+//! `delta-stability analyze CONFIG [--json]`: a planform at a flight
+//! condition → derivatives (§5–7) → quartic (§4) → modes → criteria (§8–9).
+
+use crate::Failure;
+use crate::cmd::quartic::{analysis_json, analysis_table};
+use crate::config;
+use crate::diag::InputError;
+use crate::fmt::sig;
+use serde_json::{Value, json};
+use stability_core::Derivatives;
+use stability_core::case::{CaseResult, DampingModel, evaluate};
+use stability_core::criteria::Margins;
+
+/// Overrides of the config from the command line.
+#[derive(Debug, Default, Clone)]
+pub struct Overrides {
+    pub damping: Option<String>,
+    pub mach: Option<f64>,
+    pub cg: Option<f64>,
+}
+
+pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
+    let mut cfg = config::read(path)?;
+    let bad = |m: String| Failure::Input(InputError::file(path, m));
+    if let Some(d) = &o.damping {
+        cfg.case.damping = DampingModel::parse(d).map_err(|e| bad(format!("--damping: {e}")))?;
+    }
+    if let Some(m) = o.mach {
+        if !(m.is_finite() && m > 0.0) {
+            return Err(bad(format!("--mach must be a positive number, not {m}")));
+        }
+        cfg.case.mach = m;
+    }
+    if let Some(h) = o.cg {
+        if !h.is_finite() {
+            return Err(bad(format!("--cg must be a finite number, not {h}")));
+        }
+        cfg.case.h = h;
+    }
+    let r = evaluate(&cfg.case).map_err(|e| bad(e.to_string()))?;
+    for w in &r.warnings {
+        eprintln!("warning: {w}");
+    }
+    if json_out {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&to_json(&cfg, &r)).unwrap_or_default()
+        );
+    } else {
+        print!("{}", page(&cfg, &r));
+    }
+    Ok(())
+}
+
+/// The 15 report-notation inputs as a JSON object.
+pub fn derivatives_json(d: &Derivatives) -> Value {
+    let mut map = serde_json::Map::new();
+    for (name, v) in Derivatives::QUARTIC_INPUTS
+        .iter()
+        .zip(d.quartic_input_values())
+    {
+        map.insert((*name).to_string(), json!(v));
+    }
+    Value::Object(map)
+}
+
+pub fn to_json(cfg: &config::Config, r: &CaseResult) -> Value {
+    let c = &cfg.case;
+    let p = &c.planform;
+    let margins = Margins::of(
+        &r.analysis.quartic,
+        &r.derivatives,
+        r.coefficients.lift_slope.value,
+    );
+    let mut map = serde_json::Map::new();
+    map.insert("file".into(), json!(cfg.path));
+    map.insert(
+        "case".into(),
+        json!({
+            "sweep_deg": p.sweep_le.to_degrees(), "taper": p.taper, "aspect_ratio": p.aspect_ratio(),
+            "mac": p.mac(), "smc": p.smc(), "area": p.area(), "span": p.span(),
+            "mach": c.mach, "cg": c.h, "mu1": c.mu1, "i_b": c.i_b, "cl_m2": c.cl_m2, "c_l": r.c_l,
+            "damping": c.damping.name(),
+        }),
+    );
+    map.insert(
+        "aerodynamics".into(),
+        serde_json::to_value(r.coefficients).unwrap_or(Value::Null),
+    );
+    map.insert("derivatives".into(), derivatives_json(&r.derivatives));
+    map.insert(
+        "damping".into(),
+        json!({
+            "theory": r.damping.theory.name(),
+            "equations": r.damping.theory.equations(),
+            "z_thetadot": r.damping.derivatives.z_thetadot(),
+            "m_thetadot": r.damping.derivatives.m_thetadot(),
+            "fig18": r.damping.fig18,
+            "frequency": r.frequency,
+        }),
+    );
+    map.extend(analysis_json(&r.analysis, None));
+    if let Some(Value::Object(criteria)) = map.get_mut("criteria") {
+        criteria.insert(
+            "margins".into(),
+            json!({ "static_margin": margins.static_margin, "manoeuvre_margin": margins.manoeuvre_margin }),
+        );
+    }
+    map.insert("warnings".into(), json!(r.warnings));
+    Value::Object(map)
+}
+
+pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
+    use std::fmt::Write;
+    let c = &cfg.case;
+    let p = &c.planform;
+    let mut s = String::new();
+    let _ = writeln!(s, "Design point of {}", cfg.path);
+    let _ = writeln!(
+        s,
+        "  planform (§2.2): Λ = {}°, taper {}, A = {}, M.A.C. = {}, S = {}",
+        sig(p.sweep_le.to_degrees(), 4),
+        sig(p.taper, 3),
+        sig(p.aspect_ratio(), 4),
+        sig(p.mac(), 4),
+        sig(p.area(), 4)
+    );
+    let _ = writeln!(
+        s,
+        "  flight: M = {}, h = {}, μ₁ = {}, i_B = {}, C_L·M² = {} → C_L = {} (eq 24)",
+        sig(c.mach, 4),
+        sig(c.h, 3),
+        sig(c.mu1, 4),
+        sig(c.i_b, 3),
+        sig(c.cl_m2, 3),
+        sig(r.c_l, 4)
+    );
+    let a = &r.coefficients;
+    let _ = writeln!(
+        s,
+        "  aerodynamics (§6): ∂C_L/∂α = {} (d/dM {}), C_D0 = {}, K = {}, H₀ = {}",
+        sig(a.lift_slope.value, 4),
+        sig(a.lift_slope.d_mach, 3),
+        sig(a.zero_lift_drag.value, 3),
+        sig(a.drag_due_to_lift.value, 3),
+        sig(a.aerodynamic_centre.value, 3)
+    );
+    let _ = writeln!(
+        s,
+        "  damping: {} {}; z_θ̇ = {}, m_θ̇ = {}",
+        r.damping.theory.name(),
+        r.damping.theory.equations(),
+        sig(r.damping.derivatives.z_thetadot(), 4),
+        sig(r.damping.derivatives.m_thetadot(), 4)
+    );
+    if let Some(f) = &r.frequency {
+        let _ = writeln!(
+            s,
+            "  frequency parameter: ω̄ {} → {} in {} iterations{}; m_θ̇ {} → {}, cycles to ½ {} → {}",
+            sig(f.initial, 4),
+            sig(f.converged, 4),
+            f.iterations,
+            if f.converged_ok {
+                ""
+            } else {
+                " (not converged)"
+            },
+            sig(f.m_thetadot_initial, 4),
+            sig(f.m_thetadot_converged, 4),
+            f.cycles_to_half_initial.map_or("—".into(), |x| sig(x, 4)),
+            f.cycles_to_half_converged.map_or("—".into(), |x| sig(x, 4)),
+        );
+    }
+    let _ = writeln!(s, "\nDerivatives (report notation, §3):");
+    let names = Derivatives::QUARTIC_INPUTS;
+    let values = r.derivatives.quartic_input_values();
+    for row in 0..3 {
+        let mut line = String::from(" ");
+        for col in 0..5 {
+            let i = row * 5 + col;
+            let _ = write!(line, " {:>7} = {:<11}", names[i], sig(values[i], 5));
+        }
+        let _ = writeln!(s, "{}", line.trim_end());
+    }
+    let _ = writeln!(s);
+    s.push_str(&analysis_table(
+        "The stability quartic (eqs 4–6):",
+        &r.analysis,
+        None,
+    ));
+    let m = Margins::of(&r.analysis.quartic, &r.derivatives, a.lift_slope.value);
+    let _ = writeln!(
+        s,
+        "Margins (§9): static K_n = {} (eq 42), manoeuvre H_m = {}",
+        m.static_margin.map_or("—".into(), |x| sig(x, 4)),
+        m.manoeuvre_margin.map_or("—".into(), |x| sig(x, 4))
+    );
+    s
+}
