@@ -4,7 +4,7 @@
 //! regen` accepts it, `cargo xtask regen --check` fails while it is stale.
 
 use formula_engine::docs;
-use workspace_tests::quartic_model;
+use workspace_tests::{notation_model, quartic_model};
 
 #[test]
 fn quartic_expansion() {
@@ -19,5 +19,13 @@ fn quartic_generated_rust() {
     let model = quartic_model();
     insta::with_settings!({ description => docs::PREAMBLE, omit_expression => true }, {
         insta::assert_snapshot!("quartic_generated_rust", docs::generated_rust(&model, "Derivatives"));
+    });
+}
+
+#[test]
+fn notation_generated_rust() {
+    let model = notation_model();
+    insta::with_settings!({ description => docs::PREAMBLE, omit_expression => true }, {
+        insta::assert_snapshot!("notation_generated_rust", docs::generated_notation_rust(&model));
     });
 }

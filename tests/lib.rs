@@ -1,6 +1,7 @@
 //! Shared helpers of the workspace-level tests: the spec model, a small
 //! deterministic random generator and random derivative sets.
 
+use formula_engine::notation::NotationModel;
 use formula_engine::{QuarticModel, SourceFile};
 use stability_core::Derivatives;
 use std::path::Path;
@@ -17,6 +18,16 @@ pub fn quartic_model() -> QuarticModel {
     let rel = "specs/quartic.toml";
     let text = std::fs::read_to_string(root().join(rel)).expect("read specs/quartic.toml");
     match QuarticModel::load(&SourceFile::new(rel, text)) {
+        Ok(m) => m,
+        Err(d) => panic!("{d}"),
+    }
+}
+
+/// `specs/notation.toml`, loaded and verified by the engine.
+pub fn notation_model() -> NotationModel {
+    let rel = "specs/notation.toml";
+    let text = std::fs::read_to_string(root().join(rel)).expect("read specs/notation.toml");
+    match NotationModel::load(&SourceFile::new(rel, text)) {
         Ok(m) => m,
         Err(d) => panic!("{d}"),
     }

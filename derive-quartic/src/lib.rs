@@ -64,3 +64,35 @@ fn expand(input: &DeriveInput) -> syn::Result<proc_macro2::TokenStream> {
         #body
     })
 }
+
+/// `notations!("path/to/notation.toml")`: the conversion tables and
+/// functions of a notation spec (see `formula_engine::notation`), verified
+/// at compile time: a printed cell of the appendix that disagrees with the
+/// factor derived from the definitions, undeclared, is a compile error.
+#[proc_macro]
+pub fn notations(input: TokenStream) -> TokenStream {
+    let lit = parse_macro_input!(input as syn::LitStr);
+    let expanded = (|| -> syn::Result<proc_macro2::TokenStream> {
+        let spec = attr::read_spec(&lit)?;
+        let model = formula_engine::notation::NotationModel::load(&spec.file).map_err(|diags| {
+            let mut errors = diags
+                .iter()
+                .map(|d| syn::Error::new_spanned(&lit, d.to_string()));
+            let mut first = errors
+                .next()
+                .unwrap_or_else(|| syn::Error::new_spanned(&lit, "invalid spec"));
+            errors.for_each(|e| first.combine(e));
+            first
+        })?;
+        let body = formula_engine::expand::notation_items(&model);
+        let path = spec.absolute.to_string_lossy().into_owned();
+        Ok(quote::quote! {
+            const _: &[u8] = include_bytes!(#path);
+            #body
+        })
+    })();
+    match expanded {
+        Ok(ts) => ts.into(),
+        Err(e) => e.to_compile_error().into(),
+    }
+}

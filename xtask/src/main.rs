@@ -5,6 +5,7 @@
 //! fails, naming the file, when anything is stale.
 
 use formula_engine::docs;
+use formula_engine::notation::NotationModel;
 use formula_engine::{QuarticModel, SourceFile};
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -53,10 +54,18 @@ fn root() -> PathBuf {
         .unwrap_or_default()
 }
 
-fn load(rel: &str) -> Result<QuarticModel, String> {
+fn source(rel: &str) -> Result<SourceFile, String> {
     let path = root().join(rel);
     let text = std::fs::read_to_string(&path).map_err(|e| format!("cannot read {rel}: {e}"))?;
-    QuarticModel::load(&SourceFile::new(rel, text)).map_err(|d| d.to_string())
+    Ok(SourceFile::new(rel, text))
+}
+
+fn load(rel: &str) -> Result<QuarticModel, String> {
+    QuarticModel::load(&source(rel)?).map_err(|d| d.to_string())
+}
+
+fn load_notation(rel: &str) -> Result<NotationModel, String> {
+    NotationModel::load(&source(rel)?).map_err(|d| d.to_string())
 }
 
 /// Write `contents` to `rel`, or in check mode fail if it differs.
@@ -86,10 +95,15 @@ fn normalize(s: &str) -> String {
 
 fn regen(check: bool) -> Result<(), String> {
     let quartic = load("specs/quartic.toml")?;
+    let notation = load_notation("specs/notation.toml")?;
     let mut stale = Vec::new();
     for (rel, text) in [
         ("docs/formulas.md", docs::formulas_markdown(&quartic)),
-        ("docs/errata.md", docs::errata_markdown(&quartic)),
+        (
+            "docs/errata.md",
+            docs::errata_markdown(&quartic, Some(&notation)),
+        ),
+        ("docs/notations.md", docs::notations_markdown(&notation)),
     ] {
         match ensure_file_contents(rel, &text, check) {
             Ok(_) => {}

@@ -4,6 +4,7 @@
 
 use crate::codegen;
 use crate::expand;
+use crate::notation::{Entry, Notation, NotationErratum, NotationModel, Row};
 use crate::quartic::{Coefficient, QuarticModel};
 use crate::render::{poly_latex, poly_text};
 use std::fmt::Write;
@@ -136,7 +137,7 @@ pub fn formulas_markdown(model: &QuarticModel) -> String {
 
 /// `docs/errata.md`: every erratum found against the report, one section
 /// per equation.
-pub fn errata_markdown(model: &QuarticModel) -> String {
+pub fn errata_markdown(model: &QuarticModel, notation: Option<&NotationModel>) -> String {
     let mut s = String::new();
     let t = &model.table;
     let _ = writeln!(s, "<!-- {PREAMBLE} -->\n");
@@ -220,6 +221,88 @@ pub fn errata_markdown(model: &QuarticModel) -> String {
             let _ = writeln!(s, "- Spec: `{}` line {}\n", model.file, e.printed.line);
         }
     }
+    if let Some(n) = notation {
+        let list: Vec<(&Notation, &Row, &Entry, &NotationErratum)> = n
+            .notations
+            .iter()
+            .flat_map(|nt| {
+                n.rows.iter().zip(&nt.entries).filter_map(move |(row, e)| {
+                    let e = e.as_ref()?;
+                    e.erratum.as_ref().map(|er| (nt, row, e, er))
+                })
+            })
+            .collect();
+        if !list.is_empty() {
+            let _ = writeln!(s, "## Appendix: the conversion table\n");
+            let _ = writeln!(
+                s,
+                "Each factor is derived from the notations' definitions in `{}` (see [notations.md](notations.md)) and compared with the printed cell. {} cells disagree.\n",
+                n.file,
+                list.len()
+            );
+            for (nt, row, e, er) in list {
+                let _ = writeln!(s, "### {} — row {}\n", nt.title, row.doc);
+                let _ = writeln!(s, "- Printed: `{}`", er.printed);
+                let _ = writeln!(s, "- Corrected: `{}`", er.corrected);
+                let _ = writeln!(s, "- Reason: {}", er.reason);
+                let _ = writeln!(
+                    s,
+                    "- Evidence (computed): from `{}` = `{}` and the report's definition, the report's quantity is `{}`.",
+                    e.name,
+                    e.define,
+                    poly_text(&e.to_report, &nt.table)
+                );
+                let _ = writeln!(s, "- Spec: `{}` line {}\n", n.file, er.line);
+            }
+        }
+    }
+    s
+}
+
+/// `docs/notations.md`: every notation's definitions, and the derived
+/// conversion factors beside the printed appendix.
+pub fn notations_markdown(n: &NotationModel) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "<!-- {PREAMBLE} -->\n");
+    let _ = writeln!(s, "# {}\n", n.title);
+    let _ = writeln!(
+        s,
+        "Source: {}. Spec: `{}`. Each notation defines its quantities from dimensional ones; the engine derives the \
+         report's quantity of each row in the notation's terms (all dimensional quantities cancel) and the inverse, and \
+         compares the first with the appendix's printed cell. ✓: the printed cell agrees; ✗: an erratum (see \
+         [errata.md](errata.md)); –: not printed.\n",
+        n.source, n.file
+    );
+    for nt in &n.notations {
+        let _ = writeln!(s, "## `{}` — {}\n", nt.name, nt.title);
+        let _ = writeln!(s, "{}\n", nt.source);
+        let _ = writeln!(
+            s,
+            "| row | quantity | definition | report's quantity = | printed | | theirs = |"
+        );
+        let _ = writeln!(s, "| --- | --- | --- | --- | --- | --- | --- |");
+        for (row, e) in n.rows.iter().zip(&nt.entries) {
+            let Some(e) = e else { continue };
+            let mark = match (&e.printed, &e.erratum) {
+                (None, _) => "–",
+                (Some(_), None) => "✓",
+                (Some(_), Some(_)) => "✗",
+            };
+            let _ = writeln!(
+                s,
+                "| {} | `{}` | `{}` | `{}` | {} | {mark} | `{}` |",
+                row.name,
+                e.name,
+                e.define,
+                poly_text(&e.to_report, &nt.table),
+                e.printed
+                    .as_ref()
+                    .map_or("–".to_string(), |p| format!("`{p}`")),
+                poly_text(&e.from_report, &nt.table).replace("report_", ""),
+            );
+        }
+        let _ = writeln!(s);
+    }
     s
 }
 
@@ -265,6 +348,21 @@ pub fn generated_rust(model: &QuarticModel, ty: &str) -> String {
     };
     format!(
         "// {PREAMBLE}\n// What `#[derive(Quartic)]` emits for `{ty}` from `{}`.\n\n{}",
+        model.file,
+        prettyplease::unparse(&file)
+    )
+}
+
+/// The Rust that `notations!` emits, formatted, with the preamble.
+#[cfg(feature = "docs")]
+pub fn generated_notation_rust(model: &NotationModel) -> String {
+    let tokens = expand::notation_items(model);
+    let file: syn::File = match syn::parse2(tokens) {
+        Ok(f) => f,
+        Err(e) => return format!("// {PREAMBLE}\n// the generated code does not parse: {e}\n"),
+    };
+    format!(
+        "// {PREAMBLE}\n// What `notations!` emits from `{}`.\n\n{}",
         model.file,
         prettyplease::unparse(&file)
     )

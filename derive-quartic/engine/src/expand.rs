@@ -182,3 +182,168 @@ pub fn quartic_impl(model: &QuarticModel, ty: &Ident) -> TokenStream {
         }
     }
 }
+
+/// The items `notations!` emits for a verified notation spec: the tables of
+/// names and two allocation-free conversion functions, to and from the
+/// report's notation, over values indexed by row (`None` where a quantity
+/// is absent; an output is `None` when an input it needs is).
+pub fn notation_items(model: &crate::notation::NotationModel) -> TokenStream {
+    let n_rows = model.rows.len();
+    let n_not = model.notations.len();
+    let n_par = model.parameters.len();
+    let rows: Vec<Literal> = model
+        .rows
+        .iter()
+        .map(|r| Literal::string(&r.name))
+        .collect();
+    let row_docs: Vec<Literal> = model.rows.iter().map(|r| Literal::string(&r.doc)).collect();
+    let names: Vec<Literal> = model
+        .notations
+        .iter()
+        .map(|n| Literal::string(&n.name))
+        .collect();
+    let titles: Vec<Literal> = model
+        .notations
+        .iter()
+        .map(|n| Literal::string(&n.title))
+        .collect();
+    let params: Vec<Literal> = model
+        .parameters
+        .iter()
+        .map(|p| Literal::string(&p.name))
+        .collect();
+    let name_rows: Vec<TokenStream> = model
+        .notations
+        .iter()
+        .map(|n| {
+            let cells: Vec<TokenStream> = n
+                .entries
+                .iter()
+                .map(|e| match e {
+                    Some(e) => {
+                        let l = Literal::string(&e.name);
+                        quote!(Some(#l))
+                    }
+                    None => quote!(None),
+                })
+                .collect();
+            quote!([#(#cells),*])
+        })
+        .collect();
+    let n_rows_lit = Literal::usize_unsuffixed(n_rows);
+    let n_not_lit = Literal::usize_unsuffixed(n_not);
+    let n_par_lit = Literal::usize_unsuffixed(n_par);
+
+    // One closure per output: bind the inputs it uses, evaluate.
+    let output = |n: &crate::notation::Notation,
+                  poly: &crate::poly::Poly,
+                  source_own: bool|
+     -> TokenStream {
+        let program = codegen::program(&n.table, &[("out".to_string(), poly.clone())]);
+        let dims = n.table.len() - n_rows - model.parameters.len() - count_own(n);
+        let mut binds = TokenStream::new();
+        for name in &program.inputs {
+            let id = n.table.id(name).unwrap_or(0);
+            let ident = Ident::new(name, Span::call_site());
+            let param_start = dims;
+            let own_start = dims + model.parameters.len();
+            let report_start = own_start + count_own(n);
+            if id >= report_start {
+                let row = Literal::usize_unsuffixed(id - report_start);
+                binds.extend(quote!(let #ident = values[#row]?;));
+            } else if id >= own_start {
+                // the notation's own quantity: find its row
+                let own_name = &n.table.get(id).name;
+                let row = n
+                    .entries
+                    .iter()
+                    .position(|e| e.as_ref().is_some_and(|e| &e.name == own_name))
+                    .unwrap_or(0);
+                let row = Literal::usize_unsuffixed(row);
+                binds.extend(quote!(let #ident = values[#row]?;));
+            } else if id >= param_start {
+                let k = Literal::usize_unsuffixed(id - param_start);
+                binds.extend(quote!(let #ident = parameters[#k];));
+            }
+        }
+        let _ = source_own;
+        let lets = program.lets.iter().map(|(name, node)| {
+            let i = Ident::new(name, Span::call_site());
+            let v = codegen::node_tokens(node);
+            quote!(let #i = #v;)
+        });
+        let value = codegen::node_tokens(&program.outputs[0].1);
+        quote!((|| -> Option<f64> { #binds #(#lets)* Some(#value) })())
+    };
+    let mut to_arms = Vec::new();
+    let mut from_arms = Vec::new();
+    for (k, n) in model.notations.iter().enumerate() {
+        let k_lit = Literal::usize_unsuffixed(k);
+        let to: Vec<TokenStream> = n
+            .entries
+            .iter()
+            .map(|e| match e {
+                Some(e) if !e.to_report.is_zero() || e.printed.is_some() => {
+                    output(n, &e.to_report, true)
+                }
+                _ => quote!(None),
+            })
+            .collect();
+        let from: Vec<TokenStream> = n
+            .entries
+            .iter()
+            .map(|e| match e {
+                Some(e) if !e.from_report.is_zero() => output(n, &e.from_report, false),
+                _ => quote!(None),
+            })
+            .collect();
+        to_arms.push(quote!(#k_lit => [#(#to),*],));
+        from_arms.push(quote!(#k_lit => [#(#from),*],));
+    }
+    let rows_doc = format!(
+        " The rows of `{}`: the quantities the notations define.",
+        model.file
+    );
+    quote! {
+        #[doc = #rows_doc]
+        pub const ROWS: [&str; #n_rows_lit] = [#(#rows),*];
+        /// What each row is.
+        pub const ROW_DOCS: [&str; #n_rows_lit] = [#(#row_docs),*];
+        /// The notations, the report's first among them marked `reference`.
+        pub const NOTATIONS: [&str; #n_not_lit] = [#(#names),*];
+        /// Their titles.
+        pub const TITLES: [&str; #n_not_lit] = [#(#titles),*];
+        /// `NAMES[notation][row]`: each notation's name for each row's quantity.
+        pub const NAMES: [[Option<&str>; #n_rows_lit]; #n_not_lit] = [#(#name_rows),*];
+        /// The dimensionless parameters a conversion may need.
+        pub const PARAMETERS: [&str; #n_par_lit] = [#(#params),*];
+
+        /// The report's quantities (by row) from notation `notation`'s
+        /// `values` (by row); derived from the notations' definitions.
+        #[allow(non_snake_case, clippy::all)]
+        #[must_use]
+        pub fn to_report(notation: usize, values: &[Option<f64>; #n_rows_lit], parameters: &[f64; #n_par_lit]) -> [Option<f64>; #n_rows_lit] {
+            let _ = parameters;
+            match notation {
+                #(#to_arms)*
+                _ => [None; #n_rows_lit],
+            }
+        }
+
+        /// Notation `notation`'s quantities (by row) from the report's
+        /// `values` (by row): the inverse of [`to_report`].
+        #[allow(non_snake_case, clippy::all)]
+        #[must_use]
+        pub fn from_report(notation: usize, values: &[Option<f64>; #n_rows_lit], parameters: &[f64; #n_par_lit]) -> [Option<f64>; #n_rows_lit] {
+            let _ = parameters;
+            match notation {
+                #(#from_arms)*
+                _ => [None; #n_rows_lit],
+            }
+        }
+    }
+}
+
+fn count_own(n: &crate::notation::Notation) -> usize {
+    n.entries.iter().filter(|e| e.is_some()).count()
+}

@@ -15,6 +15,7 @@ pub mod diag;
 pub mod docs;
 pub mod expand;
 pub mod expr;
+pub mod notation;
 pub mod poly;
 pub mod quartic;
 pub mod render;

@@ -242,6 +242,36 @@ impl Poly {
         p
     }
 
+    /// Substitute the polynomial `value` for symbol `id` (which must occur
+    /// with non-negative exponents only; `None` otherwise).
+    pub fn substitute(&self, id: usize, value: &Poly) -> Option<Poly> {
+        let mut out = Poly::zero(self.n);
+        for (m, c) in &self.terms {
+            let e = m.exponent(id);
+            if e < 0 {
+                return None;
+            }
+            let rest = Poly {
+                n: self.n,
+                terms: std::iter::once((m.without(id), c.clone())).collect(),
+            };
+            out = out.add(&rest.mul(&value.pow(e as u32)));
+        }
+        Some(out)
+    }
+
+    /// Split as `a·s + b` for symbol `id`: `(a, b)` when s occurs only to
+    /// the first power (a, b free of s), `None` otherwise.
+    pub fn linear_in(&self, id: usize) -> Option<(Poly, Poly)> {
+        if self.terms.keys().any(|m| !matches!(m.exponent(id), 0 | 1)) {
+            return None;
+        }
+        Some((
+            self.coefficient_of_power(id, 1),
+            self.coefficient_of_power(id, 0),
+        ))
+    }
+
     /// Whether symbol `id` occurs.
     pub fn mentions(&self, id: usize) -> bool {
         self.terms.keys().any(|m| m.exponent(id) != 0)

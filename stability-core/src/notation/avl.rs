@@ -1,1 +1,255 @@
-//! (in progress)
+//! AVL's stability-derivative output (the `ST` command's `.st` file) and its
+//! conversion into the report's notation.
+//!
+//! AVL (M. Drela & H. Youngren, vortex lattice) prints, under
+//! "Vortex Lattice Output -- Total Forces", the reference quantities
+//! (`Sref = … Cref = … Bref = …`, `Xref = …`), the run case (`Alpha =`,
+//! `Mach =`), the totals (`CLtot =`, `CDtot =`, `Cmtot =`, optionally
+//! `CDind =`, `e =`), then "Stability-axis derivatives..." with `CLa`, `Cma`
+//! (per radian) and `CLq`, `Cmq` (per q̂ = qc/2V), control columns, and
+//! `Neutral point  Xnp =`. Axes: stability axes, X forward, Z down;
+//! coefficients on ½ρV²Sref, moments also on Cref. AVL is quasi-steady:
+//! there are no α̇ derivatives, and no speed derivatives.
+
+use serde::Serialize;
+
+/// Why a `.st` file cannot be read.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum AvlError {
+    #[error(
+        "line {line}: this is not AVL stability-derivative output (no `Vortex Lattice Output -- Total Forces` header before `{found}`)"
+    )]
+    NotStFile { line: usize, found: String },
+    #[error("the file is empty")]
+    Empty,
+    #[error(
+        "line {last_line}: the file ends without `{name}` (truncated, or written by an AVL version that does not print it); the derivatives need Sref, Cref, Bref, Alpha, Mach, CLtot, CDtot, Cmtot, CLa, Cma, CLq, Cmq"
+    )]
+    Missing {
+        name: &'static str,
+        last_line: usize,
+    },
+    #[error("line {line}: `{name} = {text}`: the value is not a number")]
+    BadNumber {
+        name: String,
+        line: usize,
+        text: String,
+    },
+    #[error(
+        "line {line}: the section \"Stability-axis derivatives...\" is missing; found \"{found}\" (an AVL version or output this reader does not know)"
+    )]
+    NoStabilityAxes { line: usize, found: String },
+}
+
+/// The quantities of a `.st` file this program uses.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StFile {
+    pub sref: f64,
+    pub cref: f64,
+    pub bref: f64,
+    pub xref: f64,
+    /// Angle of attack (degrees).
+    pub alpha_deg: f64,
+    pub mach: f64,
+    pub cl: f64,
+    pub cd: f64,
+    pub cm: f64,
+    /// Induced drag, when printed.
+    pub cd_ind: Option<f64>,
+    /// Span efficiency, when printed.
+    pub e: Option<f64>,
+    /// ∂C_L/∂α, ∂C_m/∂α (per radian).
+    pub cl_a: f64,
+    pub cm_a: f64,
+    /// ∂C_L/∂q̂, ∂C_m/∂q̂ with q̂ = qc/2V.
+    pub cl_q: f64,
+    pub cm_q: f64,
+    /// Neutral point, when printed.
+    pub xnp: Option<f64>,
+}
+
+/// Every `name = value` pair of a line (AVL glues a long negative number to
+/// its `=`: `Cmb =-10.123456`).
+fn pairs(line: &str) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    while let Some(rel) = line[start..].find('=') {
+        let eq = start + rel;
+        let name = line[start..eq]
+            .split_whitespace()
+            .last()
+            .unwrap_or("")
+            .to_string();
+        let after = &line[eq + 1..];
+        let trimmed = after.trim_start();
+        let value: String = trimmed.chars().take_while(|c| !c.is_whitespace()).collect();
+        if !name.is_empty() {
+            out.push((name, value.clone()));
+        }
+        start = eq + 1 + (after.len() - trimmed.len()) + value.len();
+        if start >= line.len() {
+            break;
+        }
+    }
+    out
+}
+
+/// Parse a `.st` file's text. Errors carry 1-based line numbers.
+pub fn parse_st(text: &str) -> Result<StFile, AvlError> {
+    if text.trim().is_empty() {
+        return Err(AvlError::Empty);
+    }
+    let mut header = false;
+    let mut stability = false;
+    let mut values: Vec<(String, f64, usize)> = Vec::new();
+    let mut last_line = 0;
+    for (i, line) in text.lines().enumerate() {
+        let n = i + 1;
+        last_line = n;
+        if line.contains("Vortex Lattice Output") && line.contains("Total Forces") {
+            header = true;
+            continue;
+        }
+        if line.contains("Stability-axis derivatives") {
+            stability = true;
+            continue;
+        }
+        if line.contains("Geometry-axis derivatives") && !stability {
+            return Err(AvlError::NoStabilityAxes {
+                line: n,
+                found: line.trim().to_string(),
+            });
+        }
+        let ps = pairs(line);
+        if ps.is_empty() {
+            continue;
+        }
+        if !header {
+            return Err(AvlError::NotStFile {
+                line: n,
+                found: line.trim().chars().take(40).collect(),
+            });
+        }
+        for (name, v) in ps {
+            match v.parse::<f64>() {
+                Ok(x) if x.is_finite() => values.push((name, x, n)),
+                _ => {
+                    // Tolerate text after '=' that is not one of ours
+                    // (e.g. "Configuration: …"); complain only for ours.
+                    if REQUIRED.contains(&name.as_str()) || OPTIONAL.contains(&name.as_str()) {
+                        return Err(AvlError::BadNumber {
+                            name,
+                            line: n,
+                            text: v,
+                        });
+                    }
+                }
+            }
+        }
+    }
+    if !header {
+        return Err(AvlError::NotStFile {
+            line: 1,
+            found: text
+                .lines()
+                .next()
+                .unwrap_or("")
+                .trim()
+                .chars()
+                .take(40)
+                .collect(),
+        });
+    }
+    let get = |name: &'static str| {
+        values
+            .iter()
+            .find(|(k, _, _)| k == name)
+            .map(|(_, v, _)| *v)
+    };
+    let need = |name: &'static str| get(name).ok_or(AvlError::Missing { name, last_line });
+    let st = StFile {
+        sref: need("Sref")?,
+        cref: need("Cref")?,
+        bref: need("Bref")?,
+        xref: get("Xref").unwrap_or(0.0),
+        alpha_deg: need("Alpha")?,
+        mach: need("Mach")?,
+        cl: need("CLtot")?,
+        cd: need("CDtot")?,
+        cm: need("Cmtot")?,
+        cd_ind: get("CDind"),
+        e: get("e"),
+        cl_a: need("CLa")?,
+        cm_a: need("Cma")?,
+        cl_q: need("CLq")?,
+        cm_q: need("Cmq")?,
+        xnp: get("Xnp"),
+    };
+    if !stability {
+        return Err(AvlError::NoStabilityAxes {
+            line: last_line,
+            found: "end of file".into(),
+        });
+    }
+    Ok(st)
+}
+
+const REQUIRED: [&str; 12] = [
+    "Sref", "Cref", "Bref", "Alpha", "Mach", "CLtot", "CDtot", "Cmtot", "CLa", "Cma", "CLq", "Cmq",
+];
+const OPTIONAL: [&str; 4] = ["Xref", "CDind", "e", "Xnp"];
+
+/// The report's derivatives from an `.st` file, with what had to be assumed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FromAvl {
+    pub x_u: f64,
+    pub x_w: f64,
+    pub z_u: f64,
+    pub z_w: f64,
+    pub z_q: f64,
+    pub m_u: f64,
+    pub m_w: f64,
+    pub m_q: f64,
+    pub c_l: f64,
+    /// What the conversion assumed.
+    pub notes: Vec<String>,
+}
+
+/// Convert AVL's stability-axis coefficients into the report's notation:
+/// z_w = −C_Lα − C_D (eq 12), m_w = C_mα (14), z_q = −½C_Lq and
+/// m_q = ½C_mq (q̂ = qc/2V), x_w = C_L − ∂C_D/∂α (11) with ∂C_D/∂α from the
+/// induced drag of a parabolic polar, 2C_Di C_Lα/C_L; the speed derivatives
+/// of eqs (9), (10), (13) without Mach effects (AVL has none):
+/// x_u = −2C_D, z_u = −2C_L, m_u = 0. The acceleration derivatives are
+/// zero: AVL is quasi-steady.
+pub fn to_report(st: &StFile) -> FromAvl {
+    let mut notes = vec![
+        "AVL is quasi-steady: z_ẇ = m_ẇ = 0, and no speed derivatives: x_u = −2C_D, z_u = −2C_L, m_u = 0 (eqs 9, 10, 13 without Mach effects)".to_string(),
+        "AVL's own eigenmodes add the apparent mass of its lifting surfaces, which the .st derivatives do not carry: expect its modes to differ".to_string(),
+    ];
+    let dcd_da = match st.cd_ind {
+        Some(cdi) if st.cl != 0.0 => 2.0 * cdi * st.cl_a / st.cl,
+        _ => {
+            notes.push("no CDind in the file: ∂C_D/∂α taken as 0 in x_w".into());
+            0.0
+        }
+    };
+    if st.cm.abs() > 1e-3 {
+        notes.push(format!(
+            "Cmtot = {} ≠ 0: the case is not trimmed, and m_u = 0 assumes it is",
+            st.cm
+        ));
+    }
+    FromAvl {
+        x_u: -2.0 * st.cd,
+        x_w: st.cl - dcd_da,
+        z_u: -2.0 * st.cl,
+        z_w: -st.cl_a - st.cd,
+        z_q: -0.5 * st.cl_q,
+        m_u: 0.0,
+        m_w: st.cm_a,
+        m_q: 0.5 * st.cm_q,
+        c_l: st.cl,
+        notes,
+    }
+}
