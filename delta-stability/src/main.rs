@@ -33,7 +33,7 @@ enum Command {
     /// then the report's one-cycle damping standard (§8, eq 41) and the
     /// MIL-F-8785C damping levels.
     ///
-    /// FILE is TOML in the report's notation:
+    /// FILE is TOML, in the report's notation or another (see `convert --help`):
     ///
     ///   notation = "report"
     ///   [derivatives]   # x_u x_w x_wdot x_q z_u z_w z_wdot z_q m_u m_w m_wdot m_q
@@ -127,12 +127,46 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Convert a derivative file from one notation to another.
+    ///
+    /// The notations: report (this report's, after Bryant & Gates: ½ρ, chord
+    /// c̄), garner (Garrick, Garner, Mangler: ρ, ¾c̄), ribner (Ribner &
+    /// Malvestuto, NACA: C_Lq … per qc̄/2V), lehrian, duncan (tail arm l_t:
+    /// give [parameters] lt = l_t/c̄), perkins (Perkins & Hage), american
+    /// (Etkin & Reid: C_xu C_xalpha C_zu C_zalpha C_zq C_zalphadot C_mu
+    /// C_malpha C_mq C_malphadot per radian and per qc̄/2V, C_W0, with
+    /// [dimensional] mass, I_y, rho, V, S, chord), and avl (read only:
+    /// st_file = "case.st" with [dimensional] mass, I_y, rho, V).
+    ///
+    /// Every factor is derived from the authors' definitions in
+    /// specs/notation.toml and checked against the report's appendix; the
+    /// appendix's misprints are listed in docs/errata.md.
+    #[command(verbatim_doc_comment)]
+    Convert {
+        /// The file's notation.
+        #[arg(long)]
+        from: String,
+        /// The notation to write.
+        #[arg(long)]
+        to: String,
+        /// The derivative file (TOML).
+        file: String,
+        /// Print one JSON object instead of TOML.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Quartic { file, json } => cmd::quartic::run(&file, json),
+        Command::Convert {
+            from,
+            to,
+            file,
+            json,
+        } => cmd::convert::run(&from, &to, &file, json),
         Command::Analyze {
             config,
             damping,

@@ -93,8 +93,12 @@ fn bad_input_is_exit_status_2_with_file_line_and_field() {
             ":24:7: [flight] i_b: the pitching inertia",
         ),
         (
+            ex.replace("\"report\"", "\"navy\""),
+            ":5:12: notation: unknown notation `navy`",
+        ),
+        (
             ex.replace("\"report\"", "\"avl\""),
-            ":5:12: notation: unknown notation `avl`",
+            ":5:12: st_file: the avl notation needs `st_file",
         ),
     ];
     for (text, expected) in cases {
@@ -333,4 +337,122 @@ fn analyze_rejects_theories_outside_their_validity_and_bad_configs() {
             "{expected}\n{err}"
         );
     }
+}
+
+fn quartic_json(path: &std::path::Path) -> serde_json::Value {
+    let out = bin()
+        .current_dir(root())
+        .arg("quartic")
+        .arg(path)
+        .arg("--json")
+        .output()
+        .expect("run");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+#[test]
+fn the_747_in_american_notation_gives_etkin_and_reids_roots_in_seconds() {
+    let v = quartic_json(&root().join("examples/boeing-747-american.toml"));
+    let roots = v["roots"].as_array().unwrap();
+    let get = |i: usize, k: &str| roots[i][k].as_f64().unwrap();
+    // Etkin & Reid (1996): −0.3719 ± 0.8875i, −0.003289 ± 0.06723i (1/s)
+    assert!((get(0, "re_s") + 0.3719).abs() < 0.001 && (get(0, "im_s") - 0.8875).abs() < 0.002);
+    assert!(
+        (get(2, "re_s") + 0.003289).abs() < 0.00001 && (get(2, "im_s") - 0.06723).abs() < 0.0001
+    );
+}
+
+#[test]
+fn converted_files_describe_the_same_aircraft() {
+    let dir = tempfile::tempdir().unwrap();
+    let base = quartic_json(&root().join("examples/boeing-747-american.toml"));
+    for to in ["report", "garner", "duncan", "american"] {
+        let out = bin()
+            .current_dir(root())
+            .args([
+                "convert",
+                "--from",
+                "american",
+                "--to",
+                to,
+                "examples/boeing-747-american.toml",
+            ])
+            .output()
+            .expect("run");
+        assert!(
+            out.status.success(),
+            "{to}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let p = dir.path().join(format!("{to}.toml"));
+        std::fs::write(&p, &out.stdout).unwrap();
+        let v = quartic_json(&p);
+        for k in ["A", "B", "C", "D", "E"] {
+            let (a, b) = (
+                base["coefficients"][k].as_f64().unwrap(),
+                v["coefficients"][k].as_f64().unwrap(),
+            );
+            assert!((a - b).abs() <= 1e-12 * a.abs(), "{to}: {k} {a} vs {b}");
+        }
+    }
+}
+
+#[test]
+fn avl_output_is_read_with_its_assumptions_stated() {
+    let out = bin()
+        .current_dir(root())
+        .args(["quartic", "examples/avl-tailless-delta.toml", "--json"])
+        .output()
+        .expect("run");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("quasi-steady") && stderr.contains("apparent mass"));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    // μ₁ = m/(½ρ Sref Cref) = 9000/(0.5·1.225·60·7) and A = 1 (z_ẇ = 0)
+    assert_eq!(v["coefficients"]["A"].as_f64(), Some(1.0));
+    assert!(v["modes"][0]["name"] == "short_period");
+}
+
+#[test]
+fn notations_missing_what_they_need_are_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = dir.path().join("d.toml");
+    // American without mass: μ₁ cannot be formed
+    let text = std::fs::read_to_string(root().join("examples/boeing-747-american.toml"))
+        .unwrap()
+        .replace("mass = 288660.55", "");
+    std::fs::write(&p, text).unwrap();
+    let out = bin().arg("quartic").arg(&p).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("lacks `mu1`, `i_b`") && err.contains("[dimensional]"),
+        "{err}"
+    );
+    // Duncan without the tail arm
+    std::fs::write(&p, "notation = \"duncan\"\n[derivatives]\nx_u = 1.0\n").unwrap();
+    let out = bin().arg("quartic").arg(&p).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("[parameters] lt"));
+    // a truncated AVL file: the .st's own line
+    let st = std::fs::read_to_string(root().join("examples/tailless-delta.st")).unwrap();
+    let cut: String = st.lines().take(30).collect::<Vec<_>>().join("\n");
+    std::fs::write(dir.path().join("cut.st"), cut).unwrap();
+    std::fs::write(&p, "notation = \"avl\"\nst_file = \"cut.st\"\n[dimensional]\nmass = 1.0\nI_y = 1.0\nrho = 1.0\nV = 1.0\n").unwrap();
+    let out = bin().arg("quartic").arg(&p).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("cut.st:30:") && err.contains("ends without"),
+        "{err}"
+    );
 }

@@ -1,5 +1,6 @@
 //! The subcommands.
 
 pub mod analyze;
+pub mod convert;
 pub mod quartic;
 pub mod response;
