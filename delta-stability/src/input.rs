@@ -54,6 +54,9 @@ pub const FLIGHT_ROWS: [&str; 4] = ["c_l", "mu", "i_b", "c_d"];
 
 type Table = Spanned<BTreeMap<Spanned<String>, Spanned<f64>>>;
 
+/// A table's entries: key and value, with their spans.
+type Entries<'t> = Vec<(&'t Spanned<String>, &'t Spanned<f64>)>;
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawFile {
@@ -152,11 +155,7 @@ impl Ctx<'_> {
     }
 
     /// A table's values by key, every value finite.
-    fn table<'t>(
-        &self,
-        name: &str,
-        t: &'t Option<Table>,
-    ) -> Result<Vec<(&'t Spanned<String>, &'t Spanned<f64>)>, InputError> {
+    fn table<'t>(&self, name: &str, t: &'t Option<Table>) -> Result<Entries<'t>, InputError> {
         let Some(t) = t else { return Ok(Vec::new()) };
         let mut out = Vec::new();
         for (k, v) in t.get_ref() {
