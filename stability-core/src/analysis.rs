@@ -2,6 +2,7 @@
 //! (§4), the roots and modes (eqs 7–8), the short-period approximations and
 //! the damping standard (§8).
 
+use crate::classical::{first_approximation, refine, relative_errors};
 use crate::criteria::{DampingStandard, Routh, ShortPeriodApproximation};
 use crate::modes::Modes;
 use crate::roots::{RootsError, solve_quartic};
@@ -59,6 +60,22 @@ impl Dimensional {
     }
 }
 
+/// How the report's own method (eq 7 and its refinement) fares against the
+/// exact roots.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ClassicalCheck {
+    /// Eq (7)'s short-period and phugoid roots (s ≥ 0).
+    pub short_period: (f64, f64),
+    pub phugoid: (f64, f64),
+    /// |λ₇ − λ|/|λ| for each.
+    pub short_period_error: f64,
+    pub phugoid_error: f64,
+    /// Iterations of the successive approximation to 1e-12, and whether it
+    /// converged.
+    pub refinement_iterations: usize,
+    pub refinement_converged: bool,
+}
+
 /// The stability of a derivative set.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Analysis {
@@ -69,6 +86,8 @@ pub struct Analysis {
     pub modes: Modes,
     pub short_period_approximation: ShortPeriodApproximation,
     pub damping_standard: DampingStandard,
+    /// The report's eq (7), when both modes are oscillatory.
+    pub classical: Option<ClassicalCheck>,
 }
 
 impl Analysis {
@@ -92,11 +111,30 @@ impl Analysis {
             return Err(AnalysisError::LeadingCoefficientZero(d.mu1));
         }
         let roots = solve_quartic(quartic.to_array())?;
+        let modes = Modes::identify(&roots, d.mu1);
+        let classical = match (modes.short_period(), modes.phugoid()) {
+            (Some(sp), Some(ph)) => first_approximation(quartic.to_array()).ok().map(|c| {
+                let exact_sp = Complex64::new(sp.re, sp.im);
+                let exact_ph = Complex64::new(ph.re, ph.im);
+                let (e1, e2) = relative_errors(&c, exact_sp, exact_ph);
+                let r = refine(quartic.to_array(), &c, 500, 1e-12).ok();
+                ClassicalCheck {
+                    short_period: (c.short_period.root().re, c.short_period.root().im),
+                    phugoid: (c.phugoid.root().re, c.phugoid.root().im),
+                    short_period_error: e1,
+                    phugoid_error: e2,
+                    refinement_iterations: r.map_or(0, |r| r.iterations),
+                    refinement_converged: r.is_some_and(|r| r.converged),
+                }
+            }),
+            _ => None,
+        };
         Ok(Analysis {
             quartic,
             routh: Routh::of(&quartic),
             roots,
-            modes: Modes::identify(&roots, d.mu1),
+            modes,
+            classical,
             short_period_approximation: ShortPeriodApproximation::of(d),
             damping_standard: DampingStandard::of(d),
         })

@@ -124,6 +124,7 @@ pub fn analysis_json(a: &Analysis, tau: Option<f64>) -> serde_json::Map<String, 
             },
             "mil_f_8785c": levels_json(a, tau),
         },
+        "classical_eq7": a.classical,
     });
     match v {
         Value::Object(map) => map,
@@ -251,6 +252,24 @@ pub fn analysis_table(title: &str, a: &Analysis, tau: Option<f64>) -> String {
             }
         }
         let _ = writeln!(s, "{line}");
+    }
+    if let Some(c) = &a.classical {
+        let _ = writeln!(
+            s,
+            "\nThe report's eq (7): short period {} ± {}i (error {}%), phugoid {} ± {}i (error {}%); refined by successive approximation in {} iterations{}",
+            sig(c.short_period.0, 5),
+            sig(c.short_period.1, 5),
+            sig(100.0 * c.short_period_error, 3),
+            sig(c.phugoid.0, 5),
+            sig(c.phugoid.1, 5),
+            sig(100.0 * c.phugoid_error, 3),
+            c.refinement_iterations,
+            if c.refinement_converged {
+                ""
+            } else {
+                " (not converged)"
+            }
+        );
     }
     let sp = &a.short_period_approximation;
     let ds = &a.damping_standard;
