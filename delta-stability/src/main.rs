@@ -155,12 +155,27 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Run the note's whole study and write its figures, data and conclusions.
+    ///
+    /// The built-in cases are the note's: tailless true deltas of 45° and 60°
+    /// leading-edge sweep, c.g. at h = 0.25, μ₁ = 50, Mach 0.5 to 2.0, with
+    /// the variations it studies (sweep 30°–75°, c.g., μ₁ up to 400, taper).
+    /// Writes into DIR: figNN.svg and figNN.csv under the note's figure
+    /// numbers, summary.json (intervals of Mach where each wing's short
+    /// period diverges or takes more than one cycle to halve, and the largest
+    /// μ₁ meeting the standard at each Mach number) and index.html.
+    Report {
+        /// The output directory.
+        #[arg(long, default_value = "report")]
+        out: String,
+    },
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Quartic { file, json } => cmd::quartic::run(&file, json),
+        Command::Report { out } => cmd::report::run(std::path::Path::new(&out)),
         Command::Convert {
             from,
             to,

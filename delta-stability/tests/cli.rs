@@ -456,3 +456,74 @@ fn notations_missing_what_they_need_are_named() {
         "{err}"
     );
 }
+
+#[test]
+fn report_writes_the_figures_summary_and_page() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = bin()
+        .arg("report")
+        .arg("--out")
+        .arg(dir.path())
+        .output()
+        .expect("run");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for n in [
+        "02", "05", "06", "07", "12", "13", "16", "17", "18", "19", "24", "25", "26", "27", "31",
+        "32", "33", "34", "35", "36", "37", "38",
+    ] {
+        let svg = std::fs::read_to_string(dir.path().join(format!("fig{n}.svg")))
+            .unwrap_or_else(|e| panic!("fig{n}.svg: {e}"));
+        assert!(
+            svg.contains(&format!("Fig. {}", n.trim_start_matches('0'))) && !svg.contains("NaN"),
+            "fig{n}"
+        );
+        let csv = std::fs::read_to_string(dir.path().join(format!("fig{n}.csv"))).unwrap();
+        assert!(
+            csv.lines().count() > 10 && !csv.contains("NaN") && !csv.contains("inf"),
+            "fig{n}.csv"
+        );
+    }
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("summary.json")).unwrap())
+            .unwrap();
+    for wing in ["delta_45", "delta_60"] {
+        for key in ["unstable_mach", "fails_one_cycle_mach", "max_mu1_one_cycle"] {
+            assert!(summary[wing][key].is_array(), "{wing} {key}");
+        }
+    }
+    // The 60° delta meets the standard at μ₁ = 50 everywhere (as the note
+    // says); its largest μ₁ at M = 1.3 is of the note's size (~200).
+    assert_eq!(
+        summary["delta_60"]["fails_one_cycle_mach"]
+            .as_array()
+            .unwrap()
+            .len(),
+        0
+    );
+    let at = summary["delta_60"]["max_mu1_one_cycle"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| (p[0].as_f64().unwrap() - 1.3).abs() < 1e-9)
+        .unwrap()[1]
+        .as_f64()
+        .unwrap();
+    assert!((100.0..400.0).contains(&at), "{at}");
+    // the 45° delta fails it somewhere supersonic
+    assert!(
+        !summary["delta_45"]["fails_one_cycle_mach"]
+            .as_array()
+            .unwrap()
+            .is_empty()
+    );
+    let html = std::fs::read_to_string(dir.path().join("index.html")).unwrap();
+    assert!(
+        html.contains("fig33.svg")
+            && html.contains("0.97 &lt; M &lt; 1.5")
+            && html.contains("about 200")
+    );
+}

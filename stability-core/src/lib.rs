@@ -20,6 +20,7 @@ pub mod response;
 pub mod roots;
 pub mod sensitivity;
 pub mod stiffness;
+pub mod study;
 
 pub use derivatives::Derivatives;
 pub use quartic::{Quartic, QuarticGradient};

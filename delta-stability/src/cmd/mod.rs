@@ -3,4 +3,5 @@
 pub mod analyze;
 pub mod convert;
 pub mod quartic;
+pub mod report;
 pub mod response;

@@ -1,0 +1,151 @@
+//! The report's study (§8–9, Figs 25–33): the built-in cases, and the
+//! questions asked of them — where the short period diverges, where it fails
+//! the one-cycle standard, and the largest μ₁ that meets it.
+
+use crate::aero::AeroModel;
+use crate::case::{Case, CaseResult, DampingModel, evaluate};
+use crate::geometry::{Planform, Size};
+
+/// The report's tailless true delta of leading-edge sweep `deg`: c.g. at
+/// h = 0.25 (x₀/c₀ = 0.5), μ₁ = 50 (Figs 27–31), i_B = 0.08 and
+/// C_L·M² = 0.05 (neither stated by the report; see docs/models.md), the
+/// §7 theories faired (Figs 19–24).
+pub fn report_wing(deg: f64, mach: f64) -> Case {
+    Case {
+        planform: Planform::new(deg.to_radians(), 0.0, Size::RootChord(10.0))
+            .expect("a valid delta"),
+        mach,
+        h: 0.25,
+        mu1: 50.0,
+        i_b: 0.08,
+        cl_m2: 0.05,
+        aero: AeroModel::default(),
+        damping: DampingModel::Faired,
+        omega_bar: None,
+        iterate_frequency: true,
+    }
+}
+
+/// `a, a + step, …` up to `b` (inclusive, within rounding).
+pub fn grid(a: f64, b: f64, step: f64) -> Vec<f64> {
+    if !(step > 0.0) || !(a.is_finite() && b.is_finite()) || b < a {
+        return vec![a];
+    }
+    let n = ((b - a) / step + 1e-9).floor() as usize;
+    (0..=n).map(|i| a + step * i as f64).collect()
+}
+
+/// What the standard makes of a design point's short period.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verdict {
+    /// Damped to half amplitude within one cycle (or not oscillatory and
+    /// decaying).
+    Meets,
+    /// Oscillatory, decaying, but more than one cycle to halve.
+    Fails,
+    /// A growing short period.
+    Divergent,
+}
+
+/// The §8 standard applied to a result.
+pub fn verdict(r: &CaseResult) -> Verdict {
+    let modes = &r.analysis.modes;
+    match modes.short_period() {
+        Some(m) if m.re >= 0.0 => Verdict::Divergent,
+        Some(m) => match m.cycles_to_half {
+            Some(c) if c <= 1.0 => Verdict::Meets,
+            _ => Verdict::Fails,
+        },
+        // split short period: meets unless a root grows
+        None => {
+            if modes.any_divergent() {
+                Verdict::Divergent
+            } else {
+                Verdict::Meets
+            }
+        }
+    }
+}
+
+/// The intervals [from, to] of consecutive grid points where `flag` holds.
+pub fn intervals(x: &[f64], flag: &[bool]) -> Vec<[f64; 2]> {
+    let mut out = Vec::new();
+    let mut start: Option<f64> = None;
+    for (i, (&xi, &f)) in x.iter().zip(flag).enumerate() {
+        match (f, start) {
+            (true, None) => start = Some(xi),
+            (false, Some(s)) => {
+                out.push([s, x[i - 1]]);
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    if let (Some(s), Some(&last)) = (start, x.last()) {
+        out.push([s, last]);
+    }
+    out
+}
+
+/// The largest μ₁ in [1, 10⁴] at which `case` meets the one-cycle standard:
+/// a scan of log μ₁ in steps of 0.05 finds the last μ₁ that meets it, then
+/// bisection refines the boundary above it. (The standard gets harder as μ₁
+/// grows, §8, but not monotonically at very small μ₁, where the short period
+/// may not oscillate: hence the scan.) `None` when no μ₁ in the range meets
+/// it; 10⁴ when every one does.
+pub fn max_mu1_one_cycle(case: &Case) -> Option<f64> {
+    let meets = |log_mu1: f64| {
+        let mut c = case.clone();
+        c.mu1 = 10f64.powf(log_mu1);
+        evaluate(&c)
+            .map(|r| verdict(&r) == Verdict::Meets)
+            .unwrap_or(false)
+    };
+    let steps: Vec<f64> = (0..=80).map(|i| i as f64 * 0.05).collect();
+    let flags: Vec<bool> = steps.iter().map(|&x| meets(x)).collect();
+    let last = flags.iter().rposition(|&f| f)?;
+    if last == steps.len() - 1 {
+        return Some(1e4);
+    }
+    let (mut lo, mut hi) = (steps[last], steps[last + 1]);
+    for _ in 0..40 {
+        let mid = 0.5 * (lo + hi);
+        if meets(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(10f64.powf(lo))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn grids_and_intervals() {
+        let g = grid(0.5, 0.8, 0.1);
+        assert_eq!(g.len(), 4);
+        assert!((g[3] - 0.8).abs() < 1e-12);
+        let x = [1.0, 2.0, 3.0, 4.0, 5.0];
+        assert_eq!(
+            intervals(&x, &[false, true, true, false, true]),
+            vec![[2.0, 3.0], [5.0, 5.0]]
+        );
+        assert!(intervals(&x, &[false; 5]).is_empty());
+    }
+
+    #[test]
+    fn the_largest_mu1_is_on_the_boundary_of_the_standard() {
+        let case = report_wing(60.0, 1.5);
+        let mu = max_mu1_one_cycle(&case).unwrap();
+        let at = |m: f64| {
+            let mut c = case.clone();
+            c.mu1 = m;
+            verdict(&evaluate(&c).unwrap())
+        };
+        assert_eq!(at(mu * 0.999), Verdict::Meets);
+        assert_ne!(at(mu * 1.001), Verdict::Meets);
+    }
+}
