@@ -28,7 +28,8 @@ pub fn report_wing(deg: f64, mach: f64) -> Case {
 
 /// `a, a + step, …` up to `b` (inclusive, within rounding).
 pub fn grid(a: f64, b: f64, step: f64) -> Vec<f64> {
-    if !(step > 0.0) || !(a.is_finite() && b.is_finite()) || b < a {
+    let valid = step > 0.0 && step.is_finite() && a.is_finite() && b.is_finite() && b >= a;
+    if !valid {
         return vec![a];
     }
     let n = ((b - a) / step + 1e-9).floor() as usize;
