@@ -169,6 +169,22 @@ enum Command {
         #[arg(long, default_value = "report")]
         out: String,
     },
+    /// Design points over a Cartesian grid of Mach, sweep, c.g., μ₁ and i_B.
+    ///
+    /// Each range is A:B:STEP (inclusive) or a single value; those not given
+    /// come from CONFIG (see `analyze --help`). Points are evaluated in
+    /// parallel; OUT (.csv or .json) is written atomically — a killed run
+    /// leaves no half-written file. Columns: the grid values, stable (Routh),
+    /// verdict (the one-cycle standard: meets, fails, divergent), the short
+    /// period's root, cycles to half amplitude, damping ratio and ω̄, the
+    /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
+    /// outside a theory's validity. Roots are in units of 1/τ, τ = m/(½ρSV).
+    ///
+    /// Example: the 60° delta from Mach 0.5 to 2, c.g. 0.20 to 0.30, μ₁ 50 to
+    /// 450, 31 × 11 × 5 points:
+    ///
+    /// delta-stability sweep examples/delta-60.toml --mach 0.5:2:0.05 --cg 0.2:0.3:0.01 --mu1 50:450:100 -o sweep.csv
+    Sweep(cmd::sweep::Options),
 }
 
 fn main() -> ExitCode {
@@ -176,6 +192,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Quartic { file, json } => cmd::quartic::run(&file, json),
         Command::Report { out } => cmd::report::run(std::path::Path::new(&out)),
+        Command::Sweep(o) => cmd::sweep::run(&o),
         Command::Convert {
             from,
             to,

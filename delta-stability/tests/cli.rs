@@ -527,3 +527,220 @@ fn report_writes_the_figures_summary_and_page() {
             && html.contains("about 200")
     );
 }
+
+fn sweep(args: &[&str]) -> std::process::Output {
+    bin()
+        .current_dir(root())
+        .arg("sweep")
+        .args(args)
+        .output()
+        .expect("run")
+}
+
+/// The eigenvalues of the state matrix of eqs (2) (independent of the
+/// quartic and of its solver), from a row's fifteen inputs.
+fn eigenvalues_of_eqs_2(d: &[f64; 15]) -> Vec<num_complex::Complex64> {
+    let [
+        x_u,
+        x_w,
+        x_wdot,
+        x_q,
+        z_u,
+        z_w,
+        z_wdot,
+        z_q,
+        m_u,
+        m_w,
+        m_wdot,
+        m_q,
+        c_l,
+        mu1,
+        i_b,
+    ] = *d;
+    // (1 − z_ẇ/μ₁) ŵ' = z_u û + z_w ŵ + (μ₁ + z_q)/μ₁ q̂, and the rows
+    // for û' and q̂' with the ŵ' terms substituted
+    let a = 1.0 - z_wdot / mu1;
+    let w = [z_u / a, z_w / a, (1.0 + z_q / mu1) / a, 0.0];
+    let m = nalgebra::Matrix4::new(
+        x_u + x_wdot / mu1 * w[0],
+        x_w + x_wdot / mu1 * w[1],
+        x_q / mu1 + x_wdot / mu1 * w[2],
+        -c_l,
+        w[0],
+        w[1],
+        w[2],
+        0.0,
+        mu1 / i_b * m_u + m_wdot / i_b * w[0],
+        mu1 / i_b * m_w + m_wdot / i_b * w[1],
+        m_q / i_b + m_wdot / i_b * w[2],
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+        0.0,
+    );
+    m.complex_eigenvalues().iter().copied().collect()
+}
+
+#[test]
+fn sweep_csv_covers_the_grid_and_agrees_with_the_state_matrix() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_path = dir.path().join("grid.csv");
+    let out = sweep(&[
+        "examples/delta-60.toml",
+        "--mach",
+        "0.6:2.0:0.2",
+        "--cg",
+        "0.2:0.3:0.05",
+        "--mu1",
+        "50:450:200",
+        "--derivatives",
+        "-o",
+        out_path.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&out_path).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| {
+        header
+            .iter()
+            .position(|h| *h == n)
+            .unwrap_or_else(|| panic!("{n}"))
+    };
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    // 8 Mach numbers × 3 c.g. × 3 μ₁, in order, the last axis fastest
+    assert_eq!(rows.len(), 8 * 3 * 3);
+    assert_eq!(rows[1][col("mu1")], "250.0");
+    assert_eq!(rows[3][col("cg")], "0.25");
+    assert_eq!(rows[9][col("mach")], "0.8");
+    let mut meets_at_50 = 0;
+    for r in &rows {
+        assert_eq!(r.len(), header.len());
+        assert_eq!(r[col("error")], "", "{r:?}");
+        let d: [f64; 15] = std::array::from_fn(|k| r[col("x_u") + k].parse().unwrap());
+        let eig = eigenvalues_of_eqs_2(&d);
+        let sp = num_complex::Complex64::new(
+            r[col("sp_re")].parse().unwrap(),
+            r[col("sp_im")].parse().unwrap(),
+        );
+        let nearest = eig
+            .iter()
+            .map(|z| (z - sp).norm())
+            .fold(f64::INFINITY, f64::min);
+        assert!(nearest <= 1e-9 * sp.norm(), "{nearest} {r:?}");
+        // eq (8): cycles to half = 0.11032 s/(−r)
+        let cycles: f64 = r[col("sp_cycles_to_half")].parse().unwrap();
+        assert!((cycles - 0.11032 * sp.im / -sp.re).abs() < 1e-4 * cycles);
+        let verdict = r[col("verdict")];
+        assert_eq!(verdict, if cycles <= 1.0 { "meets" } else { "fails" });
+        if r[col("mu1")] == "50.0" && verdict == "meets" {
+            meets_at_50 += 1;
+        }
+    }
+    // the note: the 60° delta meets the standard at μ₁ = 50 at every Mach number
+    assert_eq!(meets_at_50, 8 * 3);
+}
+
+#[test]
+fn sweep_json_is_an_array_of_objects() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_path = dir.path().join("sub/grid.json");
+    let out = sweep(&[
+        "examples/delta-45.toml",
+        "--mach",
+        "0.5:2:0.5",
+        "--sweep",
+        "30:75:15",
+        "-o",
+        out_path.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out_path).unwrap()).unwrap();
+    let a = v.as_array().unwrap();
+    assert_eq!(a.len(), 4 * 4);
+    assert_eq!(a[1]["sweep_deg"].as_f64(), Some(45.0));
+    for p in a {
+        assert!(p["stable"].is_boolean() || p["error"].is_string(), "{p}");
+        if p["stable"] == false {
+            assert_eq!(p["verdict"], "divergent");
+        }
+    }
+    // the file is the user's to read
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = std::fs::metadata(&out_path).unwrap().permissions().mode();
+        assert_eq!(mode & 0o044, 0o044, "{mode:o}");
+    }
+}
+
+#[test]
+fn sweep_rejects_bad_ranges_with_status_2_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_path = dir.path().join("grid.csv");
+    std::fs::write(&out_path, "an earlier result\n").unwrap();
+    for (args, expect) in [
+        (vec!["--mach", "2:1:0.1"], "runs backwards"),
+        (vec!["--mach", "1:2:0"], "step must be positive"),
+        (vec!["--mach", "1:2"], "A:B:STEP"),
+        (
+            vec!["--mach", "1", "--cg", "x"],
+            "--cg: `x` is not a finite number",
+        ),
+        (vec!["--mach", "1", "--sweep", "95"], "--sweep 95"),
+        (vec!["--mach", "0:1e9:1"], "too many"),
+    ] {
+        let mut a = vec!["examples/delta-60.toml"];
+        a.extend(args);
+        a.extend(["-o", out_path.to_str().unwrap()]);
+        let out = sweep(&a);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{a:?}: {err}");
+        assert!(err.contains(expect), "{a:?}: {err}");
+    }
+    let out = sweep(&["examples/delta-60.toml", "--mach", "1", "-o", "grid.txt"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains(".csv or .json"));
+    assert_eq!(
+        std::fs::read_to_string(&out_path).unwrap(),
+        "an earlier result\n"
+    );
+}
+
+#[test]
+fn a_killed_sweep_leaves_no_half_written_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_path = dir.path().join("big.csv");
+    let mut child = bin()
+        .current_dir(root())
+        .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.00001"])
+        .args(["--cg", "0.2:0.3:0.001", "-o"])
+        .arg(&out_path)
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("run");
+    // wait until it has started writing (its temporary file exists)
+    for _ in 0..200 {
+        if std::fs::read_dir(dir.path()).unwrap().count() > 0 {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(100));
+    child.kill().unwrap();
+    child.wait().unwrap();
+    assert!(
+        !out_path.exists(),
+        "a 15-million-point sweep finished in 0.1 s?"
+    );
+}

@@ -94,6 +94,16 @@ impl Analysis {
     /// Analyse a derivative set. A zero root (E = 0) is a neutral mode and
     /// is reported as such; A = 0 is an error.
     pub fn of(d: &Derivatives) -> Result<Analysis, AnalysisError> {
+        Analysis::with(d, true)
+    }
+
+    /// As [`Analysis::of`], without the eq (7) check (`classical` is
+    /// `None`): the lean path of a sweep, which allocates nothing.
+    pub fn without_classical(d: &Derivatives) -> Result<Analysis, AnalysisError> {
+        Analysis::with(d, false)
+    }
+
+    fn with(d: &Derivatives, classical: bool) -> Result<Analysis, AnalysisError> {
         if !d.quartic_input_values().iter().all(|v| v.is_finite()) {
             return Err(AnalysisError::NonFiniteInput);
         }
@@ -113,6 +123,7 @@ impl Analysis {
         let roots = solve_quartic(quartic.to_array())?;
         let modes = Modes::identify(&roots, d.mu1);
         let classical = match (modes.short_period(), modes.phugoid()) {
+            _ if !classical => None,
             (Some(sp), Some(ph)) => first_approximation(quartic.to_array()).ok().map(|c| {
                 let exact_sp = Complex64::new(sp.re, sp.im);
                 let exact_ph = Complex64::new(ph.re, ph.im);

@@ -164,6 +164,21 @@ fn damping_at(case: &Case, wing: &WingInput, omega_bar: Option<f64>) -> Result<D
 
 /// Evaluate a design point.
 pub fn evaluate(case: &Case) -> Result<CaseResult, CaseError> {
+    evaluate_with(case, true)
+}
+
+/// As [`evaluate`], without the eq (7) check (`analysis.classical` is
+/// `None`): the lean path of `delta-stability sweep`.
+pub fn evaluate_point(case: &Case) -> Result<CaseResult, CaseError> {
+    evaluate_with(case, false)
+}
+
+fn evaluate_with(case: &Case, classical: bool) -> Result<CaseResult, CaseError> {
+    let analyse = if classical {
+        Analysis::of
+    } else {
+        Analysis::without_classical
+    };
     for (name, v) in [
         ("Mach number", case.mach),
         ("c.g. h", case.h),
@@ -224,7 +239,7 @@ pub fn evaluate(case: &Case) -> Result<CaseResult, CaseError> {
         let run = |w: f64| -> Result<(Damping, Derivatives, Analysis), CaseError> {
             let d = damping_at(case, &wing, Some(w))?;
             let der = assemble(&d);
-            let a = Analysis::of(&der)?;
+            let a = analyse(&der)?;
             Ok((d, der, a))
         };
         let first = run(start)?;
@@ -272,7 +287,7 @@ pub fn evaluate(case: &Case) -> Result<CaseResult, CaseError> {
     } else {
         let d = damping_at(case, &wing, case.omega_bar)?;
         let der = assemble(&d);
-        let a = Analysis::of(&der)?;
+        let a = analyse(&der)?;
         (d, der, a)
     };
     let mut warnings = damping.warnings.clone();

@@ -5,3 +5,4 @@ pub mod convert;
 pub mod quartic;
 pub mod report;
 pub mod response;
+pub mod sweep;
