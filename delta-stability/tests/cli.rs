@@ -744,3 +744,63 @@ fn a_killed_sweep_leaves_no_half_written_file() {
         "a 15-million-point sweep finished in 0.1 s?"
     );
 }
+
+/// A sweep reuses the derivatives across μ₁; each point must still be the
+/// design point `analyze` computes on its own.
+#[test]
+fn sweep_points_are_those_analyze_computes_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let base = std::fs::read_to_string(root().join("examples/delta-60.toml")).unwrap();
+    let heavy = base.replace("mu1 = 50.0", "mu1 = 450.0");
+    assert_ne!(heavy, base);
+    let cfg = dir.path().join("heavy.toml");
+    std::fs::write(&cfg, heavy).unwrap();
+    let csv = dir.path().join("grid.csv");
+    let out = sweep(&[
+        "examples/delta-60.toml",
+        "--mach",
+        "0.9:1.5:0.3",
+        "--mu1",
+        "50:450:400",
+        "-o",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<Vec<String>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    assert_eq!(rows.len(), 3 * 2);
+    for (k, mach) in ["0.9", "1.2", "1.5"].iter().enumerate() {
+        let row = &rows[2 * k + 1];
+        assert_eq!((row[0].as_str(), row[3].as_str()), (*mach, "450.0"));
+        let a = bin()
+            .arg("analyze")
+            .arg(&cfg)
+            .args(["--mach", mach, "--json"])
+            .output()
+            .unwrap();
+        assert!(a.status.success(), "{}", String::from_utf8_lossy(&a.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&a.stdout).unwrap();
+        let sp = v["modes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["name"] == "short_period")
+            .unwrap();
+        for (col, key) in [(7, "re"), (8, "im")] {
+            let ours: f64 = row[col].parse().unwrap();
+            let alone = sp[key].as_f64().unwrap();
+            assert!(
+                (ours - alone).abs() <= 1e-12 * alone.abs(),
+                "M {mach} {key}: {ours} vs {alone}"
+            );
+        }
+    }
+}

@@ -34,6 +34,15 @@ pub enum DampingModel {
 }
 
 impl DampingModel {
+    /// Whether the derivatives depend on μ₁ and i_B. They do not, except
+    /// through the frequency parameter ω̄ = s/μ₁ of a frequency-dependent
+    /// theory: μ₁ and i_B enter the equations of motion (eqs 2, 4), not the
+    /// derivatives of §5–7. So a sweep over them need evaluate the
+    /// aerodynamics once per planform, Mach number and c.g.
+    pub fn depends_on_mass(self) -> bool {
+        matches!(self, DampingModel::Theory(t) if t.uses_frequency())
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             DampingModel::Theory(t) => t.name(),

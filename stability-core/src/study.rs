@@ -5,6 +5,7 @@
 use crate::aero::AeroModel;
 use crate::case::{Case, CaseResult, DampingModel, evaluate};
 use crate::geometry::{Planform, Size};
+use crate::modes::Modes;
 
 /// The report's tailless true delta of leading-edge sweep `deg`: c.g. at
 /// h = 0.25 (x₀/c₀ = 0.5), μ₁ = 50 (Figs 27–31), i_B = 0.08 and
@@ -50,7 +51,11 @@ pub enum Verdict {
 
 /// The §8 standard applied to a result.
 pub fn verdict(r: &CaseResult) -> Verdict {
-    let modes = &r.analysis.modes;
+    verdict_of(&r.analysis.modes)
+}
+
+/// The §8 standard applied to a set of modes.
+pub fn verdict_of(modes: &Modes) -> Verdict {
     match modes.short_period() {
         Some(m) if m.re >= 0.0 => Verdict::Divergent,
         Some(m) => match m.cycles_to_half {

@@ -104,3 +104,31 @@ fn the_45_degree_delta_is_poorly_damped_at_low_supersonic_speeds() {
         .fold(0.0, f64::max);
     assert!(worst > 1.0, "{worst}");
 }
+
+/// μ₁ and i_B enter the equations of motion, not the derivatives (what a
+/// sweep relies on to evaluate the aerodynamics once per Mach number and
+/// c.g.) — except through ω̄ = s/μ₁ for a frequency-dependent theory.
+#[test]
+fn the_derivatives_depend_on_mass_only_through_the_frequency() {
+    for (damping, depends) in [
+        (DampingModel::Faired, false),
+        (DampingModel::Theory(Theory::Slender), false),
+        (DampingModel::Theory(Theory::Supersonic), false),
+        (DampingModel::Theory(Theory::TransonicFrequency), true),
+    ] {
+        assert_eq!(damping.depends_on_mass(), depends, "{}", damping.name());
+        let mach = if damping == DampingModel::Theory(Theory::Supersonic) {
+            1.3
+        } else {
+            1.0
+        };
+        let light = evaluate(&case(60.0, mach, 50.0, damping)).unwrap();
+        let mut heavy_case = case(60.0, mach, 400.0, damping);
+        heavy_case.i_b = 0.12;
+        let heavy = evaluate(&heavy_case).unwrap();
+        let (a, b) = (light.derivatives, heavy.derivatives);
+        assert_eq!((b.mu1, b.i_b), (400.0, 0.12));
+        let same = a.quartic_input_values()[..13] == b.quartic_input_values()[..13];
+        assert_eq!(same, !depends, "{}: {a:?} vs {b:?}", damping.name());
+    }
+}

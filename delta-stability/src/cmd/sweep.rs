@@ -13,9 +13,11 @@ use crate::diag::InputError;
 use crate::output::AtomicFile;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
-use stability_core::case::{Case, CaseResult, evaluate_point};
+use stability_core::Derivatives;
+use stability_core::analysis::Analysis;
+use stability_core::case::{Case, CaseError, CaseResult, evaluate_point};
 use stability_core::geometry::{Planform, Size};
-use stability_core::study::{Verdict, verdict};
+use stability_core::study::{Verdict, verdict_of};
 use std::io::Write as _;
 use std::path::Path;
 
@@ -243,7 +245,7 @@ impl Row<'_> {
 fn write_point(
     out: &mut Vec<u8>,
     head: [f64; 5],
-    r: &Result<CaseResult, impl ToString>,
+    r: Result<(&Derivatives, &Analysis), &CaseError>,
     options: (bool, bool),
 ) {
     let (json, with_derivatives) = options;
@@ -260,14 +262,13 @@ fn write_point(
         row.number(name, Some(v));
     }
     match r {
-        Ok(r) => {
-            let a = &r.analysis;
+        Ok((d, a)) => {
             let sp = a.modes.short_period();
             let ph = a.modes.phugoid();
             row.boolean("stable", a.routh.stable);
             row.word(
                 "verdict",
-                match verdict(r) {
+                match verdict_of(&a.modes) {
                     Verdict::Meets => "meets",
                     Verdict::Fails => "fails",
                     Verdict::Divergent => "divergent",
@@ -283,7 +284,7 @@ fn write_point(
             row.number("m_thetadot", Some(a.damping_standard.m_thetadot));
             row.number("delta_m_thetadot", a.damping_standard.margin);
             if with_derivatives {
-                let values = r.derivatives.quartic_input_values();
+                let values = d.quartic_input_values();
                 for (name, v) in stability_core::Derivatives::QUARTIC_INPUTS
                     .iter()
                     .zip(values)
@@ -310,15 +311,41 @@ fn write_point(
     }
 }
 
-/// Evaluates points `range` of the grid into one buffer.
+/// Evaluates points `range` of the grid into one buffer. Consecutive points
+/// that differ in μ₁ and i_B only share their derivatives
+/// ([`stability_core::case::DampingModel::depends_on_mass`]): the
+/// aerodynamics are evaluated once and the quartic again.
 fn block(grid: &Grid, range: std::ops::Range<usize>, options: (bool, bool)) -> Vec<u8> {
     let mut out = Vec::with_capacity(range.len() * 280);
+    let per_aero = grid.mu1.len() * grid.i_b.len();
+    let reuse = !grid.base.damping.depends_on_mass();
+    let mut last: Option<(usize, CaseResult)> = None;
     for i in range {
         if options.0 && i > 0 {
             out.extend_from_slice(b",\n");
         }
         let (head, case) = grid.point(i);
-        write_point(&mut out, head, &evaluate_point(&case), options);
+        let key = i / per_aero;
+        match &last {
+            Some((k, r)) if reuse && *k == key => {
+                let d = Derivatives {
+                    mu1: case.mu1,
+                    i_b: case.i_b,
+                    ..r.derivatives
+                };
+                match Analysis::without_classical(&d) {
+                    Ok(a) => write_point(&mut out, head, Ok((&d, &a)), options),
+                    Err(e) => write_point(&mut out, head, Err(&e.into()), options),
+                }
+            }
+            _ => match evaluate_point(&case) {
+                Ok(r) => {
+                    write_point(&mut out, head, Ok((&r.derivatives, &r.analysis)), options);
+                    last = Some((key, r));
+                }
+                Err(e) => write_point(&mut out, head, Err(&e), options),
+            },
+        }
         if !options.0 {
             out.push(b'\n');
         }
