@@ -46,7 +46,7 @@ proptest! {
             prop_assert!(r <= 1e-12, "residual {r:e} at {z}");
         }
         // and the modes account for all four roots
-        let n: usize = a.modes.modes.iter().map(|m| if m.im > 0.0 { 2 } else { 1 }).sum();
+        let n: usize = a.modes.iter().map(|m| if m.im > 0.0 { 2 } else { 1 }).sum();
         prop_assert_eq!(n, 4);
     }
 
@@ -133,7 +133,6 @@ fn the_short_period_damping_is_driven_by_m_q_and_z_w() {
     };
     let a = Analysis::of(&d).expect("analysis");
     let sp = a
-        .modes
         .modes
         .iter()
         .find(|m| m.name == ModeName::ShortPeriod)

@@ -149,13 +149,44 @@ pub struct ModeSeconds {
     pub natural_frequency: f64,
 }
 
-/// The modes of a quartic, fastest first.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// The modes of a quartic, fastest first: two to four (a complex pair
+/// counts once), held inline — identifying them allocates nothing.
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Modes {
-    pub modes: Vec<Mode>,
+    list: [Mode; 4],
+    len: usize,
+}
+
+impl Serialize for Modes {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let mut st = s.serialize_struct("Modes", 1)?;
+        st.serialize_field("modes", self.as_slice())?;
+        st.end()
+    }
+}
+
+impl std::ops::Deref for Modes {
+    type Target = [Mode];
+    fn deref(&self) -> &[Mode] {
+        self.as_slice()
+    }
 }
 
 impl Modes {
+    /// The modes, fastest first.
+    pub fn as_slice(&self) -> &[Mode] {
+        &self.list[..self.len]
+    }
+
+    fn push(&mut self, m: Mode) {
+        // at most four roots, so at most four modes
+        if let Some(slot) = self.list.get_mut(self.len) {
+            *slot = m;
+            self.len += 1;
+        }
+    }
+
     /// Identify the modes of the four roots (any order; complex roots come in
     /// conjugate pairs). `mu1` converts s to the frequency parameter.
     ///
@@ -164,18 +195,40 @@ impl Modes {
     /// both reals' (the phugoid has split), else the phugoid (the short
     /// period has split). Four reals: aperiodic, origin unknown.
     pub fn identify(roots: &[Complex64; 4], mu1: f64) -> Modes {
-        let mut pairs: Vec<Complex64> = roots.iter().filter(|z| z.im > 0.0).copied().collect();
-        let mut reals: Vec<f64> = roots.iter().filter(|z| z.im == 0.0).map(|z| z.re).collect();
-        pairs.sort_by(|a, b| b.norm().total_cmp(&a.norm()));
-        reals.sort_by(|a, b| b.abs().total_cmp(&a.abs()));
-        let mut modes = Vec::new();
-        match pairs.len() {
-            2 => {
-                modes.push(Mode::of_root(pairs[0], ModeName::ShortPeriod, None, mu1));
-                modes.push(Mode::of_root(pairs[1], ModeName::Phugoid, None, mu1));
+        let zero = Complex64::new(0.0, 0.0);
+        let (mut pairs, mut np) = ([zero; 4], 0);
+        let (mut reals, mut nr) = ([0.0; 4], 0);
+        for z in roots {
+            if z.im > 0.0 {
+                pairs[np] = *z;
+                np += 1;
+            } else if z.im == 0.0 {
+                reals[nr] = z.re;
+                nr += 1;
             }
-            1 => {
-                let pair = pairs[0];
+        }
+        let (pairs, reals) = (&mut pairs[..np], &mut reals[..nr]);
+        pairs.sort_unstable_by(|a, b| b.norm().total_cmp(&a.norm()));
+        reals.sort_unstable_by(|a, b| b.abs().total_cmp(&a.abs()));
+        let placeholder = Mode::of_root(zero, ModeName::Aperiodic, None, 1.0);
+        let mut modes = Modes {
+            list: [placeholder; 4],
+            len: 0,
+        };
+        let aperiodic = |r: f64, origin| {
+            Mode::of_root(
+                Complex64::new(r, 0.0),
+                ModeName::Aperiodic,
+                Some(origin),
+                mu1,
+            )
+        };
+        match *pairs {
+            [sp, ph] => {
+                modes.push(Mode::of_root(sp, ModeName::ShortPeriod, None, mu1));
+                modes.push(Mode::of_root(ph, ModeName::Phugoid, None, mu1));
+            }
+            [pair] => {
                 let pair_is_fast = reals.iter().all(|r| pair.norm() >= r.abs());
                 let (name, origin) = if pair_is_fast {
                     (ModeName::ShortPeriod, Origin::Phugoid)
@@ -183,49 +236,38 @@ impl Modes {
                     (ModeName::Phugoid, Origin::ShortPeriod)
                 };
                 let pair_mode = Mode::of_root(pair, name, None, mu1);
-                let real_modes = reals.iter().map(|&r| {
-                    Mode::of_root(
-                        Complex64::new(r, 0.0),
-                        ModeName::Aperiodic,
-                        Some(origin),
-                        mu1,
-                    )
-                });
                 if pair_is_fast {
                     modes.push(pair_mode);
-                    modes.extend(real_modes);
-                } else {
-                    modes.extend(real_modes);
+                }
+                for &r in reals.iter() {
+                    modes.push(aperiodic(r, origin));
+                }
+                if !pair_is_fast {
                     modes.push(pair_mode);
                 }
             }
             _ => {
-                modes.extend(reals.iter().map(|&r| {
-                    Mode::of_root(
-                        Complex64::new(r, 0.0),
-                        ModeName::Aperiodic,
-                        Some(Origin::Unknown),
-                        mu1,
-                    )
-                }));
+                for &r in reals.iter() {
+                    modes.push(aperiodic(r, Origin::Unknown));
+                }
             }
         }
-        Modes { modes }
+        modes
     }
 
     /// The short-period mode, if the short period is oscillatory.
     pub fn short_period(&self) -> Option<&Mode> {
-        self.modes.iter().find(|m| m.name == ModeName::ShortPeriod)
+        self.iter().find(|m| m.name == ModeName::ShortPeriod)
     }
 
     /// The phugoid, if it is oscillatory.
     pub fn phugoid(&self) -> Option<&Mode> {
-        self.modes.iter().find(|m| m.name == ModeName::Phugoid)
+        self.iter().find(|m| m.name == ModeName::Phugoid)
     }
 
     /// Whether any mode grows.
     pub fn any_divergent(&self) -> bool {
-        self.modes.iter().any(Mode::is_divergent)
+        self.iter().any(Mode::is_divergent)
     }
 }
 
@@ -273,7 +315,7 @@ mod tests {
     fn two_pairs_fastest_is_short_period() {
         let roots = [c(-0.01, 0.05), c(-0.01, -0.05), c(-1.0, 5.0), c(-1.0, -5.0)];
         let m = Modes::identify(&roots, 50.0);
-        assert_eq!(m.modes.len(), 2);
+        assert_eq!(m.len(), 2);
         assert_eq!(m.short_period().unwrap().re, -1.0);
         assert_eq!(m.phugoid().unwrap().im, 0.05);
     }
@@ -284,11 +326,7 @@ mod tests {
         let m = Modes::identify(&roots, 50.0);
         assert!(m.short_period().is_none());
         assert!(m.phugoid().is_some());
-        let aperiodic: Vec<_> = m
-            .modes
-            .iter()
-            .filter(|x| x.name == ModeName::Aperiodic)
-            .collect();
+        let aperiodic: Vec<_> = m.iter().filter(|x| x.name == ModeName::Aperiodic).collect();
         assert_eq!(aperiodic.len(), 2);
         assert!(
             aperiodic
@@ -303,7 +341,7 @@ mod tests {
         let m = Modes::identify(&roots, 50.0);
         assert!(m.short_period().is_some());
         assert!(m.any_divergent());
-        assert_eq!(m.modes[1].origin, Some(Origin::Phugoid));
+        assert_eq!(m[1].origin, Some(Origin::Phugoid));
     }
 
     #[test]

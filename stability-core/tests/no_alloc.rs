@@ -1,5 +1,8 @@
-//! The generated coefficient and gradient functions allocate nothing: a
-//! counting global allocator sees no allocation while they run.
+//! The hot path allocates nothing: the generated coefficient and gradient
+//! functions, the quartic's roots and a derivative set's whole analysis
+//! (roots, modes, Routh, §8 criteria, eq 7 check). A counting global
+//! allocator sees no allocation while they run. (One test, so that no other
+//! test's allocations run beside it.)
 
 use stability_core::{Derivatives, Quartic, QuarticGradient};
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -28,7 +31,7 @@ unsafe impl GlobalAlloc for Counting {
 static GLOBAL: Counting = Counting;
 
 #[test]
-fn quartic_coefficients_and_gradient_do_not_allocate() {
+fn the_hot_path_does_not_allocate() {
     let d = Derivatives {
         x_u: -0.03,
         x_w: 0.25,
@@ -54,6 +57,11 @@ fn quartic_coefficients_and_gradient_do_not_allocate() {
         let q = Quartic::from_derivatives(black_box(&di));
         let g = QuarticGradient::of(black_box(&di));
         acc += q.b + g.rows[5][1];
+        let r = stability_core::roots::solve_quartic(q.to_array()).expect("roots");
+        let a = stability_core::analysis::Analysis::of(black_box(&di)).expect("analysis");
+        let lean = stability_core::analysis::Analysis::without_classical(black_box(&di))
+            .expect("analysis");
+        acc += r[0].re + a.modes.len() as f64 + lean.routh.discriminant;
     }
     let after = ALLOCATIONS.load(Ordering::SeqCst);
     black_box(acc);

@@ -105,7 +105,7 @@ pub fn analysis_json(a: &Analysis, tau: Option<f64>) -> serde_json::Map<String, 
         "routh_discriminant": a.routh.discriminant,
         "stable": a.routh.stable,
         "roots": roots,
-        "modes": a.modes.modes.iter().map(|m| mode_json(m, tau)).collect::<Vec<_>>(),
+        "modes": a.modes.iter().map(|m| mode_json(m, tau)).collect::<Vec<_>>(),
         "tau_s": opt(tau),
         "criteria": {
             "one_cycle_standard_met": cycles.map(|c| c <= 1.0),
@@ -201,7 +201,7 @@ pub fn analysis_table(title: &str, a: &Analysis, tau: Option<f64>) -> String {
         "ωₙ (1/τ)".into(),
         "ω̄".into(),
     ]];
-    for m in &a.modes.modes {
+    for m in a.modes.iter() {
         let root = if m.im > 0.0 {
             format!("{} ± {}i", sig(m.re, 5), sig(m.im, 5))
         } else {
