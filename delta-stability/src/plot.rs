@@ -3,6 +3,12 @@
 use plotters::prelude::*;
 use std::fmt::Write;
 
+/// The figure's size in the page (px).
+const WIDTH: u32 = 800;
+const HEIGHT: u32 = 520;
+/// The drawing's resolution relative to that.
+const SCALE: u32 = 4;
+
 /// One curve of a figure.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
@@ -106,15 +112,26 @@ impl Figure {
     }
 
     /// The figure as an SVG document.
+    ///
+    /// plotters draws on a grid of whole pixels; the figure is drawn at
+    /// `SCALE` times its size and shown at 800 × 520 through the viewBox,
+    /// so that slowly varying curves are smooth, not stepped.
     pub fn to_svg(&self) -> Result<String, String> {
         let mut buf = String::new();
         self.draw(&mut buf)
             .map_err(|e| format!("figure {}: {e}", self.id))?;
-        Ok(buf)
+        let (w, h) = (WIDTH * SCALE, HEIGHT * SCALE);
+        Ok(buf.replacen(
+            &format!("width=\"{w}\" height=\"{h}\""),
+            &format!("width=\"{WIDTH}\" height=\"{HEIGHT}\""),
+            1,
+        ))
     }
 
     fn draw(&self, buf: &mut String) -> Result<(), Box<dyn std::error::Error + '_>> {
-        let root = SVGBackend::with_string(buf, (800, 520)).into_drawing_area();
+        let k = SCALE;
+        let root = SVGBackend::with_string(buf, (WIDTH * k, HEIGHT * k)).into_drawing_area();
+        let font = |size: u32| ("sans-serif", size * k);
         root.fill(&WHITE)?;
         let ((x0, x1), (y0, y1)) = self.ranges();
         let caption = if self.id.chars().all(|c| c.is_ascii_digit()) {
@@ -123,27 +140,35 @@ impl Figure {
             self.title.clone()
         };
         let mut chart = ChartBuilder::on(&root)
-            .caption(caption, ("sans-serif", 18))
-            .margin(14)
-            .x_label_area_size(44)
-            .y_label_area_size(70)
+            .caption(caption, font(18))
+            .margin(14 * k)
+            .x_label_area_size(44 * k)
+            .y_label_area_size(70 * k)
             .build_cartesian_2d(x0..x1, y0..y1)?;
         chart
             .configure_mesh()
             .x_desc(self.x_label.as_str())
             .y_desc(self.y_label.as_str())
             .light_line_style(RGBColor(235, 235, 235))
+            .bold_line_style(BLACK.mix(0.2).stroke_width(k))
+            .axis_style(BLACK.stroke_width(k))
+            .label_style(font(12))
+            .axis_desc_style(font(13))
+            .set_all_tick_mark_size(4 * k)
             .draw()?;
         for (y, label) in &self.reference_lines {
             let y = *y;
             chart
                 .draw_series(LineSeries::new(
                     [(x0, y), (x1, y)],
-                    BLACK.mix(0.6).stroke_width(1),
+                    BLACK.mix(0.6).stroke_width(k),
                 ))?
                 .label(label.as_str())
                 .legend(move |(x, yy)| {
-                    PathElement::new(vec![(x, yy), (x + 20, yy)], BLACK.mix(0.6))
+                    PathElement::new(
+                        vec![(x, yy), (x + 20 * k as i32, yy)],
+                        BLACK.mix(0.6).stroke_width(k),
+                    )
                 });
         }
         for (i, s) in self.series.iter().enumerate() {
@@ -161,10 +186,13 @@ impl Figure {
             }
             let mut first = true;
             for seg in segments.into_iter().filter(|s| !s.is_empty()) {
-                let drawn = chart.draw_series(LineSeries::new(seg, color.stroke_width(2)))?;
+                let drawn = chart.draw_series(LineSeries::new(seg, color.stroke_width(2 * k)))?;
                 if first {
                     drawn.label(s.label.as_str()).legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                        PathElement::new(
+                            vec![(x, y), (x + 20 * k as i32, y)],
+                            color.stroke_width(2 * k),
+                        )
                     });
                     first = false;
                 }
@@ -176,6 +204,9 @@ impl Figure {
                 .position(SeriesLabelPosition::UpperRight)
                 .background_style(WHITE.mix(0.85))
                 .border_style(BLACK.mix(0.4))
+                .label_font(font(12))
+                .legend_area_size(28 * k)
+                .margin(10 * k)
                 .draw()?;
         }
         root.present()?;

@@ -526,6 +526,24 @@ fn report_writes_the_figures_summary_and_page() {
             && html.contains("0.97 &lt; M &lt; 1.5")
             && html.contains("about 200")
     );
+    // README.md shows docs/figures/fig33.svg: it must be the report's
+    let fresh = std::fs::read_to_string(dir.path().join("fig33.csv")).unwrap();
+    let shown = std::fs::read_to_string(root().join("docs/figures/fig33.csv")).unwrap();
+    let cells = |t: &str| -> Vec<String> {
+        t.lines()
+            .flat_map(|l| l.split(',').map(String::from).collect::<Vec<_>>())
+            .collect()
+    };
+    let (a, b) = (cells(&fresh), cells(&shown));
+    let same = a.len() == b.len()
+        && a.iter().zip(&b).all(|(x, y)| match (x.parse::<f64>(), y.parse::<f64>()) {
+            (Ok(x), Ok(y)) => (x - y).abs() <= 1e-9 * x.abs().max(1.0),
+            _ => x == y,
+        });
+    assert!(
+        same,
+        "docs/figures/fig33.* are stale: cargo run --release -p delta-stability -- report && cp report/fig33.svg report/fig33.csv docs/figures/"
+    );
 }
 
 fn sweep(args: &[&str]) -> std::process::Output {

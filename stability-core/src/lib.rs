@@ -24,3 +24,8 @@ pub mod study;
 
 pub use derivatives::Derivatives;
 pub use quartic::{Quartic, QuarticGradient};
+
+/// The README's example, compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../../README.md")]
+pub struct ReadmeDoctests;

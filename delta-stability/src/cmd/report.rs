@@ -449,7 +449,12 @@ pub fn run(out: &Path) -> Result<(), Failure> {
         f33 = f33.with(curve(&format!("60° delta, μ₁ = {mu1}"), &ms, &rs, cycles));
     }
     f33.reference_lines.push((1.0, "one cycle (§8)".into()));
-    f33.y_range = Some((-2.0, 6.0));
+    // cycles to double (negative) only when some point diverges
+    let diverges = f33
+        .series
+        .iter()
+        .any(|s| s.points.iter().any(|p| p.1 < 0.0));
+    f33.y_range = Some((if diverges { -2.0 } else { 0.0 }, 6.0));
     push(
         f33,
         "Exact roots; 0 where the short period is not oscillatory. The report's Fig 33: serious instability of the 45° delta for 0.97 < M < 1.5; the 60° delta adequate for μ₁ below about 200.",
