@@ -536,10 +536,12 @@ fn report_writes_the_figures_summary_and_page() {
     };
     let (a, b) = (cells(&fresh), cells(&shown));
     let same = a.len() == b.len()
-        && a.iter().zip(&b).all(|(x, y)| match (x.parse::<f64>(), y.parse::<f64>()) {
-            (Ok(x), Ok(y)) => (x - y).abs() <= 1e-9 * x.abs().max(1.0),
-            _ => x == y,
-        });
+        && a.iter()
+            .zip(&b)
+            .all(|(x, y)| match (x.parse::<f64>(), y.parse::<f64>()) {
+                (Ok(x), Ok(y)) => (x - y).abs() <= 1e-9 * x.abs().max(1.0),
+                _ => x == y,
+            });
     assert!(
         same,
         "docs/figures/fig33.* are stale: cargo run --release -p delta-stability -- report && cp report/fig33.svg report/fig33.csv docs/figures/"
