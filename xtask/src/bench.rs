@@ -67,6 +67,9 @@ pub fn bench(root: &Path) -> Result<(), String> {
     }
 
     let sweep = |extra: &[&str], out: &str| -> Result<f64, String> {
+        // each run starts with no dirty pages of the last one to flush
+        let _ = std::fs::remove_file(dir.join(out));
+        let _ = Command::new("sync").status();
         let t = Instant::now();
         run(Command::new(&bin)
             .current_dir(root)
@@ -107,7 +110,7 @@ pub fn bench(root: &Path) -> Result<(), String> {
             f64::NAN,
         ),
         (
-            "(a) python-control, point by point",
+            "(a) python-control ss + damp, point by point",
             rate("python_control"),
             POINTWISE,
             base["python_control"]["worst_relative_difference"]
