@@ -15,6 +15,7 @@ use crate::analysis::{Analysis, AnalysisError};
 use crate::damping::{Damping, DampingError, Theory, WingInput, damping_derivatives, x_q, x_wdot};
 use crate::geometry::Planform;
 use crate::stiffness::{Stiffness, stiffness};
+use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
 
 /// Which damping derivatives a case uses.
@@ -112,7 +113,7 @@ pub struct CaseResult {
     pub derivatives: Derivatives,
     pub analysis: Analysis,
     pub frequency: Option<FrequencyIteration>,
-    pub warnings: Vec<String>,
+    pub warnings: Warnings,
 }
 
 /// Why a design point has no result.
@@ -142,11 +143,9 @@ fn damping_at(case: &Case, wing: &WingInput, omega_bar: Option<f64>) -> Result<D
             }
             let cot = 1.0 / wing.sweep_le.tan();
             let sonic = (1.0 + 1.0 / (cot * cot)).sqrt();
-            let mut warnings = Vec::new();
+            let mut warnings = Warnings::default();
             let m_sup = if m >= sonic {
-                warnings.push(format!(
-                    "faired damping: the leading edge is supersonic above M = {sonic:.3}; (36) is held at its sonic-leading-edge values"
-                ));
+                warnings.push(Warning::FairedHeldAtSonicEdge { sonic });
                 sonic * (1.0 - 1e-9)
             } else {
                 m
@@ -299,14 +298,14 @@ fn evaluate_with(case: &Case, classical: bool) -> Result<CaseResult, CaseError> 
         let a = analyse(&der)?;
         (d, der, a)
     };
-    let mut warnings = damping.warnings.clone();
+    let mut warnings = damping.warnings;
     if let Some(f) = &frequency
         && !f.converged_ok
     {
-        warnings.push(format!(
-            "the frequency parameter did not converge in {} iterations (last ω̄ = {:.6})",
-            f.iterations, f.converged
-        ));
+        warnings.push(Warning::FrequencyNotConverged {
+            iterations: f.iterations,
+            last: f.converged,
+        });
     }
     Ok(CaseResult {
         coefficients,

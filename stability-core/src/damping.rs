@@ -15,6 +15,7 @@
 //! | `transonic-frequency` | (39)–(40) | the same, with the frequency-dependent terms |
 
 use crate::geometry::Planform;
+pub use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
 use std::f64::consts::PI;
 use std::fmt;
@@ -221,7 +222,7 @@ pub struct Damping {
     /// The functions of Fig 18, for the supersonic theory.
     pub fig18: Option<Fig18>,
     /// Validity limits approached (not errors).
-    pub warnings: Vec<String>,
+    pub warnings: Warnings,
 }
 
 /// The damping derivatives of `theory` for the wing at c.g. `h` and Mach
@@ -246,15 +247,14 @@ pub fn damping_derivatives(
     }
     let a = wing.aspect_ratio;
     let cot = 1.0 / wing.sweep_le.tan();
-    let mut warnings = Vec::new();
+    let mut warnings = Warnings::default();
     let mut fig18 = None;
-    let true_delta_only = |w: &mut Vec<String>| {
+    let true_delta_only = |w: &mut Warnings| {
         if wing.taper > 0.0 {
-            w.push(format!(
-                "{}: the theory is for a true delta; taper {} is treated with the true delta's formulas at this aspect ratio",
-                theory.name(),
-                wing.taper
-            ));
+            w.push(Warning::TrueDeltaOnly {
+                theory,
+                taper: wing.taper,
+            });
         }
     };
     let derivatives = match theory {
@@ -263,15 +263,12 @@ pub fn damping_derivatives(
             // derivatives are the frequency-dependent ones of (39): in the
             // steady limit they are taken from (37)).
             if theory == Theory::Transonic && (mach - 1.0).abs() > 0.2 {
-                warnings.push(format!(
-                    "transonic (38): a theory for M ≈ 1, applied at M = {mach}"
-                ));
+                warnings.push(Warning::AwayFromSonic { theory, mach });
             }
             if theory == Theory::Slender && a * (1.0 - mach * mach).abs().sqrt() > 1.0 {
-                warnings.push(format!(
-                    "slender (37): slender-wing theory assumes βA ≪ 1; here βA = {:.2}",
-                    a * (1.0 - mach * mach).abs().sqrt()
-                ));
+                warnings.push(Warning::NotSlender {
+                    beta_a: a * (1.0 - mach * mach).abs().sqrt(),
+                });
             }
             true_delta_only(&mut warnings);
             let z_wdot = -PI * a / 4.0;
@@ -285,9 +282,7 @@ pub fn damping_derivatives(
         Theory::Garrick => {
             // (32) z_θ̇ = −(πA/4)(3 − 2h), (33) m_θ̇ = −(πA/2)(h − 1)²
             if mach > 0.7 {
-                warnings.push(format!(
-                    "garrick (32)–(33): an incompressible theory, applied at M = {mach}"
-                ));
+                warnings.push(Warning::Incompressible { theory, mach });
             }
             true_delta_only(&mut warnings);
             DampingDerivatives::split(
@@ -307,9 +302,7 @@ pub fn damping_derivatives(
                 return Err(DampingError::Taper(wing.taper));
             }
             if mach > 0.7 {
-                warnings.push(format!(
-                    "garner-taper (34)–(35): an incompressible theory, applied at M = {mach}"
-                ));
+                warnings.push(Warning::Incompressible { theory, mach });
             }
             let z = -PI * a * (0.726_562_5 - 0.445_312_5 * h);
             let m = -9.0 / 8.0 * 0.352_539_062_5 * PI * a * (h - 1.0).powi(2);
@@ -329,15 +322,10 @@ pub fn damping_derivatives(
                 });
             }
             if mach < 1.1 {
-                warnings.push(format!(
-                    "supersonic (36): linear theory needs ω̄/(M² − 1) ≪ 1; at M = {mach} M² − 1 = {:.3}",
-                    mach * mach - 1.0
-                ));
+                warnings.push(Warning::NearlyTransonic { mach });
             }
             if beta_cot > 0.95 {
-                warnings.push(format!(
-                    "supersonic (36): the leading edge is nearly sonic (β cot Λ = {beta_cot:.3})"
-                ));
+                warnings.push(Warning::NearlySonicEdge { beta_cot });
             }
             true_delta_only(&mut warnings);
             let f = Fig18::at(beta_cot);
@@ -350,9 +338,7 @@ pub fn damping_derivatives(
                 other => return Err(DampingError::Frequency(other)),
             };
             if (mach - 1.0).abs() > 0.2 {
-                warnings.push(format!(
-                    "transonic-frequency (39)–(40): a theory for M ≈ 1, applied at M = {mach}"
-                ));
+                warnings.push(Warning::AwayFromSonic { theory, mach });
             }
             true_delta_only(&mut warnings);
             let (k, _) = mangler_k(w, wing.sweep_le);

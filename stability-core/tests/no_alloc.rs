@@ -1,6 +1,8 @@
 //! The hot path allocates nothing: the generated coefficient and gradient
 //! functions, the quartic's roots and a derivative set's whole analysis
-//! (roots, modes, Routh, §8 criteria, eq 7 check). A counting global
+//! (roots, modes, Routh, §8 criteria, eq 7 check), and a design point's
+//! evaluation from its planform (coefficients, derivatives of every theory,
+//! the frequency iteration, warnings). A counting global
 //! allocator sees no allocation while they run. (One test, so that no other
 //! test's allocations run beside it.)
 
@@ -63,6 +65,24 @@ fn the_hot_path_does_not_allocate() {
             .expect("analysis");
         acc += r[0].re + a.modes.len() as f64 + lean.routh.discriminant;
     }
+    use stability_core::case::{DampingModel, evaluate};
+    use stability_core::damping::Theory;
+    let mut warned = 0;
+    for (deg, mach, damping) in [
+        (60.0, 0.6, DampingModel::Faired),
+        (60.0, 1.1, DampingModel::Faired),
+        (60.0, 1.8, DampingModel::Faired),
+        (45.0, 1.3, DampingModel::Theory(Theory::Supersonic)),
+        (45.0, 1.0, DampingModel::Theory(Theory::TransonicFrequency)),
+        (45.0, 0.9, DampingModel::Theory(Theory::Garrick)),
+    ] {
+        let mut case = stability_core::study::report_wing(deg, mach);
+        case.damping = damping;
+        let r = evaluate(black_box(&case)).expect("a design point");
+        warned += r.warnings.len();
+        acc += r.analysis.quartic.e;
+    }
+    assert!(warned > 0, "the cases raise warnings too");
     let after = ALLOCATIONS.load(Ordering::SeqCst);
     black_box(acc);
     assert_eq!(after - before, 0, "allocations in the hot path");

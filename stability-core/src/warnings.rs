@@ -1,0 +1,164 @@
+//! Validity limits approached: not errors, but what a user should know about
+//! a result. Held inline (a design point's evaluation allocates nothing) and
+//! written out only when displayed.
+
+use crate::damping::Theory;
+use serde::Serialize;
+use std::fmt;
+
+/// One validity limit approached.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Warning {
+    /// A theory for a true delta applied to a tapered wing.
+    TrueDeltaOnly { theory: Theory, taper: f64 },
+    /// A transonic theory, (38) or (39)–(40), away from M ≈ 1.
+    AwayFromSonic { theory: Theory, mach: f64 },
+    /// Slender-wing theory (37) with βA not small.
+    NotSlender { beta_a: f64 },
+    /// An incompressible theory, (32)–(35), at a high subsonic Mach number.
+    Incompressible { theory: Theory, mach: f64 },
+    /// Supersonic linear theory (36) close to M = 1.
+    NearlyTransonic { mach: f64 },
+    /// Supersonic theory (36) with a nearly sonic leading edge.
+    NearlySonicEdge { beta_cot: f64 },
+    /// The faired model above the Mach number at which the leading edge
+    /// turns supersonic: (36) held at its sonic-edge values.
+    FairedHeldAtSonicEdge { sonic: f64 },
+    /// The frequency iteration did not converge.
+    FrequencyNotConverged { iterations: usize, last: f64 },
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Warning::TrueDeltaOnly { theory, taper } => write!(
+                f,
+                "{theory}: the theory is for a true delta; taper {taper} is treated with the true delta's formulas at this aspect ratio"
+            ),
+            Warning::AwayFromSonic { theory, mach } => {
+                let eq = if theory == Theory::Transonic {
+                    "(38)"
+                } else {
+                    "(39)–(40)"
+                };
+                write!(
+                    f,
+                    "{theory} {eq}: a theory for M ≈ 1, applied at M = {mach}"
+                )
+            }
+            Warning::NotSlender { beta_a } => write!(
+                f,
+                "slender (37): slender-wing theory assumes βA ≪ 1; here βA = {beta_a:.2}"
+            ),
+            Warning::Incompressible { theory, mach } => {
+                let eq = if theory == Theory::Garrick {
+                    "(32)–(33)"
+                } else {
+                    "(34)–(35)"
+                };
+                write!(
+                    f,
+                    "{theory} {eq}: an incompressible theory, applied at M = {mach}"
+                )
+            }
+            Warning::NearlyTransonic { mach } => write!(
+                f,
+                "supersonic (36): linear theory needs ω̄/(M² − 1) ≪ 1; at M = {mach} M² − 1 = {:.3}",
+                mach * mach - 1.0
+            ),
+            Warning::NearlySonicEdge { beta_cot } => write!(
+                f,
+                "supersonic (36): the leading edge is nearly sonic (β cot Λ = {beta_cot:.3})"
+            ),
+            Warning::FairedHeldAtSonicEdge { sonic } => write!(
+                f,
+                "faired damping: the leading edge is supersonic above M = {sonic:.3}; (36) is held at its sonic-leading-edge values"
+            ),
+            Warning::FrequencyNotConverged { iterations, last } => write!(
+                f,
+                "the frequency parameter did not converge in {iterations} iterations (last ω̄ = {last:.6})"
+            ),
+        }
+    }
+}
+
+impl Serialize for Warning {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
+/// Up to eight warnings, in the order they arose; a ninth is dropped (no
+/// evaluation raises more than five).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Warnings {
+    list: [Option<Warning>; 8],
+    len: usize,
+}
+
+impl Warnings {
+    pub fn push(&mut self, w: Warning) {
+        if let Some(slot) = self.list.get_mut(self.len) {
+            *slot = Some(w);
+            self.len += 1;
+        }
+    }
+
+    pub fn extend(&mut self, other: &Warnings) {
+        for w in other {
+            self.push(*w);
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = &Warning> {
+        self.list[..self.len].iter().flatten()
+    }
+}
+
+impl<'a> IntoIterator for &'a Warnings {
+    type Item = &'a Warning;
+    type IntoIter = std::iter::Flatten<std::slice::Iter<'a, Option<Warning>>>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.list[..self.len].iter().flatten()
+    }
+}
+
+impl Serialize for Warnings {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(self.iter())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn warnings_read_as_before_and_overflow_quietly() {
+        let w = Warning::AwayFromSonic {
+            theory: Theory::Transonic,
+            mach: 1.5,
+        };
+        assert_eq!(
+            w.to_string(),
+            "transonic (38): a theory for M ≈ 1, applied at M = 1.5"
+        );
+        let mut ws = Warnings::default();
+        for _ in 0..10 {
+            ws.push(w);
+        }
+        assert_eq!(ws.len(), 8);
+        assert_eq!(
+            serde_json::to_string(&ws).unwrap().matches("M ≈ 1").count(),
+            8
+        );
+    }
+}
