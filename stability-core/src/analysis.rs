@@ -98,7 +98,7 @@ impl Analysis {
     }
 
     /// As [`Analysis::of`], without the eq (7) check (`classical` is
-    /// `None`): the lean path of a sweep, which allocates nothing.
+    /// `None`): the lean path of a sweep.
     pub fn without_classical(d: &Derivatives) -> Result<Analysis, AnalysisError> {
         Analysis::with(d, false)
     }

@@ -17,7 +17,7 @@ use stability_core::Derivatives;
 use stability_core::analysis::Analysis;
 use stability_core::case::{Case, CaseError, CaseResult, evaluate_point};
 use stability_core::geometry::{Planform, Size};
-use stability_core::study::{Verdict, verdict_of};
+use stability_core::study::{Verdict, grid as values, verdict_of};
 use std::io::Write as _;
 use std::path::Path;
 
@@ -45,13 +45,11 @@ pub fn parse_range(flag: &str, text: &str) -> Result<Vec<f64>, String> {
                     "--{flag}: the range {a}:{b} runs backwards (write the smaller value first)"
                 ));
             }
-            let n = ((b - a) / step + 1e-9).floor() + 1.0;
+            let n = ((b - a) / step).floor() + 1.0;
             if n > 1e7 {
                 return Err(format!("--{flag}: {n} values is too many (at most 1e7)"));
             }
-            Ok((0..n as usize)
-                .map(|i| clean(a + step * i as f64))
-                .collect())
+            Ok(values(a, b, step).into_iter().map(clean).collect())
         }
         _ => Err(format!(
             "--{flag}: expected A:B:STEP or a single value, not `{text}`"
@@ -123,8 +121,9 @@ impl Grid {
             .try_fold(1usize, |acc, &d| acc.checked_mul(d))
     }
 
-    /// The `i`-th design point and its grid values.
-    fn point(&self, i: usize) -> ([f64; 5], Case) {
+    /// Makes `case` the `i`-th design point (from the base point, whose other
+    /// fields it keeps; no clone per point) and returns its grid values.
+    fn set_point(&self, i: usize, case: &mut Case) -> [f64; 5] {
         let dims = self.dims();
         let mut k = i;
         let mut idx = [0usize; 5];
@@ -139,15 +138,9 @@ impl Grid {
             self.mu1[idx[3]],
             self.i_b[idx[4]],
         ];
-        let case = Case {
-            planform: self.planforms[idx[1]],
-            mach: head[0],
-            h: head[2],
-            mu1: head[3],
-            i_b: head[4],
-            ..self.base.clone()
-        };
-        (head, case)
+        case.planform = self.planforms[idx[1]];
+        [case.mach, _, case.h, case.mu1, case.i_b] = head;
+        head
     }
 }
 
@@ -320,11 +313,12 @@ fn block(grid: &Grid, range: std::ops::Range<usize>, options: (bool, bool)) -> V
     let per_aero = grid.mu1.len() * grid.i_b.len();
     let reuse = !grid.base.damping.depends_on_mass();
     let mut last: Option<(usize, CaseResult)> = None;
+    let mut case = grid.base.clone();
     for i in range {
         if options.0 && i > 0 {
             out.extend_from_slice(b",\n");
         }
-        let (head, case) = grid.point(i);
+        let head = grid.set_point(i, &mut case);
         let key = i / per_aero;
         match &last {
             Some((k, r)) if reuse && *k == key => {
