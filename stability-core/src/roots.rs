@@ -18,8 +18,12 @@
 //! 2. Ferrari: x⁴ + ax³ + bx² + cx + d = (x² + ax/2 + y/2)² − (px + q)²
 //!    when y is a root of the resolvent y³ − by² + (ac − 4d)y + (4bd − a²d − c²) = 0,
 //!    with p² = a²/4 + y − b, q² = y²/4 − d, pq = ay/4 − c/2. The largest
-//!    real root y is taken (it makes p² and q² non-negative), by Cardano's
-//!    formula polished with Newton's method.
+//!    real root y is taken (it makes p² and q² non-negative): by Cardano's
+//!    formula when it is the only real root, else by Halley's iteration
+//!    from above — from y = b when that is above it (y = β + δ = b − αγ, so
+//!    b is close when a factor's linear coefficient is small, as for a
+//!    lightly damped mode), else from the bound 2√(−p/3) of the depressed
+//!    cubic.
 //! 3. Of β and δ the larger in magnitude is kept and the other is d/(it),
 //!    and α, γ are re-solved from the linear pair α + γ = a,
 //!    αδ + βγ = c when that is better conditioned (as in Algorithm 1010).
@@ -238,12 +242,11 @@ fn factored_roots(a: f64, b: f64, c: f64, d: f64, exact: &[f64; 5]) -> ([Complex
             let (al, be, ga, de) = newton_factor(f, &m);
             let q1 = quadratic(al, be);
             let q2 = quadratic(ga, de);
-            let (res1, k1) = check_pair(exact, q1);
-            let (res2, k2) = check_pair(exact, q2);
-            let res = res1.max(res2);
+            let (c1, c2) = (check_pair(exact, q1), check_pair(exact, q2));
+            let res = c1.residual().max(c2.residual());
             if res < best.1 {
                 *best = ([q1.0, q1.1, q2.0, q2.1], res);
-                if res <= 8.0 * f64::EPSILON && k1.max(k2) <= 16.0 {
+                if c1.settled() && c2.settled() {
                     return true;
                 }
             }
@@ -263,9 +266,32 @@ fn factored_roots(a: f64, b: f64, c: f64, d: f64, exact: &[f64; 5]) -> ([Complex
     (best.0, false)
 }
 
-/// The relative residual and condition number of a quadratic's roots: once
-/// for a conjugate pair (both share them), in real arithmetic for reals.
-fn check_pair(c: &[f64; 5], (z1, z2): (Complex64, Complex64)) -> (f64, f64) {
+/// The residual of a quadratic's roots, |P(z)| against its rounding scale
+/// Σ|cₖ||z|^(4−k), and their condition number κ = Σ|cₖ||z|^(4−k)/(|z||P′(z)|)
+/// as a ratio, divided only when asked for (the usual case is settled by
+/// comparisons alone).
+#[derive(Clone, Copy)]
+struct PairCheck {
+    /// The larger |P(z)| / Σ|cₖ||z|^(4−k) of the two roots, as (|P|, Σ).
+    residual: (f64, f64),
+    /// Whether κ ≤ 16 for both.
+    well_conditioned: bool,
+}
+
+impl PairCheck {
+    fn residual(&self) -> f64 {
+        self.residual.0 / self.residual.1
+    }
+
+    /// Residual within 8ε of rounding and κ ≤ 16: nothing to polish.
+    fn settled(&self) -> bool {
+        self.residual.0 <= 8.0 * f64::EPSILON * self.residual.1 && self.well_conditioned
+    }
+}
+
+/// The check of a quadratic's roots: once for a conjugate pair (both share
+/// it), in real arithmetic for reals.
+fn check_pair(c: &[f64; 5], (z1, z2): (Complex64, Complex64)) -> PairCheck {
     let real = |x: f64| {
         let p = (((c[0] * x + c[1]) * x + c[2]) * x + c[3]) * x + c[4];
         let ax = x.abs();
@@ -273,26 +299,24 @@ fn check_pair(c: &[f64; 5], (z1, z2): (Complex64, Complex64)) -> (f64, f64) {
             + c[4].abs();
         let dp = ((4.0 * c[0] * x + 3.0 * c[1]) * x + 2.0 * c[2]) * x + c[3];
         let s = s.max(f64::MIN_POSITIVE);
-        (
-            p.abs() / s,
-            if ax == 0.0 { 1.0 } else { s / (ax * dp.abs()) },
-        )
+        ((p.abs(), s), ax == 0.0 || s <= 16.0 * ax * dp.abs())
     };
     if z1.im == 0.0 {
         let (r1, k1) = real(z1.re);
         let (r2, k2) = real(z2.re);
-        (r1.max(r2), k1.max(k2))
+        // the larger ratio, compared without dividing
+        let residual = if r1.0 * r2.1 >= r2.0 * r1.1 { r1 } else { r2 };
+        PairCheck {
+            residual,
+            well_conditioned: k1 && k2,
+        }
     } else {
         let s = abs_sum(c, z1).max(f64::MIN_POSITIVE);
         let n = l1(z1);
-        (
-            l1(horner(c, z1)) / s,
-            if n == 0.0 {
-                1.0
-            } else {
-                s / (n * l1(derivative(c, z1)))
-            },
-        )
+        PairCheck {
+            residual: (l1(horner(c, z1)), s),
+            well_conditioned: n == 0.0 || s <= 16.0 * n * l1(derivative(c, z1)),
+        }
     }
 }
 
@@ -317,7 +341,15 @@ fn largest_cubic_root(e2: f64, e1: f64, e0: f64) -> f64 {
         }
     } else {
         let mut t = 2.0 * (-p / 3.0).sqrt();
-        for _ in 0..6 {
+        // y = b (t = −2e₂/3) lies just above the root when a factor's
+        // linear coefficient is small (b − y = αγ, e.g. a lightly damped
+        // mode): a closer start, if it is right of the local minimum and
+        // f > 0 there.
+        let tb = -2.0 * sh;
+        if tb < t && 3.0 * tb * tb >= -p && tb > 0.0 && (tb * tb + p) * tb + q > 0.0 {
+            t = tb;
+        }
+        for _ in 0..8 {
             let f = (t * t + p) * t + q;
             let df = 3.0 * t * t + p;
             let den = 2.0 * df * df - f * 6.0 * t;
@@ -328,7 +360,12 @@ fn largest_cubic_root(e2: f64, e1: f64, e0: f64) -> f64 {
             if next >= t || next.is_nan() {
                 break;
             }
+            // cubic convergence: after a step this small, ~ε is left
+            let settled = t - next <= 1e-6 * next.abs();
             t = next;
+            if settled {
+                break;
+            }
         }
         t
     };
@@ -543,6 +580,15 @@ fn sort_roots(r: &mut [Complex64; 4]) {
         let (a, b) = (key(x), key(y));
         a.0 > b.0 || (a.0 == b.0 && (a.1 < b.1 || (a.1 == b.1 && a.2 < b.2)))
     };
+    // Two conjugate pairs, each +i first (the usual stability quartic, as
+    // the factorization returns it): order the pairs by their first roots.
+    if r[0].im > 0.0 && r[1] == r[0].conj() && r[2].im > 0.0 && r[3] == r[2].conj() {
+        if before(&r[2], &r[0]) {
+            r.swap(0, 2);
+            r.swap(1, 3);
+        }
+        return;
+    }
     for i in 1..4 {
         let mut j = i;
         while j > 0 && before(&r[j], &r[j - 1]) {
@@ -863,6 +909,27 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    #[test]
+    fn two_pairs_sort_as_the_general_sort_does() {
+        let c = Complex64::new;
+        for (a, b) in [
+            (c(-1.0, 5.0), c(-0.01, 0.05)),
+            (c(-0.01, 0.05), c(-1.0, 5.0)),
+            (c(1.0, 2.0), c(2.0, 1.0)), // equal moduli: smaller real part first
+            (c(2.0, 1.0), c(1.0, 2.0)),
+            (c(-3.0, 4.0), c(-3.0, 4.0)),
+        ] {
+            let mut fast = [a, a.conj(), b, b.conj()];
+            // interleaved, so that the general insertion sort runs
+            let mut general = [a, b, a.conj(), b.conj()];
+            sort_roots(&mut fast);
+            sort_roots(&mut general);
+            assert_eq!(fast, general, "{a} {b}");
+            assert!(fast[0].norm_sqr() >= fast[2].norm_sqr());
+            assert_eq!(fast[1], fast[0].conj());
         }
     }
 
