@@ -3,7 +3,7 @@
 //! the one-cycle standard, and the largest μ₁ that meets it.
 
 use crate::aero::AeroModel;
-use crate::case::{Case, CaseResult, DampingModel, evaluate};
+use crate::case::{Case, CaseResult, DampingModel, evaluate_point};
 use crate::geometry::{Planform, Size};
 use crate::modes::Modes;
 
@@ -103,7 +103,7 @@ pub fn max_mu1_one_cycle(case: &Case) -> Option<f64> {
     let meets = |log_mu1: f64| {
         let mut c = case.clone();
         c.mu1 = 10f64.powf(log_mu1);
-        evaluate(&c)
+        evaluate_point(&c)
             .map(|r| verdict(&r) == Verdict::Meets)
             .unwrap_or(false)
     };
@@ -149,7 +149,7 @@ mod tests {
         let at = |m: f64| {
             let mut c = case.clone();
             c.mu1 = m;
-            verdict(&evaluate(&c).unwrap())
+            verdict(&crate::case::evaluate(&c).unwrap())
         };
         assert_eq!(at(mu * 0.999), Verdict::Meets);
         assert_ne!(at(mu * 1.001), Verdict::Meets);
