@@ -100,6 +100,8 @@ pub struct Grid {
     pub mu1: Vec<f64>,
     pub i_b: Vec<f64>,
     planforms: Vec<Planform>,
+    /// Each axis's values as written (formatted once, not once per row).
+    text: [Vec<Box<str>>; 5],
     base: Case,
 }
 
@@ -122,8 +124,9 @@ impl Grid {
     }
 
     /// Makes `case` the `i`-th design point (from the base point, whose other
-    /// fields it keeps; no clone per point) and returns its grid values.
-    fn set_point(&self, i: usize, case: &mut Case) -> [f64; 5] {
+    /// fields it keeps; no clone per point) and returns its grid values as
+    /// written.
+    fn set_point(&self, i: usize, case: &mut Case) -> [&str; 5] {
         let dims = self.dims();
         let mut k = i;
         let mut idx = [0usize; 5];
@@ -140,7 +143,7 @@ impl Grid {
         ];
         case.planform = self.planforms[idx[1]];
         [case.mach, _, case.h, case.mu1, case.i_b] = head;
-        head
+        std::array::from_fn(|k| &*self.text[k][idx[k]])
     }
 }
 
@@ -237,7 +240,7 @@ impl Row<'_> {
 
 fn write_point(
     out: &mut Vec<u8>,
-    head: [f64; 5],
+    head: [&str; 5],
     r: Result<(&Derivatives, &Analysis), &CaseError>,
     options: (bool, bool),
 ) {
@@ -252,7 +255,8 @@ fn write_point(
         first: true,
     };
     for (name, v) in HEAD.iter().zip(head) {
-        row.number(name, Some(v));
+        row.key(name);
+        row.out.extend_from_slice(v.as_bytes());
     }
     match r {
         Ok((d, a)) => {
@@ -367,6 +371,16 @@ pub fn grid(o: &Options, base: Case) -> Result<Grid, String> {
             ..base.planform
         });
     }
+    let mut num = zmij::Buffer::new();
+    let mut text =
+        |v: &[f64]| -> Vec<Box<str>> { v.iter().map(|&x| num.format(x).into()).collect() };
+    let text = [
+        text(&mach),
+        text(&sweep_deg),
+        text(&cg),
+        text(&mu1),
+        text(&i_b),
+    ];
     let g = Grid {
         mach,
         sweep_deg,
@@ -374,6 +388,7 @@ pub fn grid(o: &Options, base: Case) -> Result<Grid, String> {
         mu1,
         i_b,
         planforms,
+        text,
         base,
     };
     match g.points() {
