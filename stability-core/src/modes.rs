@@ -85,7 +85,7 @@ impl Mode {
     pub fn of_root(lam: Complex64, name: ModeName, origin: Option<Origin>, mu1: f64) -> Mode {
         let r = lam.re;
         let s = lam.im.abs();
-        let wn = lam.norm();
+        let wn = modulus(lam);
         let oscillatory = s > 0.0;
         let positive = |x: f64| (x.is_finite() && x > 0.0).then_some(x);
         Mode {
@@ -149,6 +149,17 @@ pub struct ModeSeconds {
     pub natural_frequency: f64,
 }
 
+/// |λ| as √(re² + im²), within an ulp of `hypot` at a fraction of its
+/// cost; `hypot` only where the squares overflow or underflow.
+fn modulus(z: Complex64) -> f64 {
+    let n2 = z.norm_sqr();
+    if n2.is_finite() && n2 >= f64::MIN_POSITIVE {
+        n2.sqrt()
+    } else {
+        z.norm()
+    }
+}
+
 /// The modes of a quartic, fastest first: two to four (a complex pair
 /// counts once), held inline — identifying them allocates nothing.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -208,7 +219,7 @@ impl Modes {
             }
         }
         let (pairs, reals) = (&mut pairs[..np], &mut reals[..nr]);
-        pairs.sort_unstable_by(|a, b| b.norm().total_cmp(&a.norm()));
+        pairs.sort_unstable_by(|a, b| modulus(*b).total_cmp(&modulus(*a)));
         reals.sort_unstable_by(|a, b| b.abs().total_cmp(&a.abs()));
         let placeholder = Mode::of_root(zero, ModeName::Aperiodic, None, 1.0);
         let mut modes = Modes {
@@ -229,7 +240,7 @@ impl Modes {
                 modes.push(Mode::of_root(ph, ModeName::Phugoid, None, mu1));
             }
             [pair] => {
-                let pair_is_fast = reals.iter().all(|r| pair.norm() >= r.abs());
+                let pair_is_fast = reals.iter().all(|r| modulus(pair) >= r.abs());
                 let (name, origin) = if pair_is_fast {
                     (ModeName::ShortPeriod, Origin::Phugoid)
                 } else {
