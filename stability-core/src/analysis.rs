@@ -3,7 +3,7 @@
 //! the damping standard (§8).
 
 use crate::classical::{first_approximation, refine, relative_errors};
-use crate::criteria::{DampingStandard, Routh, ShortPeriodApproximation};
+use crate::criteria::{DampingStandard, Routh, ShortPeriodApproximation, Verdict};
 use crate::modes::Modes;
 use crate::roots::{RootsError, solve_quartic};
 use crate::{Derivatives, Quartic};
@@ -84,6 +84,8 @@ pub struct Analysis {
     /// The four roots (units of 1/τ), conjugates adjacent, fastest first.
     pub roots: [Complex64; 4],
     pub modes: Modes,
+    /// The §8 one-cycle standard applied to the short period.
+    pub verdict: Verdict,
     pub short_period_approximation: ShortPeriodApproximation,
     pub damping_standard: DampingStandard,
     /// The report's eq (7), when both modes are oscillatory.
@@ -144,6 +146,7 @@ impl Analysis {
             quartic,
             routh: Routh::of(&quartic),
             roots,
+            verdict: Verdict::of(&modes),
             modes,
             classical,
             short_period_approximation: ShortPeriodApproximation::of(d),

@@ -2,6 +2,7 @@
 //! standard (§8, eq 41), static and manoeuvre margins (§9, eq 42) and the
 //! MIL-F-8785C damping levels.
 
+use crate::modes::{Mode, ModeName, Modes, Origin};
 use crate::{Derivatives, Quartic};
 use serde::Serialize;
 use std::f64::consts::{LN_2, PI};
@@ -134,6 +135,86 @@ impl DampingStandard {
             m_thetadot_max_exact: max_exact,
             margin_exact: max_exact.map(|m| m - m_thetadot),
         }
+    }
+}
+
+/// The §8 standard, "damp to half amplitude in less than one cycle",
+/// applied to the short period: the one verdict that `quartic`, `sweep`,
+/// `report` and every JSON output report.
+///
+/// - An oscillatory short period r ± is meets it when it decays (r < 0) and
+///   its cycles to half amplitude, 0.11032·s/(−r) (eq 8), are at most one;
+///   it fails when it decays more slowly or is neutral (r = 0: it never
+///   halves); it is divergent when r > 0.
+/// - A short period split into two real roots has no cycle to count: it
+///   meets the standard when both roots decay (the motion halves before
+///   completing any cycle), fails when one is neutral (a zero root), and is
+///   divergent when one grows. Only the short period's own roots count: a
+///   divergent phugoid is not a short-period verdict.
+/// - With four real roots the two of largest modulus are taken as the
+///   short period's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    Meets,
+    Fails,
+    Divergent,
+}
+
+impl Verdict {
+    /// The verdict of a set of modes (see the type's documentation).
+    pub fn of(modes: &Modes) -> Verdict {
+        if let Some(sp) = modes.short_period() {
+            return Verdict::of_oscillatory(sp);
+        }
+        let mut remnant = modes
+            .iter()
+            .filter(|m| m.name == ModeName::Aperiodic)
+            .filter(|m| matches!(m.origin, Some(Origin::ShortPeriod) | Some(Origin::Unknown)));
+        // Four reals (origin unknown) are sorted fastest first: the short
+        // period's are the first two.
+        let (first, second) = (remnant.next(), remnant.next());
+        [first, second]
+            .into_iter()
+            .flatten()
+            .map(|m| Verdict::of_decay(m.re))
+            .max()
+            .unwrap_or(Verdict::Meets)
+    }
+
+    fn of_oscillatory(sp: &Mode) -> Verdict {
+        match Verdict::of_decay(sp.re) {
+            Verdict::Meets => match sp.cycles_to_half {
+                Some(c) if c <= 1.0 => Verdict::Meets,
+                _ => Verdict::Fails,
+            },
+            other => other,
+        }
+    }
+
+    /// A real part's contribution: decaying, neutral or growing.
+    fn of_decay(re: f64) -> Verdict {
+        if re > 0.0 {
+            Verdict::Divergent
+        } else if re == 0.0 {
+            Verdict::Fails
+        } else {
+            Verdict::Meets
+        }
+    }
+
+    /// `meets`, `fails`, `divergent` (the CSV and JSON spelling).
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Verdict::Meets => "meets",
+            Verdict::Fails => "fails",
+            Verdict::Divergent => "divergent",
+        }
+    }
+
+    /// Whether the standard is met.
+    pub fn is_met(self) -> bool {
+        self == Verdict::Meets
     }
 }
 
@@ -341,6 +422,48 @@ mod tests {
         d.m_w = -a * 0.1;
         let q = Quartic::from_derivatives(&d);
         assert!((static_margin_from_e(q.e, &d, a).unwrap() - 0.1).abs() < 1e-14);
+    }
+
+    fn verdict_of_roots(roots: [(f64, f64); 4]) -> Verdict {
+        let roots = roots.map(|(re, im)| num_complex::Complex64::new(re, im));
+        Verdict::of(&Modes::identify(&roots, 50.0))
+    }
+
+    #[test]
+    fn one_verdict_for_every_short_period() {
+        let ph = [(-0.01, 0.05), (-0.01, -0.05)];
+        let with = |sp: [(f64, f64); 2], ph: [(f64, f64); 2]| {
+            verdict_of_roots([sp[0], sp[1], ph[0], ph[1]])
+        };
+        // (ln 2/2π)·s/(−r) = 1 at s/(−r) = 2π/ln 2 = 9.0647: either side of it
+        assert_eq!(with([(-1.0, 9.0), (-1.0, -9.0)], ph), Verdict::Meets);
+        assert_eq!(with([(-1.0, 9.1), (-1.0, -9.1)], ph), Verdict::Fails);
+        // neutral (r = 0) never halves: fails, not divergent, not met
+        assert_eq!(with([(0.0, 9.0), (0.0, -9.0)], ph), Verdict::Fails);
+        assert_eq!(with([(0.1, 9.0), (0.1, -9.0)], ph), Verdict::Divergent);
+        // a split short period: both decay → meets; one grows → divergent;
+        // a zero root → fails
+        assert_eq!(with([(-3.0, 0.0), (-0.8, 0.0)], ph), Verdict::Meets);
+        assert_eq!(with([(-3.0, 0.0), (0.8, 0.0)], ph), Verdict::Divergent);
+        assert_eq!(with([(-3.0, 0.0), (0.0, 0.0)], ph), Verdict::Fails);
+        // a divergent phugoid beside a split, decaying short period is not
+        // a short-period divergence
+        let growing_ph = [(0.01, 0.05), (0.01, -0.05)];
+        assert_eq!(with([(-3.0, 0.0), (-0.8, 0.0)], growing_ph), Verdict::Meets);
+        // nor beside an oscillatory one
+        assert_eq!(
+            with([(-1.0, 5.0), (-1.0, -5.0)], growing_ph),
+            Verdict::Meets
+        );
+        // four reals: the two fastest are the short period's
+        assert_eq!(
+            verdict_of_roots([(-3.0, 0.0), (-2.0, 0.0), (0.01, 0.0), (-0.02, 0.0)]),
+            Verdict::Meets
+        );
+        assert_eq!(
+            verdict_of_roots([(-3.0, 0.0), (2.0, 0.0), (-0.01, 0.0), (-0.02, 0.0)]),
+            Verdict::Divergent
+        );
     }
 
     #[test]

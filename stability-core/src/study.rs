@@ -3,9 +3,8 @@
 //! the one-cycle standard, and the largest μ₁ that meets it.
 
 use crate::aero::AeroModel;
-use crate::case::{Case, CaseResult, DampingModel, evaluate_point};
+use crate::case::{Case, DampingModel, evaluate_point};
 use crate::geometry::{Planform, Size};
-use crate::modes::Modes;
 
 /// The report's tailless true delta of leading-edge sweep `deg`: c.g. at
 /// h = 0.25 (x₀/c₀ = 0.5), μ₁ = 50 (Figs 27–31), i_B = 0.08 and
@@ -35,42 +34,6 @@ pub fn grid(a: f64, b: f64, step: f64) -> Vec<f64> {
     }
     let n = ((b - a) / step + 1e-9).floor() as usize;
     (0..=n).map(|i| a + step * i as f64).collect()
-}
-
-/// What the standard makes of a design point's short period.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Verdict {
-    /// Damped to half amplitude within one cycle (or not oscillatory and
-    /// decaying).
-    Meets,
-    /// Oscillatory, decaying, but more than one cycle to halve.
-    Fails,
-    /// A growing short period.
-    Divergent,
-}
-
-/// The §8 standard applied to a result.
-pub fn verdict(r: &CaseResult) -> Verdict {
-    verdict_of(&r.analysis.modes)
-}
-
-/// The §8 standard applied to a set of modes.
-pub fn verdict_of(modes: &Modes) -> Verdict {
-    match modes.short_period() {
-        Some(m) if m.re >= 0.0 => Verdict::Divergent,
-        Some(m) => match m.cycles_to_half {
-            Some(c) if c <= 1.0 => Verdict::Meets,
-            _ => Verdict::Fails,
-        },
-        // split short period: meets unless a root grows
-        None => {
-            if modes.any_divergent() {
-                Verdict::Divergent
-            } else {
-                Verdict::Meets
-            }
-        }
-    }
 }
 
 /// The intervals [from, to] of consecutive grid points where `flag` holds.
@@ -104,7 +67,7 @@ pub fn max_mu1_one_cycle(case: &Case) -> Option<f64> {
         let mut c = case.clone();
         c.mu1 = 10f64.powf(log_mu1);
         evaluate_point(&c)
-            .map(|r| verdict(&r) == Verdict::Meets)
+            .map(|r| r.analysis.verdict.is_met())
             .unwrap_or(false)
     };
     let steps: Vec<f64> = (0..=80).map(|i| i as f64 * 0.05).collect();
@@ -128,6 +91,7 @@ pub fn max_mu1_one_cycle(case: &Case) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::criteria::Verdict;
 
     #[test]
     fn grids_and_intervals() {
@@ -149,7 +113,7 @@ mod tests {
         let at = |m: f64| {
             let mut c = case.clone();
             c.mu1 = m;
-            verdict(&crate::case::evaluate(&c).unwrap())
+            crate::case::evaluate(&c).unwrap().analysis.verdict
         };
         assert_eq!(at(mu * 0.999), Verdict::Meets);
         assert_ne!(at(mu * 1.001), Verdict::Meets);

@@ -8,7 +8,7 @@ use crate::fmt::sig;
 use crate::input::{self, DerivativeFile};
 use serde_json::{Value, json};
 use stability_core::analysis::Analysis;
-use stability_core::criteria::{Category, phugoid_level, short_period_level};
+use stability_core::criteria::{Category, Verdict, phugoid_level, short_period_level};
 use stability_core::modes::Mode;
 
 pub fn run(file: &str, json: bool) -> Result<(), Failure> {
@@ -99,7 +99,6 @@ pub fn analysis_json(a: &Analysis, tau: Option<f64>) -> serde_json::Map<String, 
         .collect();
     let sp = &a.short_period_approximation;
     let ds = &a.damping_standard;
-    let cycles = a.modes.short_period().and_then(|m| m.cycles_to_half);
     let v = json!({
         "coefficients": { "A": q.a, "B": q.b, "C": q.c, "D": q.d, "E": q.e },
         "routh_discriminant": a.routh.discriminant,
@@ -108,7 +107,8 @@ pub fn analysis_json(a: &Analysis, tau: Option<f64>) -> serde_json::Map<String, 
         "modes": a.modes.iter().map(|m| mode_json(m, tau)).collect::<Vec<_>>(),
         "tau_s": opt(tau),
         "criteria": {
-            "one_cycle_standard_met": cycles.map(|c| c <= 1.0),
+            "one_cycle_standard_met": a.verdict.is_met(),
+            "verdict": a.verdict,
             "short_period_approximation": {
                 "B": sp.b, "C": sp.c, "re": sp.re, "im": sp.im,
                 "cycles_to_half_report": opt(sp.cycles_to_half_report),
@@ -154,6 +154,26 @@ pub fn table(input: &DerivativeFile, a: &Analysis) -> String {
         a,
         input.dimensional.map(|d| d.tau()),
     )
+}
+
+/// The §8 verdict in words, with the cycles to half amplitude behind it.
+fn verdict_text(a: &Analysis) -> String {
+    let sp = a.modes.short_period();
+    let cycles = sp.and_then(|m| m.cycles_to_half);
+    match (a.verdict, sp, cycles) {
+        (Verdict::Meets, Some(_), Some(c)) => {
+            format!("met: {} cycles to half amplitude", sig(c, 3))
+        }
+        (Verdict::Meets, _, _) => "met: the short period is aperiodic and decays".into(),
+        (Verdict::Fails, Some(_), Some(c)) => {
+            format!("NOT MET: {} cycles to half amplitude", sig(c, 3))
+        }
+        (Verdict::Fails, _, _) => "NOT MET: the short period is neutral (it never halves)".into(),
+        (Verdict::Divergent, Some(_), _) => "NOT MET: the short period is divergent".into(),
+        (Verdict::Divergent, None, _) => {
+            "NOT MET: the short period is aperiodic and one of its roots grows".into()
+        }
+    }
 }
 
 /// The analysis as a readable page, under `title`.
@@ -283,15 +303,7 @@ pub fn analysis_table(title: &str, a: &Analysis, tau: Option<f64>) -> String {
         cell(sp.cycles_to_half),
         cell(sp.cycles_to_half_report)
     );
-    let verdict = match a.modes.short_period() {
-        Some(m) if m.is_divergent() => "NOT MET: the short period is divergent".to_string(),
-        Some(m) => match m.cycles_to_half {
-            Some(c) if c <= 1.0 => format!("met: {} cycles to half amplitude", sig(c, 3)),
-            Some(c) => format!("NOT MET: {} cycles to half amplitude", sig(c, 3)),
-            None => "—".into(),
-        },
-        None => "the short period is not oscillatory".into(),
-    };
+    let verdict = verdict_text(a);
     let _ = writeln!(
         s,
         "Damping standard (§8: half amplitude within one cycle): {verdict}"

@@ -12,10 +12,11 @@ use rayon::prelude::*;
 use serde_json::json;
 use stability_core::case::{Case, CaseResult, DampingModel, evaluate};
 use stability_core::criteria::Margins;
+use stability_core::criteria::Verdict;
 use stability_core::damping::{Fig18, Theory, WingInput, damping_derivatives};
 use stability_core::geometry::{Planform, Size, cropped_h};
 use stability_core::response::{Input, Simplifications, StateSpace, TwoDof};
-use stability_core::study::{Verdict, grid, intervals, max_mu1_one_cycle, report_wing, verdict};
+use stability_core::study::{grid, intervals, max_mu1_one_cycle, report_wing};
 use std::fmt::Write;
 use std::path::Path;
 
@@ -604,8 +605,10 @@ pub fn run(out: &Path) -> Result<(), Failure> {
     let mut summary = serde_json::Map::new();
     let mut findings = Vec::new();
     for (k, &deg) in wings.iter().enumerate() {
-        let verdicts: Vec<Option<Verdict>> =
-            results[k].iter().map(|r| r.as_ref().map(verdict)).collect();
+        let verdicts: Vec<Option<Verdict>> = results[k]
+            .iter()
+            .map(|r| r.as_ref().map(|r| r.analysis.verdict))
+            .collect();
         let unstable = intervals(
             &ms,
             &verdicts

@@ -17,7 +17,7 @@ use stability_core::Derivatives;
 use stability_core::analysis::Analysis;
 use stability_core::case::{Case, CaseError, CaseResult, evaluate_point};
 use stability_core::geometry::{Planform, Size};
-use stability_core::study::{Verdict, grid as values, verdict_of};
+use stability_core::study::grid as values;
 use std::io::Write as _;
 use std::path::Path;
 
@@ -263,14 +263,7 @@ fn write_point(
             let sp = a.modes.short_period();
             let ph = a.modes.phugoid();
             row.boolean("stable", a.routh.stable);
-            row.word(
-                "verdict",
-                match verdict_of(&a.modes) {
-                    Verdict::Meets => "meets",
-                    Verdict::Fails => "fails",
-                    Verdict::Divergent => "divergent",
-                },
-            );
+            row.word("verdict", a.verdict.as_str());
             row.number("sp_re", sp.map(|m| m.re));
             row.number("sp_im", sp.map(|m| m.im));
             row.number("sp_cycles_to_half", sp.and_then(|m| m.cycles_to_half));
