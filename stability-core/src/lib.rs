@@ -7,6 +7,7 @@
 
 pub mod aero;
 pub mod analysis;
+pub mod atmosphere;
 pub mod case;
 pub mod classical;
 pub mod criteria;
