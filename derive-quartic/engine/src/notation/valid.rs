@@ -602,3 +602,84 @@ impl Reader<'_, '_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::NotationModel;
+    use crate::spec::SourceFile;
+
+    /// A toy table: the report's ½ρ notation and a classical ρ one.
+    fn spec(report_tau: &str, classical_name: &str) -> String {
+        format!(
+            r#"title = "toy"
+source = "tests"
+dimensional = [
+  {{ name = "Z_w", dims = [1, 0, -1], doc = "force per speed" }},
+  {{ name = "rho", dims = [1, -3, 0], doc = "density" }},
+  {{ name = "S",   dims = [0, 2, 0],  doc = "area" }},
+  {{ name = "V",   dims = [0, 1, -1], doc = "speed" }},
+  {{ name = "m",   dims = [1, 0, 0],  doc = "mass" }},
+]
+rows = [
+  {{ name = "z_w", primary = "Z_w", doc = "z_w" }},
+  {{ name = "tau", primary = "m",   doc = "unit of time" }},
+]
+[[notation]]
+name = "report"
+title = "half rho"
+source = "toy"
+reference = true
+[notation.define]
+z_w = {{ name = "z_w", expr = "Z_w/(rho/2*S*V)" }}
+tau = {{ name = "tau", expr = "{report_tau}", positive = true }}
+[[notation]]
+name = "{classical_name}"
+title = "rho"
+source = "toy"
+[notation.define]
+z_w = {{ name = "Z", expr = "Z_w/(rho*S*V)", printed = "2*Z" }}
+tau = {{ name = "T", expr = "m/(rho*S*V)", positive = true }}
+"#
+        )
+    }
+
+    fn load(text: String) -> Result<NotationModel, crate::SpecErrors> {
+        NotationModel::load(&SourceFile::new("toy.toml", text))
+    }
+
+    #[test]
+    fn the_factors_are_derived_both_ways() {
+        let m = load(spec("m/(rho/2*S*V)", "classical")).unwrap_or_else(|e| panic!("{e}"));
+        let c = &m.notations[1];
+        // Z_w = ρSV·Z = ½ρSV·z_w, so z_w = 2Z and Z = z_w/2; likewise τ.
+        let z = c.entries[0].as_ref().unwrap();
+        let (own, report) = (c.table.id("Z").unwrap(), c.table.id("report_z_w").unwrap());
+        let mut v = vec![0.0; c.table.len()];
+        v[own] = 3.0;
+        v[report] = 5.0;
+        assert_eq!(z.to_report.as_ref().unwrap().eval(&v), 6.0);
+        assert_eq!(z.from_report.as_ref().unwrap().eval(&v), 2.5);
+        let t = c.entries[1].as_ref().unwrap();
+        assert!(t.printed.is_none() && t.to_report.is_some());
+    }
+
+    #[test]
+    fn a_report_definition_may_not_use_the_reports_own_names() {
+        // Before, this definition parsed only in the report's own table and
+        // was dropped without a word for every other notation, whose τ then
+        // had no conversion.
+        let e = load(spec("m/(rho/2*S*V*z_w)", "classical")).unwrap_err();
+        let d = &e.0[0];
+        assert_eq!((d.file.as_str(), d.line), ("toy.toml", 21));
+        assert_eq!(d.entry, "notation `report`, row `tau`, definition");
+        assert!(d.message.contains("unknown symbol `z_w`"), "{e}");
+    }
+
+    #[test]
+    fn a_notation_name_must_be_an_identifier() {
+        let e = load(spec("m/(rho/2*S*V)", "class ical")).unwrap_err();
+        let d = &e.0[0];
+        assert_eq!((d.line, d.entry.as_str()), (23, "notation"));
+        assert!(d.message.contains("not a valid Rust identifier"), "{e}");
+    }
+}

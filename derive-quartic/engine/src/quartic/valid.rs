@@ -186,6 +186,12 @@ fn printed_coefficient(
     let raw = c.get_ref();
     let var = table.len() - 1;
     let entry = format!("eq ({}), coefficient `{name}`", raw.equation);
+    if !is_identifier(&format!("coef_{}", name.to_lowercase())) {
+        let message = format!(
+            "`{name}` cannot name a coefficient: coefficients become variable names (letters, digits, `_`)"
+        );
+        cx.error(&c.span(), &entry, message);
+    }
     if raw.printed.is_empty() {
         cx.error(
             &c.span(),
@@ -260,7 +266,7 @@ fn expand_determinant(
     let var_name = &table.get(var).name;
     let expansion = determinant(entries);
     let entry = format!("eq ({}), determinant", det.get_ref().equation);
-    if expansion.low_degree_in(var).unwrap_or(0) < 0 {
+    if expansion.low_degree_in(var).is_some_and(|low| low < 0) {
         let message = format!("the expansion has negative powers of `{var_name}`");
         cx.error(&det.span(), entry, message);
         return None;
@@ -508,5 +514,69 @@ fn det_of(m: &[Vec<Poly>]) -> Poly {
             }
             acc
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::QuarticModel;
+    use crate::spec::SourceFile;
+
+    const TOY: &str = r#"
+title = "toy"
+source = "tests"
+symbols = [
+  { name = "c", latex = "c", doc = "damping" },
+  { name = "k", latex = "k", doc = "stiffness", positive = true },
+]
+[variable]
+name = "s"
+latex = "s"
+doc = "Laplace variable"
+[determinant]
+equation = "1"
+rows = [["s + c", "k"], ["-1", "s"]]
+[coefficients.A]
+power = 2
+equation = "2"
+printed = ["1"]
+[coefficients.B]
+power = POWER_B
+equation = "2"
+printed = ["c"]
+[coefficients.C]
+power = 0
+equation = "2"
+printed = ["k"]
+"#;
+
+    fn load(power_b: &str) -> Result<QuarticModel, crate::SpecErrors> {
+        let text = TOY.replace("POWER_B", power_b);
+        QuarticModel::load(&SourceFile::new("toy.toml", text))
+    }
+
+    #[test]
+    fn a_determinant_by_hand_is_verified_and_ordered() {
+        // |s + c, k; −1, s| = s² + c·s + k.
+        let m = load("1").unwrap_or_else(|e| panic!("{e}"));
+        let powers: Vec<usize> = m.coefficients.iter().map(|c| c.power).collect();
+        assert_eq!(powers, [2, 1, 0]);
+        let v = [0.3, 2.0, 0.0];
+        let values: Vec<f64> = m
+            .coefficients
+            .iter()
+            .map(|c| c.expansion.eval(&v))
+            .collect();
+        assert_eq!(values, [1.0, 0.3, 2.0]);
+    }
+
+    #[test]
+    fn a_negative_power_is_named_at_its_line() {
+        let e = load("-1").unwrap_err();
+        assert_eq!(e.0.len(), 1, "{e}");
+        let d = &e.0[0];
+        assert_eq!((d.file.as_str(), d.line), ("toy.toml", 20));
+        assert_eq!(d.entry, "eq (2), coefficient `B`");
+        assert!(d.message.contains("power -1 is negative"), "{d}");
     }
 }
