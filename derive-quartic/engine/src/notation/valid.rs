@@ -329,64 +329,71 @@ impl Reader<'_, '_> {
         }
     }
 
-    /// The notation's symbols; its names must be new and identifiers.
+    /// The notation's symbols: the base, its own quantities (their names new
+    /// and identifiers), then the report's.
     fn universe(&self, n: &ast::Notation) -> Universe {
         let nd = self.decl.dims.len();
-        let mut table = self.base.clone();
-        let mut kinds: Vec<SymbolKind> = (0..table.len())
+        let kinds = (0..self.base.len())
             .map(|id| {
                 id.checked_sub(nd)
                     .map_or(SymbolKind::Dimensional, SymbolKind::Parameter)
             })
             .collect();
-        let mut own = Vec::new();
+        let mut u = Universe {
+            table: self.base.clone(),
+            kinds,
+            own: Vec::new(),
+            report_start: 0,
+        };
         for (ri, row) in self.decl.rows.iter().enumerate() {
-            let Some(e) = n.define.get(&row.name) else {
-                continue;
-            };
-            let ename = e.get_ref().name.get_ref();
-            let entry = format!("notation `{}`, row `{}`", n.name.get_ref(), row.name);
-            let message = if table.id(ename).is_some() {
-                format!(
-                    "the name `{ename}` is already used (by another row or a dimensional quantity)"
-                )
-            } else if !is_identifier(ename) {
-                format!(
-                    "`{ename}` is not a valid Rust identifier; names become variables of the generated code"
-                )
-            } else {
-                own.push((ri, table.len()));
-                kinds.push(SymbolKind::Own(ri));
-                table.symbols.push(Symbol {
-                    name: ename.clone(),
-                    latex: ename.clone(),
-                    doc: row.doc.clone(),
-                    positive: e.get_ref().positive,
-                });
-                continue;
-            };
-            self.cx.error(&e.get_ref().name.span(), entry, message);
+            if let Some(e) = n.define.get(&row.name) {
+                self.add_own(&mut u, n, ri, e);
+            }
         }
-        let report_start = table.len();
+        u.report_start = u.table.len();
         for (ri, row) in self.decl.rows.iter().enumerate() {
             let (name, positive) = match self.reference.define.get(&row.name) {
                 Some(e) => (e.get_ref().name.get_ref().clone(), e.get_ref().positive),
                 None => (row.name.clone(), false),
             };
-            table.symbols.push(Symbol {
+            u.table.symbols.push(Symbol {
                 name: format!("report_{name}"),
                 latex: name,
                 doc: row.doc.clone(),
                 positive,
             });
-            kinds.push(SymbolKind::Report(ri));
+            u.kinds.push(SymbolKind::Report(ri));
         }
-        Universe {
-            table,
-            kinds,
-            own,
-            report_start,
-        }
+        u
+    }
+
+    /// The notation's quantity of row `ri`, unless its name is taken or
+    /// cannot be a variable.
+    fn add_own(&self, u: &mut Universe, n: &ast::Notation, ri: usize, e: &Spanned<ast::Entry>) {
+        let ename = e.get_ref().name.get_ref();
+        let problem = if u.table.id(ename).is_some() {
+            format!("the name `{ename}` is already used (by another row or a dimensional quantity)")
+        } else if !is_identifier(ename) {
+            format!(
+                "`{ename}` is not a valid Rust identifier; names become variables of the generated code"
+            )
+        } else {
+            u.own.push((ri, u.table.len()));
+            u.kinds.push(SymbolKind::Own(ri));
+            u.table.symbols.push(Symbol {
+                name: ename.clone(),
+                latex: ename.clone(),
+                doc: self.decl.rows[ri].doc.clone(),
+                positive: e.get_ref().positive,
+            });
+            return;
+        };
+        let entry = format!(
+            "notation `{}`, row `{}`",
+            n.name.get_ref(),
+            self.decl.rows[ri].name
+        );
+        self.cx.error(&e.get_ref().name.span(), entry, problem);
     }
 
     /// The entry of row `ri` (own quantity `sym`) with the report's quantity
