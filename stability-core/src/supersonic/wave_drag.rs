@@ -83,6 +83,12 @@ fn chevron_area(xp: f64, y: f64, me: f64) -> f64 {
         }
     }
     let mut br = vec![0.0];
+    // a sonic edge (a = 0) bounds u alone: b + cu ≥ 0
+    for (a, b, c) in cons {
+        if a.abs() <= 1e-14 && c.abs() > 1e-14 && -b / c > 0.0 {
+            br.push(-b / c);
+        }
+    }
     for i in 0..lines.len() {
         for j in i + 1..lines.len() {
             let (p, q) = (lines[i], lines[j]);
@@ -153,7 +159,7 @@ pub fn scaled_wave_drag(m: f64, ridge: f64) -> Result<f64, SupersonicError> {
     br.sort_by(f64::total_cmp);
     let mut sum = 0.0;
     for w in br.windows(2) {
-        sum += adaptive(integrand, w[0], w[1], 1e-9, 25)[0];
+        sum += adaptive(integrand, w[0], w[1], 1e-8, 18)[0];
     }
     // both halves; S = cot Λ = m
     Ok(-4.0 * 2.0 * sum / s)
