@@ -54,7 +54,10 @@ fn true_delta_direct_source_integral_gives_the_strip_closed_form() {
             max = max.max(rel(a, b));
         }
         for h in [0.0, 0.25, 0.6] {
-            let e = worst(&direct.derivatives(&w, mach, h), &strip::true_delta(mach, h));
+            let e = worst(
+                &direct.derivatives(&w, mach, h),
+                &strip::true_delta(mach, h),
+            );
             max = max.max(e);
         }
     }
@@ -80,7 +83,10 @@ fn cropped_delta_evvard_weights_against_the_direct_source_integral() {
             max = max.max(rel(x, y));
         }
         for h in [0.0, 0.25, 0.6] {
-            max = max.max(worst(&a.derivatives(&w, mach, h), &b.derivatives(&w, mach, h)));
+            max = max.max(worst(
+                &a.derivatives(&w, mach, h),
+                &b.derivatives(&w, mach, h),
+            ));
         }
     }
     println!("cropped deltas: Evvard weights vs direct source integral, worst {max:.2e}");
@@ -94,9 +100,15 @@ fn cropped_delta_lift_slope_closed_form() {
         let w = wing(deg, taper);
         let mach = mach_at(&w, m);
         let closed = evvard::lift_slope_closed(&w, mach).expect("in range");
-        let a = supersonic::supersonic_edge(&w, mach, 0.25).unwrap().lift_slope;
-        let b = source::integrals(&w, mach, 1e-10).derivatives(&w, mach, 0.25).lift_slope;
-        println!("{deg}° λ = {taper:.3} m = {m}: closed {closed:.10} weights {a:.10} direct {b:.10}");
+        let a = supersonic::supersonic_edge(&w, mach, 0.25)
+            .unwrap()
+            .lift_slope;
+        let b = source::integrals(&w, mach, 1e-10)
+            .derivatives(&w, mach, 0.25)
+            .lift_slope;
+        println!(
+            "{deg}° λ = {taper:.3} m = {m}: closed {closed:.10} weights {a:.10} direct {b:.10}"
+        );
         assert!(rel(a, closed) < 1e-10 && rel(b, closed) < 1e-8);
         assert!(closed < 4.0 / (mach * mach - 1.0).sqrt());
     }
@@ -111,28 +123,51 @@ fn cropped_delta_lift_slope_closed_form() {
 
 #[test]
 fn continuous_with_eq36_at_the_sonic_leading_edge() {
-    let mut max: f64 = 0.0;
+    // (36) with its own lift slope and aerodynamic centre, evaluated at the
+    // sonic edge itself (E = π/2, H = ⅔ by Fig 18's series), against the
+    // supersonic-edge theory at the same Mach number: every output
+    let mut at_edge: f64 = 0.0;
     for deg in [45.0, 60.0, 70.0] {
         let w = wing(deg, 0.0);
         let sonic = w.sonic_mach();
         for h in [0.0, 0.25, 0.5, 0.8] {
-            let below = supersonic::eq36_with_own_aero(&w, sonic * (1.0 - 1e-7), h);
-            let above = supersonic::supersonic_edge(&w, sonic * (1.0 + 1e-7), h).unwrap();
-            let at = supersonic::edge_theory(&w, sonic, h).unwrap();
-            assert_eq!(at.regime, EdgeRegime::SonicEdge);
-            max = max.max(worst(&below, &above)).max(worst(&at.derivatives, &above));
+            let eq36 = supersonic::eq36_with_own_aero(&w, sonic, h);
+            let edge = supersonic::supersonic_edge(&w, sonic, h).unwrap();
+            at_edge = at_edge.max(worst(&eq36, &edge));
+            let chosen = supersonic::edge_theory(&w, sonic, h).unwrap();
+            assert_eq!(chosen.regime, EdgeRegime::SonicEdge);
+            assert!(worst(&chosen.derivatives, &edge) < 1e-15);
         }
     }
-    println!("sonic edge: (36) vs supersonic-edge theory, worst relative jump {max:.2e}");
-    assert!(max < 1e-5, "{max}");
+    println!(
+        "sonic edge: (36) vs supersonic-edge theory at the same M, worst relative difference {at_edge:.2e}"
+    );
+    assert!(at_edge < 1e-12, "{at_edge}");
+    // one-sided limits: the jump across M_sonic(1 ± ε) vanishes with ε
+    let w = wing(45.0, 0.0);
+    let jump = |eps: f64| {
+        let s = w.sonic_mach();
+        let below = supersonic::eq36_with_own_aero(&w, s * (1.0 - eps), 0.25);
+        let above = supersonic::supersonic_edge(&w, s * (1.0 + eps), 0.25).unwrap();
+        worst(&below, &above)
+    };
+    let (j6, j8) = (jump(1e-6), jump(1e-8));
+    println!("jump across M_sonic(1 ± ε): ε = 1e-6: {j6:.2e}, ε = 1e-8: {j8:.2e}");
+    assert!(j8 < j6 / 50.0 && j8 < 1e-6, "{j6} {j8}");
     // the 60° delta at exactly M = 2 (β cot Λ computes to 1.0000000000000002)
     let w = wing(60.0, 0.0);
     let r = supersonic::edge_theory(&w, 2.0, 0.25).unwrap();
     assert_eq!(r.regime, EdgeRegime::SonicEdge);
     assert!(rel(r.derivatives.lift_slope, 4.0 / 3f64.sqrt()) < 1e-12);
     // and the choice follows β cot Λ either side
-    assert_eq!(supersonic::edge_theory(&w, 1.9, 0.25).unwrap().regime, EdgeRegime::SubsonicEdge);
-    assert_eq!(supersonic::edge_theory(&w, 2.1, 0.25).unwrap().regime, EdgeRegime::SupersonicEdge);
+    assert_eq!(
+        supersonic::edge_theory(&w, 1.9, 0.25).unwrap().regime,
+        EdgeRegime::SubsonicEdge
+    );
+    assert_eq!(
+        supersonic::edge_theory(&w, 2.1, 0.25).unwrap().regime,
+        EdgeRegime::SupersonicEdge
+    );
 }
 
 #[test]
@@ -146,7 +181,10 @@ fn tends_to_ackeret_at_large_aspect_ratio() {
         let theory = supersonic::supersonic_edge(&w, mach, 0.25).unwrap();
         let strips = strip::strip_integrals(&w, mach).derivatives(&w, mach, 0.25);
         let e = worst(&theory, &strips);
-        println!("Λ = {deg}°, A = {:.1}: relative departure from strip theory {e:.2e}", w.aspect_ratio());
+        println!(
+            "Λ = {deg}°, A = {:.1}: relative departure from strip theory {e:.2e}",
+            w.aspect_ratio()
+        );
         assert!(e < last);
         last = e;
     }
@@ -157,7 +195,10 @@ fn tends_to_ackeret_at_large_aspect_ratio() {
     let d = supersonic::supersonic_edge(&w, mach, 0.3).unwrap();
     let two_d = strip::two_dimensional(mach, 0.3);
     let e = worst(&d, &two_d);
-    println!("λ = 0.99, A = {:.0}: departure from the two-dimensional plate {e:.2e}", w.aspect_ratio());
+    println!(
+        "λ = 0.99, A = {:.0}: departure from the two-dimensional plate {e:.2e}",
+        w.aspect_ratio()
+    );
     assert!(e < 1e-2, "{e}");
 }
 
@@ -183,7 +224,7 @@ fn exact_plate(mach: f64, omega: f64) -> (f64, f64, f64, f64) {
     let n = 400;
     let dx = 1.0 / n as f64;
     let (mut l, mut mo, mut phi) = ((0.0, 0.0), (0.0, 0.0), (0.0, 0.0));
-    let mut step = |phi: &mut (f64, f64), a: (f64, f64), b: (f64, f64)| {
+    let step = |phi: &mut (f64, f64), a: (f64, f64), b: (f64, f64)| {
         phi.0 += 0.25 * dx * (a.0 + b.0);
         phi.1 += 0.25 * dx * (a.1 + b.1);
     };
@@ -211,7 +252,9 @@ fn the_low_frequency_limit_is_where_the_exact_plate_says() {
         let d = strip::two_dimensional(mach, 0.0).damping;
         let lift = -li / omega / d.z_wdot;
         let mid = (mi + 0.5 * li) / omega / (d.m_wdot - 0.5 * d.z_wdot);
-        println!("M = {mach}, κ = 0.5: damping lift {lift:.4}, moment about mid-chord {mid:.4} of first order");
+        println!(
+            "M = {mach}, κ = 0.5: damping lift {lift:.4}, moment about mid-chord {mid:.4} of first order"
+        );
         assert!((0.95..1.0).contains(&lift), "{lift}");
         assert!((0.91..1.0).contains(&mid), "{mid}");
     }
@@ -225,13 +268,24 @@ fn two_dimensional_acceleration_derivatives_are_the_exact_theory_at_low_frequenc
         let omega = 1e-3;
         let (_, li, _, mi) = exact_plate(mach, omega);
         let d = strip::two_dimensional(mach, 0.0).damping;
-        println!("M = {mach}: −Im C_L/ω = {:.6} (z_ẇ = {:.6}), Im C_m/ω = {:.6} (m_ẇ = {:.6})", -li / omega, d.z_wdot, mi / omega, d.m_wdot);
+        println!(
+            "M = {mach}: −Im C_L/ω = {:.6} (z_ẇ = {:.6}), Im C_m/ω = {:.6} (m_ẇ = {:.6})",
+            -li / omega,
+            d.z_wdot,
+            mi / omega,
+            d.m_wdot
+        );
         assert!(rel(-li / omega, d.z_wdot) < 1e-3);
         assert!(rel(mi / omega, d.m_wdot) < 1e-3);
         // Garrick & Rubinow's pitch damping about the leading edge
         let beta = (mach * mach - 1.0f64).sqrt();
         let m_theta = d.m_q + d.m_wdot;
-        assert!(rel(m_theta, -4.0 / (3.0 * beta) * (mach * mach - 2.0) / (mach * mach - 1.0)) < 1e-14);
+        assert!(
+            rel(
+                m_theta,
+                -4.0 / (3.0 * beta) * (mach * mach - 2.0) / (mach * mach - 1.0)
+            ) < 1e-14
+        );
     }
 }
 
@@ -240,11 +294,16 @@ fn eq36_acceleration_derivatives_grow_like_ln_one_over_beta() {
     let w = wing(45.0, 0.0);
     let mut prev = 0.0;
     for beta in [1e-2, 1e-3, 1e-4] {
-        let mach = (1.0 + beta * beta as f64).sqrt();
-        let z = supersonic::eq36_with_own_aero(&w, mach, 0.25).damping.z_wdot;
+        let mach = (1.0f64 + beta * beta).sqrt();
+        let z = supersonic::eq36_with_own_aero(&w, mach, 0.25)
+            .damping
+            .z_wdot;
         let asym = transonic::z_wdot_eq36_near_sonic(&w, mach);
         println!("β = {beta:e}: (36) z_ẇ = {z:.6}, asymptote {asym:.6}");
-        assert!((z - asym).abs() < 200.0 * beta * beta * (1.0 / beta).ln() + 1e-9, "{z} vs {asym}");
+        assert!(
+            (z - asym).abs() < 200.0 * beta * beta * (1.0 / beta).ln() + 1e-9,
+            "{z} vs {asym}"
+        );
         // each decade of β adds 3 cot²Λ ln 10 · πA/4 = 3π ln 10 (A = 4)
         if prev != 0.0 {
             assert!(rel(z - prev, 3.0 * PI * 10f64.ln()) < 5e-3);
@@ -260,11 +319,21 @@ fn the_transonic_rule() {
         let m_star = transonic::validity_mach(&w, omega).unwrap();
         let at = transonic::eq36_validity(&w, m_star, omega).unwrap();
         assert!((at.kappa - transonic::LOW_FREQUENCY_LIMIT).abs() < 1e-12);
-        assert!(transonic::eq36_validity(&w, m_star * 1.01, omega).unwrap().valid);
-        assert!(!transonic::eq36_validity(&w, m_star * 0.99, omega).unwrap().valid);
+        assert!(
+            transonic::eq36_validity(&w, m_star * 1.01, omega)
+                .unwrap()
+                .valid
+        );
+        assert!(
+            !transonic::eq36_validity(&w, m_star * 0.99, omega)
+                .unwrap()
+                .valid
+        );
         let m_match = transonic::matching_mach(omega).unwrap();
         assert!(m_match < m_star);
-        println!("ω̄ = {omega}: (36) valid above M = {m_star:.4}; matches Mangler at M = {m_match:.4}");
+        println!(
+            "ω̄ = {omega}: (36) valid above M = {m_star:.4}; matches Mangler at M = {m_match:.4}"
+        );
     }
     // at the matching point (36)'s near-sonic z_ẇ is Mangler's (39)–(40)
     for deg in [45.0, 60.0] {
@@ -280,7 +349,10 @@ fn the_transonic_rule() {
         transonic::validity_mach(&w, 0.4),
         Err(SupersonicError::FrequencyTooHigh { .. })
     ));
-    assert!(matches!(transonic::eq36_validity(&w, 1.5, -1.0), Err(SupersonicError::Frequency(_))));
+    assert!(matches!(
+        transonic::eq36_validity(&w, 1.5, -1.0),
+        Err(SupersonicError::Frequency(_))
+    ));
 }
 
 #[test]
@@ -290,10 +362,22 @@ fn errors_are_typed() {
         supersonic::supersonic_edge(&w, 1.2, 0.25),
         Err(SupersonicError::SubsonicLeadingEdge { .. })
     ));
-    assert!(matches!(supersonic::edge_theory(&w, 1.0, 0.25), Err(SupersonicError::SubsonicMach(_))));
-    assert!(matches!(supersonic::edge_theory(&w, f64::NAN, 0.25), Err(SupersonicError::NonFinite { .. })));
-    assert!(matches!(Wing::new(0.0, 0.0), Err(SupersonicError::Sweep(_))));
-    assert!(matches!(Wing::new(0.5, 1.0), Err(SupersonicError::Taper(_))));
+    assert!(matches!(
+        supersonic::edge_theory(&w, 1.0, 0.25),
+        Err(SupersonicError::SubsonicMach(_))
+    ));
+    assert!(matches!(
+        supersonic::edge_theory(&w, f64::NAN, 0.25),
+        Err(SupersonicError::NonFinite { .. })
+    ));
+    assert!(matches!(
+        Wing::new(0.0, 0.0),
+        Err(SupersonicError::Sweep(_))
+    ));
+    assert!(matches!(
+        Wing::new(0.5, 1.0),
+        Err(SupersonicError::Taper(_))
+    ));
     // 2βs < c₀: one reflection per tip is not enough
     let w = wing(45.0, 0.9);
     assert!(matches!(
@@ -319,6 +403,9 @@ fn wave_drag_limits_and_the_existing_blend() {
     assert!(rel(slope, slender) < 0.02, "{slope} vs {slender}");
     for m in [0.3, 0.6, 0.9, 1.2, 2.0, 4.0] {
         let t = wave_drag::scaled_wave_drag(m, f).unwrap();
-        println!("m = {m}: linear theory {t:.4}, blend (biconvex) {:.4}", 16.0 / 3.0 * m / (1.0 + m * m).sqrt());
+        println!(
+            "m = {m}: linear theory {t:.4}, blend (biconvex) {:.4}",
+            16.0 / 3.0 * m / (1.0 + m * m).sqrt()
+        );
     }
 }

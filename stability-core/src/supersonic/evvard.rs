@@ -74,11 +74,7 @@ fn tip_reach(wing: &Wing, beta: f64) -> [(f64, f64); 2] {
     let tan = wing.sweep_le.tan();
     let lead = beta * s - 1.0;
     let left = ((lead / (beta + tan)).max(-s), 0.0);
-    let right_from = if lead > 0.0 {
-        lead / (beta - tan)
-    } else {
-        0.0
-    };
+    let right_from = if lead > 0.0 { lead / (beta - tan) } else { 0.0 };
     [left, (right_from.max(0.0), s)]
 }
 

@@ -159,6 +159,15 @@ impl Wing {
     }
 }
 
+impl From<&crate::damping::WingInput> for Wing {
+    fn from(w: &crate::damping::WingInput) -> Self {
+        Wing {
+            sweep_le: w.sweep_le,
+            taper: w.taper,
+        }
+    }
+}
+
 impl From<&crate::geometry::Planform> for Wing {
     fn from(p: &crate::geometry::Planform) -> Self {
         Wing {

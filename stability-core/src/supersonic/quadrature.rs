@@ -16,7 +16,12 @@
 /// ∫ₐᵇ f by the tanh-sinh rule with step `1/n` on t ∈ [−3.4, 3.4]
 /// (`n` = 16 gives about 110 nodes and 13-digit accuracy for an integrand
 /// analytic inside the interval).
-pub fn tanh_sinh<const N: usize>(mut f: impl FnMut(f64) -> [f64; N], a: f64, b: f64, n: usize) -> [f64; N] {
+pub fn tanh_sinh<const N: usize>(
+    mut f: impl FnMut(f64) -> [f64; N],
+    a: f64,
+    b: f64,
+    n: usize,
+) -> [f64; N] {
     let mut sum = [0.0; N];
     if b <= a {
         return sum;
@@ -100,8 +105,20 @@ fn gk15<const N: usize>(f: &mut impl FnMut(f64) -> [f64; N], a: f64, b: f64) -> 
 
 /// ∫ₐᵇ f to an absolute error `tol` (largest component), by recursive
 /// bisection of the Gauss–Kronrod 7–15 rule, at most `depth` halvings deep.
-pub fn adaptive<const N: usize>(mut f: impl FnMut(f64) -> [f64; N], a: f64, b: f64, tol: f64, depth: u32) -> [f64; N] {
-    fn go<const N: usize>(f: &mut impl FnMut(f64) -> [f64; N], a: f64, b: f64, tol: f64, depth: u32) -> [f64; N] {
+pub fn adaptive<const N: usize>(
+    mut f: impl FnMut(f64) -> [f64; N],
+    a: f64,
+    b: f64,
+    tol: f64,
+    depth: u32,
+) -> [f64; N] {
+    fn go<const N: usize>(
+        f: &mut impl FnMut(f64) -> [f64; N],
+        a: f64,
+        b: f64,
+        tol: f64,
+        depth: u32,
+    ) -> [f64; N] {
         let (v, err) = gk15(f, a, b);
         if err <= tol || depth == 0 {
             return v;

@@ -72,7 +72,8 @@ pub fn moments(wing: &Wing) -> [f64; 4] {
     let s = wing.semi_span();
     std::array::from_fn(|k| {
         let k = k as i32;
-        2.0 * cot * xt.powi(k + 2) / f64::from(k + 2) + 2.0 * s * (1.0 - xt.powi(k + 1)) / f64::from(k + 1)
+        2.0 * cot * xt.powi(k + 2) / f64::from(k + 2)
+            + 2.0 * s * (1.0 - xt.powi(k + 1)) / f64::from(k + 1)
     })
 }
 

@@ -81,7 +81,11 @@ fn check(mach: f64, omega_bar: f64) -> Result<(), SupersonicError> {
 /// Whether (36)'s acceleration derivatives hold at Mach `mach` and
 /// frequency parameter ω̄ = ωc̄/V for this wing, by the rule of the module
 /// doc.
-pub fn eq36_validity(wing: &Wing, mach: f64, omega_bar: f64) -> Result<LowFrequency, SupersonicError> {
+pub fn eq36_validity(
+    wing: &Wing,
+    mach: f64,
+    omega_bar: f64,
+) -> Result<LowFrequency, SupersonicError> {
     check(mach, omega_bar)?;
     let b2 = mach * mach - 1.0;
     let kappa = omega_bar / wing.mac() * mach * mach / b2;

@@ -30,8 +30,8 @@
 //! value and a slender limit: it has no peak at the sonic edge and its
 //! slender limit is not the theory's (docs/models.md compares them).
 
-use super::quadrature::{adaptive, tanh_sinh};
 use super::SupersonicError;
+use super::quadrature::{adaptive, tanh_sinh};
 use std::f64::consts::PI;
 
 /// The note's sections, as linear theory can take them: a double wedge,
@@ -151,7 +151,12 @@ pub fn scaled_wave_drag(m: f64, ridge: f64) -> Result<f64, SupersonicError> {
         [-z1 * phi(le, y) + (z1 - z2) * phi(xr, y) + z2 * phi(1.0, y)]
     };
     let mut br = vec![0.0, s];
-    for c in [1.0, 1.0 - ridge, m * ridge / (m - 1.0).abs().max(1e-12), m * ridge / (m + 1.0)] {
+    for c in [
+        1.0,
+        1.0 - ridge,
+        m * ridge / (m - 1.0).abs().max(1e-12),
+        m * ridge / (m + 1.0),
+    ] {
         if c > 0.0 && c < s {
             br.push(c);
         }
