@@ -409,3 +409,30 @@ fn wave_drag_limits_and_the_existing_blend() {
         );
     }
 }
+
+#[test]
+fn a_shift_of_the_pitch_axis_obeys_the_kinematics() {
+    // about h rather than 0 (lengths in c̄): z_q(h) = z_q(0) − h z_w,
+    // m_q(h) = m_q(0) − h(z_q(0) + m_w(0)) + h² z_w, m_ẇ(h) = m_ẇ(0) − h z_ẇ,
+    // with z_w = −a and m_w(0) = −aH₀ — the assembly of the derivatives
+    // checked apart from the integrals
+    let w = wing(45.0, 1.0 / 7.0);
+    let mach = 1.8;
+    let d0 = supersonic::supersonic_edge(&w, mach, 0.0).unwrap();
+    let a = d0.lift_slope;
+    let (zq0, mq0, mw0) = (d0.damping.z_q, d0.damping.m_q, -a * d0.aerodynamic_centre);
+    for h in [0.3, 0.7] {
+        let d = supersonic::supersonic_edge(&w, mach, h).unwrap();
+        assert!(rel(d.damping.z_q, zq0 + h * a) < 1e-13);
+        assert!(rel(d.damping.m_q, mq0 - h * (zq0 + mw0) - h * h * a) < 1e-13);
+        assert!(rel(d.damping.m_wdot, d0.damping.m_wdot - h * d0.damping.z_wdot) < 1e-13);
+        assert_eq!(d.damping.z_wdot, d0.damping.z_wdot);
+        assert_eq!(d.aerodynamic_centre, d0.aerodynamic_centre);
+    }
+    // the tips move the aerodynamic centre forward of the true delta's ½
+    assert!(
+        d0.aerodynamic_centre < 0.5 && d0.aerodynamic_centre > 0.4,
+        "{}",
+        d0.aerodynamic_centre
+    );
+}
