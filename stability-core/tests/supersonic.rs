@@ -396,6 +396,13 @@ fn wave_drag_limits_and_the_existing_blend() {
     // slender limit: an unswept trailing edge closes the area distribution
     // with S′(c₀) ≠ 0, and slender-body theory's drag grows like
     // (S′(c₀)²/2π) ln(1/(β·span)): C_D β/τ² ≈ m[a + (2/(π(1 − f)²)) ln(1/m)]
+    assert!(matches!(
+        wave_drag::scaled_wave_drag(1.0, 1.0),
+        Err(SupersonicError::Ridge(_))
+    ));
+    // C_Dw itself: (τ²/β)·F at τ = 0.06, the 45° delta at M = √2 (m = 1)
+    let cdw = wave_drag::wave_drag(PI / 4.0, 2f64.sqrt()).unwrap();
+    assert!(rel(cdw, 0.0036 * wave_drag::scaled_wave_drag(1.0, f).unwrap()) < 1e-9);
     let g = |m: f64| wave_drag::scaled_wave_drag(m, f).unwrap() / m;
     let slope = (g(0.003125) - g(0.00625)) / 2f64.ln();
     let slender = 2.0 / (PI * (1.0 - f) * (1.0 - f));

@@ -84,6 +84,10 @@ pub enum SupersonicError {
         taper: f64,
         two_beta_s: f64,
     },
+    #[error(
+        "the ridge of a double-wedge section must lie strictly inside the chord (0 < f < 1), not {0}"
+    )]
+    Ridge(f64),
     #[error("the frequency parameter ω̄ must be positive and finite, not {0}")]
     Frequency(f64),
     #[error(
@@ -311,6 +315,12 @@ pub struct EdgeDerivatives {
 /// at the sonic edge (`tests/supersonic.rs`).
 pub fn edge_theory(wing: &Wing, mach: f64, h: f64) -> Result<EdgeDerivatives, SupersonicError> {
     let beta = check_mach(mach)?;
+    if !h.is_finite() {
+        return Err(SupersonicError::NonFinite {
+            what: "h",
+            value: h,
+        });
+    }
     let m = beta * wing.cot();
     let regime = if m < 1.0 - SONIC_EDGE_TOLERANCE {
         EdgeRegime::SubsonicEdge

@@ -133,10 +133,7 @@ pub fn scaled_wave_drag(m: f64, ridge: f64) -> Result<f64, SupersonicError> {
         });
     }
     if !(ridge > 0.0 && ridge < 1.0) {
-        return Err(SupersonicError::NonFinite {
-            what: "the ridge position (0 < f < 1)",
-            value: ridge,
-        });
+        return Err(SupersonicError::Ridge(ridge));
     }
     // β = 1, cot Λ = m, c₀ = 1, τ = 1: slopes z₁ = 1/(2f), z₂ = −1/(2(1 − f))
     let (z1, z2) = (0.5 / ridge, -0.5 / (1.0 - ridge));
@@ -187,10 +184,8 @@ pub fn fig1_series(edge_parameters: &[f64]) -> Result<Vec<WaveDragPoint>, Supers
 /// C_Dw of a true delta of sweep Λ at Mach M > 1 with the note's sections
 /// (τ = 0.06): (τ²/β)·[`scaled_wave_drag`](β cot Λ, 0.3).
 pub fn wave_drag(sweep_le: f64, mach: f64) -> Result<f64, SupersonicError> {
-    if !(mach.is_finite() && mach > 1.0) {
-        return Err(SupersonicError::SubsonicMach(mach));
-    }
-    let beta = (mach * mach - 1.0).sqrt();
+    let wing = super::Wing::new(sweep_le, 0.0)?;
+    let beta = super::check_mach(mach)?;
     let tau = crate::aero::defaults::THICKNESS;
-    Ok(tau * tau / beta * scaled_wave_drag(beta / sweep_le.tan(), NOTE_RIDGE)?)
+    Ok(tau * tau / beta * scaled_wave_drag(beta * wing.cot(), NOTE_RIDGE)?)
 }
