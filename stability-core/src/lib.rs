@@ -24,6 +24,7 @@ pub mod roots;
 pub mod sensitivity;
 pub mod stiffness;
 pub mod study;
+pub mod supersonic;
 pub mod warnings;
 
 pub use derivatives::Derivatives;
