@@ -12,7 +12,10 @@
 use crate::Derivatives;
 use crate::aero::{AeroError, AeroModel, Coefficients, level_flight_lift};
 use crate::analysis::{Analysis, AnalysisError};
-use crate::damping::{Damping, DampingError, Theory, WingInput, damping_derivatives, x_q, x_wdot};
+use crate::damping::{
+    Damping, DampingError, Theory, UnknownTheory, WingInput, damping_derivatives, x_q, x_wdot,
+};
+use crate::display::Num;
 use crate::geometry::Planform;
 use crate::stiffness::{Stiffness, stiffness};
 use crate::warnings::{Warning, Warnings};
@@ -58,16 +61,19 @@ impl DampingModel {
     }
 
     /// `faired` or a theory's name.
-    pub fn parse(s: &str) -> Result<Self, String> {
+    pub fn parse(s: &str) -> Result<Self, UnknownDampingModel> {
         if s == "faired" {
             Ok(DampingModel::Faired)
         } else {
-            s.parse::<Theory>()
-                .map(DampingModel::Theory)
-                .map_err(|e| format!("{e}, or `faired` (the default)"))
+            Ok(DampingModel::Theory(s.parse::<Theory>()?))
         }
     }
 }
+
+/// A damping model's name that is neither `faired` nor a theory's.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{0}, or `faired` (the default)")]
+pub struct UnknownDampingModel(#[from] pub UnknownTheory);
 
 /// A design point.
 #[derive(Debug, Clone, PartialEq)]
@@ -122,17 +128,79 @@ pub struct CaseResult {
     pub warnings: Warnings,
 }
 
+/// The inputs of a design point that [`evaluate`] checks before use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CaseInput {
+    Mach,
+    Cg,
+    Mu1,
+    IB,
+    ClM2,
+}
+
+impl CaseInput {
+    /// The name of the field in [`Case`] and in configs.
+    pub fn name(self) -> &'static str {
+        match self {
+            CaseInput::Mach => "mach",
+            CaseInput::Cg => "cg",
+            CaseInput::Mu1 => "mu1",
+            CaseInput::IB => "i_b",
+            CaseInput::ClM2 => "cl_m2",
+        }
+    }
+}
+
+impl std::fmt::Display for CaseInput {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            CaseInput::Mach => "the Mach number",
+            CaseInput::Cg => "the c.g. position h",
+            CaseInput::Mu1 => "the relative density μ₁ (mu1)",
+            CaseInput::IB => "the pitching inertia i_B (i_b)",
+            CaseInput::ClM2 => "C_L·M² (cl_m2, eq 24)",
+        })
+    }
+}
+
 /// Why a design point has no result.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CaseError {
-    #[error("{0}")]
-    Input(String),
+    #[error("{quantity} must be a finite number, not {}", Num(*value))]
+    NonFinite { quantity: CaseInput, value: f64 },
+    #[error("{quantity} must be positive, not {}", Num(*value))]
+    NotPositive { quantity: CaseInput, value: f64 },
     #[error("aerodynamic model: {0}")]
     Aero(#[from] AeroError),
     #[error("damping theory: {0}")]
     Damping(#[from] DampingError),
     #[error("{0}")]
     Analysis(#[from] AnalysisError),
+}
+
+impl Case {
+    /// Check the flight condition: every input finite, and M, μ₁, i_B,
+    /// C_L·M² positive.
+    pub fn check(&self) -> Result<(), CaseError> {
+        let inputs = [
+            (CaseInput::Mach, self.mach),
+            (CaseInput::Cg, self.h),
+            (CaseInput::Mu1, self.mu1),
+            (CaseInput::IB, self.i_b),
+            (CaseInput::ClM2, self.cl_m2),
+        ];
+        for (quantity, value) in inputs {
+            if !value.is_finite() {
+                return Err(CaseError::NonFinite { quantity, value });
+            }
+        }
+        for (quantity, value) in inputs {
+            if quantity != CaseInput::Cg && value <= 0.0 {
+                return Err(CaseError::NotPositive { quantity, value });
+            }
+        }
+        Ok(())
+    }
 }
 
 fn damping_at(case: &Case, wing: &WingInput, omega_bar: Option<f64>) -> Result<Damping, CaseError> {
@@ -193,30 +261,7 @@ fn evaluate_with(case: &Case, classical: bool) -> Result<CaseResult, CaseError> 
     } else {
         Analysis::without_classical
     };
-    for (name, v) in [
-        ("Mach number", case.mach),
-        ("c.g. h", case.h),
-        ("mu1", case.mu1),
-        ("i_b", case.i_b),
-        ("C_L·M²", case.cl_m2),
-    ] {
-        if !v.is_finite() {
-            return Err(CaseError::Input(format!(
-                "{name} must be a finite number, not {v}"
-            )));
-        }
-    }
-    if case.mach <= 0.0 {
-        return Err(CaseError::Input(format!(
-            "the Mach number must be positive, not {}",
-            case.mach
-        )));
-    }
-    if !(case.mu1 > 0.0 && case.i_b > 0.0 && case.cl_m2 > 0.0) {
-        return Err(CaseError::Input(
-            "mu1, i_b and C_L·M² must be positive".into(),
-        ));
-    }
+    case.check()?;
     let p = &case.planform;
     let coefficients = case.aero.at(p, case.mach)?;
     let c_l = level_flight_lift(case.cl_m2, case.mach).value;

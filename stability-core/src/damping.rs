@@ -14,6 +14,7 @@
 //! | `transonic` | (38) | K.W. Mangler's low-frequency theory at M = 1, steady |
 //! | `transonic-frequency` | (39)–(40) | the same, with the frequency-dependent terms |
 
+use crate::display::{Num, OptNum, excerpt};
 use crate::geometry::Planform;
 pub use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
@@ -80,17 +81,32 @@ impl fmt::Display for Theory {
 }
 
 impl FromStr for Theory {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
+    type Err = UnknownTheory;
+    fn from_str(s: &str) -> Result<Self, UnknownTheory> {
         Theory::ALL
             .into_iter()
             .find(|t| t.name() == s)
-            .ok_or_else(|| {
-                format!(
-                    "unknown damping theory `{s}`; the theories are {}",
-                    Theory::ALL.map(|t| format!("`{}`", t.name())).join(", ")
-                )
-            })
+            .ok_or_else(|| UnknownTheory { name: excerpt(s) })
+    }
+}
+
+/// A name that is not a theory's (quoted as an excerpt).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("unknown damping theory `{name}`; the theories are {}", TheoryList)]
+pub struct UnknownTheory {
+    pub name: String,
+}
+
+/// `` `garrick`, `garner-taper`, … ``
+struct TheoryList;
+
+impl fmt::Display for TheoryList {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, t) in Theory::ALL.iter().enumerate() {
+            let sep = if i == 0 { "" } else { ", " };
+            write!(f, "{sep}`{}`", t.name())?;
+        }
+        Ok(())
     }
 }
 
@@ -189,18 +205,19 @@ impl Fig18 {
 /// Why a theory cannot be applied.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DampingError {
-    #[error("{theory}: h = {h} and Mach {mach} must be finite")]
+    #[error("{theory}: {quantity} must be a finite number, not {}", Num(*value))]
     NonFinite {
-        theory: &'static str,
-        h: f64,
-        mach: f64,
+        theory: Theory,
+        quantity: &'static str,
+        value: f64,
     },
-    #[error("the leading-edge sweep must lie strictly between 0° and 90°, not {0}°")]
-    Sweep(f64),
-    #[error("supersonic theory (36) needs M > 1, not M = {0}")]
-    SubsonicMach(f64),
+    #[error("the leading-edge sweep must lie strictly between 0° and 90°, not {}°", Num(*degrees))]
+    Sweep { degrees: f64 },
+    #[error("supersonic theory (36) needs M > 1, not M = {}", Num(*mach))]
+    SubsonicMach { mach: f64 },
     #[error(
-        "supersonic theory (36) needs subsonic leading edges, β cot Λ < 1; at M = {mach} β cot Λ = {beta_cot:.4} (the leading edge is sonic at M = {sonic:.4})"
+        "supersonic theory (36) needs subsonic leading edges, β cot Λ < 1; at M = {} β cot Λ = {beta_cot:.4} (the leading edge is sonic at M = {sonic:.4})",
+        Num(*mach)
     )]
     SupersonicLeadingEdge {
         mach: f64,
@@ -208,11 +225,15 @@ pub enum DampingError {
         sonic: f64,
     },
     #[error(
-        "garner-taper (34)–(35) is Garner's result for taper 1/7 only; this wing has taper {0}"
+        "garner-taper (34)–(35) is Garner's result for taper 1/7 only; this wing has taper {}",
+        Num(*taper)
     )]
-    Taper(f64),
-    #[error("transonic-frequency (39)–(40) needs a frequency parameter ω̄ > 0 (got {0:?})")]
-    Frequency(Option<f64>),
+    Taper { taper: f64 },
+    #[error(
+        "transonic-frequency (39)–(40) needs a frequency parameter ω̄ > 0, not {}",
+        OptNum(*omega_bar)
+    )]
+    Frequency { omega_bar: Option<f64> },
 }
 
 /// The derivatives of one theory, and what is worth a warning.
@@ -236,15 +257,19 @@ pub fn damping_derivatives(
     mach: f64,
     omega_bar: Option<f64>,
 ) -> Result<Damping, DampingError> {
-    if !(h.is_finite() && mach.is_finite()) {
-        return Err(DampingError::NonFinite {
-            theory: theory.name(),
-            h,
-            mach,
-        });
+    for (quantity, value) in [("the c.g. position h", h), ("the Mach number", mach)] {
+        if !value.is_finite() {
+            return Err(DampingError::NonFinite {
+                theory,
+                quantity,
+                value,
+            });
+        }
     }
     if !(wing.sweep_le > 0.0 && wing.sweep_le < PI / 2.0) {
-        return Err(DampingError::Sweep(wing.sweep_le.to_degrees()));
+        return Err(DampingError::Sweep {
+            degrees: wing.sweep_le.to_degrees(),
+        });
     }
     let a = wing.aspect_ratio;
     let cot = 1.0 / wing.sweep_le.tan();
@@ -300,7 +325,7 @@ pub fn damping_derivatives(
             // z_θ̇ = −πA(0.7265625 − 0.4453125h), m_θ̇ = −(9/8)(0.3525390625)πA(h − 1)²
             // — the report's (34)–(35) print them rounded, 0.728 − 0.446h and 0.4.
             if (wing.taper - 1.0 / 7.0).abs() > 1e-3 {
-                return Err(DampingError::Taper(wing.taper));
+                return Err(DampingError::Taper { taper: wing.taper });
             }
             if mach > 0.7 {
                 warnings.push(Warning::Incompressible { theory, mach });
@@ -311,7 +336,7 @@ pub fn damping_derivatives(
         }
         Theory::Supersonic => {
             if mach <= 1.0 {
-                return Err(DampingError::SubsonicMach(mach));
+                return Err(DampingError::SubsonicMach { mach });
             }
             let beta = (mach * mach - 1.0).sqrt();
             let beta_cot = beta * cot;
@@ -336,7 +361,7 @@ pub fn damping_derivatives(
         Theory::TransonicFrequency => {
             let w = match omega_bar {
                 Some(w) if w.is_finite() && w > 0.0 => w,
-                other => return Err(DampingError::Frequency(other)),
+                omega_bar => return Err(DampingError::Frequency { omega_bar }),
             };
             if (mach - 1.0).abs() > 0.2 {
                 warnings.push(Warning::AwayFromSonic { theory, mach });
@@ -421,6 +446,7 @@ mod tests {
             "mangler"
                 .parse::<Theory>()
                 .unwrap_err()
+                .to_string()
                 .contains("`transonic-frequency`")
         );
     }

@@ -12,6 +12,7 @@ pub mod classical;
 pub mod criteria;
 pub mod damping;
 pub mod derivatives;
+pub mod display;
 pub mod examples;
 pub mod geometry;
 pub mod json;

@@ -11,6 +11,7 @@
 //! coefficients on ½ρV²Sref, moments also on Cref. AVL is quasi-steady:
 //! there are no α̇ derivatives, and no speed derivatives.
 
+use crate::display::{Excerpt, Num, excerpt};
 use serde::Serialize;
 
 /// Why a `.st` file cannot be read.
@@ -29,16 +30,44 @@ pub enum AvlError {
         name: &'static str,
         last_line: usize,
     },
-    #[error("line {line}: `{name} = {text}`: the value is not a number")]
+    #[error(
+        "line {line}: `{} = {}`: the value is not a number",
+        Excerpt(name),
+        Excerpt(text)
+    )]
     BadNumber {
         name: String,
         line: usize,
         text: String,
     },
     #[error(
+        "line {line}: `{name} = {}`: the reference {what} must be positive (the coefficients are made non-dimensional on it)",
+        Num(*value)
+    )]
+    NotPositive {
+        name: &'static str,
+        what: &'static str,
+        value: f64,
+        line: usize,
+    },
+    #[error(
         "line {line}: the section \"Stability-axis derivatives...\" is missing; found \"{found}\" (an AVL version or output this reader does not know)"
     )]
     NoStabilityAxes { line: usize, found: String },
+}
+
+impl AvlError {
+    /// The 1-based line the error is on (0: the file as a whole).
+    pub fn line(&self) -> usize {
+        match self {
+            AvlError::NotStFile { line, .. }
+            | AvlError::BadNumber { line, .. }
+            | AvlError::NotPositive { line, .. }
+            | AvlError::NoStabilityAxes { line, .. } => *line,
+            AvlError::Missing { last_line, .. } => *last_line,
+            AvlError::Empty => 0,
+        }
+    }
 }
 
 /// The quantities of a `.st` file this program uses.
@@ -117,7 +146,7 @@ pub fn parse_st(text: &str) -> Result<StFile, AvlError> {
         if line.contains("Geometry-axis derivatives") && !stability {
             return Err(AvlError::NoStabilityAxes {
                 line: n,
-                found: line.trim().to_string(),
+                found: excerpt(line.trim()),
             });
         }
         let ps = pairs(line);
@@ -167,6 +196,7 @@ pub fn parse_st(text: &str) -> Result<StFile, AvlError> {
             .map(|(_, v, _)| *v)
     };
     let need = |name: &'static str| get(name).ok_or(AvlError::Missing { name, last_line });
+    let line_of = |name: &str| values.iter().find(|(k, _, _)| k == name).map(|e| e.2);
     let st = StFile {
         sref: need("Sref")?,
         cref: need("Cref")?,
@@ -190,6 +220,21 @@ pub fn parse_st(text: &str) -> Result<StFile, AvlError> {
             line: last_line,
             found: "end of file".into(),
         });
+    }
+    for (name, what, value) in [
+        ("Sref", "area", st.sref),
+        ("Cref", "chord", st.cref),
+        ("Bref", "span", st.bref),
+    ] {
+        if value <= 0.0 {
+            let line = line_of(name).unwrap_or(last_line);
+            return Err(AvlError::NotPositive {
+                name,
+                what,
+                value,
+                line,
+            });
+        }
     }
     Ok(st)
 }
