@@ -20,9 +20,11 @@ fn assert_short(m: &str) {
     }
 }
 
+type Edit = fn(&mut stability_core::case::Case);
+
 #[test]
 fn case_errors_name_the_input() {
-    let cases: [(fn(&mut stability_core::case::Case), CaseInput, &str); 6] = [
+    let cases: [(Edit, CaseInput, &str); 6] = [
         (|c| c.mach = f64::NAN, CaseInput::Mach, "NaN"),
         (|c| c.mach = -1e308, CaseInput::Mach, "-1e308"),
         (|c| c.h = f64::INFINITY, CaseInput::Cg, "inf"),
