@@ -30,10 +30,40 @@ pub enum AnalysisError {
     Overflow { coefficient: &'static str },
     #[error("the roots could not be computed: {0}")]
     Roots(#[from] RootsError),
+    #[error(
+        "Routh's test ({}) contradicts the roots (largest real part {}): please report this quartic",
+        if *routh_stable { "stable" } else { "unstable" },
+        Num(*largest_re)
+    )]
+    RouthDisagrees { routh_stable: bool, largest_re: f64 },
 }
+
+/// A root with |r| ≤ ON_AXIS·|λ| lies on the imaginary axis to working
+/// precision: the sign of its real part may be beyond what the roots'
+/// accuracy (normwise, ~ε|λ| times the condition) resolves, and Routh's
+/// verdict is not checked against it.
+pub const ON_AXIS: f64 = 1e-9;
 
 /// |A| at or below this is a degenerate quartic ([`AnalysisError::LeadingCoefficientZero`]).
 pub const LEADING_COEFFICIENT_MIN: f64 = 1e-12;
+
+/// Routh's verdict against the roots' real parts: they must agree unless
+/// the quartic is on the stability boundary to working precision (R
+/// marginal, or a root within [`ON_AXIS`] of the axis). A disagreement
+/// otherwise would be a wrong answer: an error, never a result.
+fn agree(routh: &Routh, roots: &[Complex64; 4]) -> Result<(), AnalysisError> {
+    let on_axis = roots.iter().any(|z| z.re.abs() <= ON_AXIS * z.norm());
+    let largest_re = roots.iter().map(|z| z.re).fold(f64::NEG_INFINITY, f64::max);
+    let decaying = largest_re < 0.0;
+    if routh.marginal || on_axis || routh.stable == decaying {
+        Ok(())
+    } else {
+        Err(AnalysisError::RouthDisagrees {
+            routh_stable: routh.stable,
+            largest_re,
+        })
+    }
+}
 
 /// A derivative set's inputs checked: every one finite, μ₁ and i_B
 /// positive.
@@ -151,6 +181,8 @@ impl Analysis {
             });
         }
         let roots = solve_quartic(quartic.to_array())?;
+        let routh = Routh::of(&quartic);
+        agree(&routh, &roots)?;
         let modes = Modes::identify(&roots, d.mu1);
         let classical = match (modes.short_period(), modes.phugoid()) {
             _ if !classical => None,
@@ -172,7 +204,7 @@ impl Analysis {
         };
         Ok(Analysis {
             quartic,
-            routh: Routh::of(&quartic),
+            routh,
             roots,
             verdict: Verdict::of(&modes),
             modes,

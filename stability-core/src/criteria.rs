@@ -16,23 +16,53 @@ pub const CYCLES_CONSTANT: f64 = LN_2 / (2.0 * PI);
 /// Routh's test of §4.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Routh {
-    /// R = BCD − AD² − B²E.
+    /// R = BCD − AD² − B²E (±inf or 0 where it leaves f64's range; its
+    /// sign is exact even then).
     pub discriminant: f64,
     /// All of A, B, C, D, E and R have the same (strict) sign.
     pub stable: bool,
+    /// |R| is within its rounding error (8ε·(|BCD| + |AD²| + |B²E|)) of
+    /// zero: the motion is on the stability boundary to working precision,
+    /// and `stable` may go either way with the coefficients' last bits.
+    pub marginal: bool,
 }
 
 impl Routh {
     /// §4: "the necessary and sufficient conditions for stability are that
     /// all coefficients of the quartic and in addition Routh's discriminant
     /// R = BCD − AD² − B²E must be of the same sign".
+    ///
+    /// R's three products are formed with an exponent of their own
+    /// (`roots::binary::Wide`), so that neither overflow nor underflow can
+    /// change its sign: R is homogeneous (R(ρ⁴A, ρ³B, ρ²C, ρD, E) = ρ⁶R),
+    /// so its sign is the same at every scale at which the roots are
+    /// found, and the verdict agrees with them.
     pub fn of(q: &Quartic) -> Routh {
-        let r = q.b * q.c * q.d - q.a * q.d * q.d - q.b * q.b * q.e;
-        let all = [q.a, q.b, q.c, q.d, q.e, r];
-        let stable = all.iter().all(|&x| x > 0.0) || all.iter().all(|&x| x < 0.0);
+        use crate::roots::binary::{Wide, ldexp};
+        let [a, b, c, d, e] = q.to_array().map(Wide::new);
+        let terms = [
+            b.mul(c).mul(d),
+            Wide::new(-1.0).mul(a).mul(d).mul(d),
+            Wide::new(-1.0).mul(b).mul(b).mul(e),
+        ];
+        let (sum, abs, exp) = Wide::sum(&terms);
+        let r = ldexp(sum, exp);
+        let sign = |x: f64| {
+            if x > 0.0 {
+                1
+            } else if x < 0.0 {
+                -1
+            } else {
+                0
+            }
+        };
+        let s = sign(sum);
+        let all = [q.a, q.b, q.c, q.d, q.e].map(sign);
+        let stable = s != 0 && all.iter().all(|&x| x == s);
         Routh {
             discriminant: r,
             stable,
+            marginal: sum.abs() <= 8.0 * f64::EPSILON * abs,
         }
     }
 }
