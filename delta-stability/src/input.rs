@@ -453,7 +453,9 @@ pub fn parse(path: &str, text: &str) -> Result<DerivativeFile, InputError> {
             }
         }
     }
-    report = notation.to_report(&own, &parameters);
+    report = notation
+        .to_report(&own, &parameters)
+        .map_err(|e| InputError::file(path, e.to_string()))?;
     for i in 0..N_ROWS {
         if report[i].is_none() {
             report[i] = extra[i];

@@ -15,11 +15,11 @@
 //! 1. The coefficients are divided by A and λ is scaled by the power of two
 //!    s = 2^σ nearest max |cₖ/A|^(1/k), so that the scaled quartic has
 //!    coefficients of order one; roots are scaled back at the end. Powers
-//!    of two are exact ([`binary`]); where this scaling cannot bring every
+//!    of two are exact (`binary`); where this scaling cannot bring every
 //!    coefficient into range (roots of widely different sizes, or
 //!    coefficient ratios beyond f64), the quartic is solved on its own
 //!    coefficients instead, by the Aberth–Ehrlich iteration from the Newton
-//!    polygon ([`wide`]).
+//!    polygon (`wide`).
 //! 2. Ferrari: x⁴ + ax³ + bx² + cx + d = (x² + ax/2 + y/2)² − (px + q)²
 //!    when y is a root of the resolvent y³ − by² + (ac − 4d)y + (4bd − a²d − c²) = 0,
 //!    with p² = a²/4 + y − b, q² = y²/4 − d, pq = ay/4 − c/2. The largest
@@ -61,8 +61,8 @@
 //! fails the check is never returned as an answer. (`tests/roots_fuzz.rs`
 //! holds the solver to this over f64's whole range.)
 //!
-//! Modules: [`binary`] (exact scaling), `factor` (steps 2–4), `aberth`
-//! (step 5), `horner` (evaluation), [`wide`] (any scale).
+//! Modules: `binary` (exact scaling), `factor` (steps 2–4), `aberth`
+//! (step 5), `horner` (evaluation), `wide` (any scale).
 //!
 //! # Multiple roots
 //! A root of multiplicity m is ill-conditioned: a perturbation ε of the
@@ -170,7 +170,7 @@ impl Scaling {
     fn of(c: &[f64; 5]) -> Option<Scaling> {
         if c[4] == 0.0 {
             // a zero root: its terms vanish with it, so no coefficient
-            // bounds them from below ([`wide`] takes it exactly)
+            // bounds them from below (`wide` takes it exactly)
             return None;
         }
         let m = [c[1] / c[0], c[2] / c[0], c[3] / c[0], c[4] / c[0]];
@@ -204,7 +204,7 @@ impl Scaling {
 
     /// Steps 2–5 on the scaled quartic, and the roots scaled back; `None`
     /// where a root fails the backward-error check, a conjugate is missing,
-    /// or a root leaves f64's range when scaled back (then [`wide`] decides).
+    /// or a root leaves f64's range when scaled back (then `wide` decides).
     #[inline]
     fn roots(&self) -> Option<[Complex64; 4]> {
         let [a, b, c, d] = self.monic;
