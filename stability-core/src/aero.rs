@@ -297,7 +297,13 @@ pub mod defaults {
     /// suction); through the transonic range it is exactly §6's rule, the
     /// incompressible value times a_incomp/a.
     pub fn drag_due_to_lift(p: &Planform, m: f64) -> Value {
-        let a = lift_slope(p, m);
+        no_suction(lift_slope(p, m))
+    }
+
+    /// K = 1/a and dK/dM = −(da/dM)/a²: the drag due to lift with no
+    /// leading-edge suction, from a lift slope (the model's own, tables
+    /// included).
+    pub fn no_suction(a: Value) -> Value {
         Value::new(1.0 / a.value, -a.d_mach / (a.value * a.value))
     }
 
@@ -393,10 +399,7 @@ impl AeroModel {
         let drag_due_to_lift = match &self.drag_due_to_lift {
             Source::Table(t) => t.at(m)?,
             // K = 1/a with the model's own lift slope (tables included)
-            Source::Default => Value::new(
-                1.0 / lift_slope.value,
-                -lift_slope.d_mach / (lift_slope.value * lift_slope.value),
-            ),
+            Source::Default => defaults::no_suction(lift_slope),
         };
         Ok(Coefficients {
             mach: m,

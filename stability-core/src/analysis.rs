@@ -82,6 +82,10 @@ pub fn check(d: &Derivatives) -> Result<(), AnalysisError> {
     Ok(())
 }
 
+/// Standard gravity g₀ = 9.806 65 m/s² (exact, by definition: 3rd CGPM,
+/// 1901; ISO 80000-3).
+pub const STANDARD_GRAVITY: f64 = 9.806_65;
+
 /// The flight condition in dimensional form, for times in seconds.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Dimensional {
@@ -108,10 +112,10 @@ impl Dimensional {
         self.mass / (0.5 * self.rho * self.s * self.chord)
     }
 
-    /// The lift coefficient of level flight, W/(½ρV²S), eq (24), with g =
-    /// 9.80665 m/s².
+    /// The lift coefficient of level flight, W/(½ρV²S), eq (24), with
+    /// W = m·[`STANDARD_GRAVITY`].
     pub fn c_l(&self) -> f64 {
-        self.mass * 9.806_65 / (0.5 * self.rho * self.v * self.v * self.s)
+        self.mass * STANDARD_GRAVITY / (0.5 * self.rho * self.v * self.v * self.s)
     }
 }
 

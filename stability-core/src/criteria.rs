@@ -2,14 +2,19 @@
 //! standard (§8, eq 41), static and manoeuvre margins (§9, eq 42) and the
 //! MIL-F-8785C damping levels.
 
+pub use crate::modes::CYCLES_CONSTANT;
 use crate::modes::{Mode, ModeName, Modes, Origin};
 use crate::{Derivatives, Quartic};
 use serde::Serialize;
-use std::f64::consts::{LN_2, PI};
 
-/// The report's constant of eq (8): cycles to half amplitude = 0.11032·s/(−r);
-/// exactly ln 2/(2π).
-pub const CYCLES_CONSTANT: f64 = LN_2 / (2.0 * PI);
+/// The limit of §8 without the report's s ≈ √C: B = 2√(C/(1 + (2π/ln 2)²))
+/// = 0.21930·√C takes the pair λ² + Bλ + C exactly one cycle to halve
+/// (with k = ln 2/2π, r = −B/2 and s = √(C − B²/4), k·s/(−r) = 1 gives
+/// B = 2k√C/√(1 + k²)).
+fn one_cycle_exact() -> f64 {
+    let k = CYCLES_CONSTANT;
+    2.0 * k / (1.0 + k * k).sqrt()
+}
 
 // ------------------------------------------------------------------ §4 Routh
 
@@ -152,10 +157,9 @@ impl DampingStandard {
         let m_thetadot = d.m_q + d.m_wdot;
         let g = d.i_b * (d.m_q * d.z_w - d.mu1 * d.m_w);
         let (max, max_exact) = if g >= 0.0 {
-            let k_exact = 2.0 / (1.0 + (2.0 * PI / LN_2).powi(2)).sqrt();
             (
                 Some(-d.z_w * d.i_b - 2.0 * CYCLES_CONSTANT * g.sqrt()),
-                Some(-d.z_w * d.i_b - k_exact * g.sqrt()),
+                Some(-d.z_w * d.i_b - one_cycle_exact() * g.sqrt()),
             )
         } else {
             (None, None)

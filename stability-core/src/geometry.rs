@@ -37,6 +37,19 @@ use crate::display::Num;
 use serde::Serialize;
 use std::f64::consts::PI;
 
+/// β cot Λ, β = √(M² − 1), at a supersonic Mach number: the leading edge
+/// swept by Λ lies inside the Mach cone (is subsonic) while β cot Λ < 1.
+pub fn beta_cot(sweep_le: f64, mach: f64) -> f64 {
+    (mach * mach - 1.0).sqrt() / sweep_le.tan()
+}
+
+/// The Mach number at which a leading edge swept by Λ turns sonic,
+/// β cot Λ = 1: M = √(1 + tan²Λ) = sec Λ (√2 for 45°, 2 for 60°).
+pub fn sonic_leading_edge_mach(sweep_le: f64) -> f64 {
+    let t = sweep_le.tan();
+    (1.0 + t * t).sqrt()
+}
+
 /// Why a planform is not a straight-tapered delta.
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
 pub enum GeometryError {

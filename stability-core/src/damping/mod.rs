@@ -14,101 +14,15 @@
 //! | `transonic` | (38) | K.W. Mangler's low-frequency theory at M = 1, steady |
 //! | `transonic-frequency` | (39)–(40) | the same, with the frequency-dependent terms |
 
-use crate::display::{Num, OptNum, excerpt};
-use crate::geometry::Planform;
-pub use crate::warnings::{Warning, Warnings};
+pub mod theory;
+
+pub use theory::{Theory, UnknownTheory};
+
+use crate::display::{Num, OptNum};
+use crate::geometry::{self, Planform};
+use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
 use std::f64::consts::PI;
-use std::fmt;
-use std::str::FromStr;
-
-/// A theory of the damping derivatives; serializes as its name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Theory {
-    Garrick,
-    GarnerTaper,
-    Slender,
-    Supersonic,
-    Transonic,
-    TransonicFrequency,
-}
-
-impl Theory {
-    pub const ALL: [Theory; 6] = [
-        Theory::Garrick,
-        Theory::GarnerTaper,
-        Theory::Slender,
-        Theory::Supersonic,
-        Theory::Transonic,
-        Theory::TransonicFrequency,
-    ];
-
-    /// The theory's name in configs and on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Theory::Garrick => "garrick",
-            Theory::GarnerTaper => "garner-taper",
-            Theory::Slender => "slender",
-            Theory::Supersonic => "supersonic",
-            Theory::Transonic => "transonic",
-            Theory::TransonicFrequency => "transonic-frequency",
-        }
-    }
-
-    /// The report's equations.
-    pub fn equations(self) -> &'static str {
-        match self {
-            Theory::Garrick => "(32)–(33)",
-            Theory::GarnerTaper => "(34)–(35)",
-            Theory::Slender => "(37)",
-            Theory::Supersonic => "(36)",
-            Theory::Transonic => "(38)",
-            Theory::TransonicFrequency => "(39)–(40)",
-        }
-    }
-
-    /// Whether the derivatives depend on the frequency parameter ω̄.
-    pub fn uses_frequency(self) -> bool {
-        self == Theory::TransonicFrequency
-    }
-}
-
-impl fmt::Display for Theory {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Theory {
-    type Err = UnknownTheory;
-    fn from_str(s: &str) -> Result<Self, UnknownTheory> {
-        Theory::ALL
-            .into_iter()
-            .find(|t| t.name() == s)
-            .ok_or_else(|| UnknownTheory { name: excerpt(s) })
-    }
-}
-
-/// A name that is not a theory's (quoted as an excerpt).
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown damping theory `{name}`; the theories are {}", TheoryList)]
-pub struct UnknownTheory {
-    pub name: String,
-}
-
-/// `` `garrick`, `garner-taper`, … ``
-struct TheoryList;
-
-impl fmt::Display for TheoryList {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, t) in Theory::ALL.iter().enumerate() {
-            let sep = if i == 0 { "" } else { ", " };
-            write!(f, "{sep}`{}`", t.name())?;
-        }
-        Ok(())
-    }
-}
 
 /// The planform quantities the theories use.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -130,7 +44,7 @@ impl From<&Planform> for WingInput {
 }
 
 /// z_q, z_ẇ, m_q, m_ẇ in the report's notation.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct DampingDerivatives {
     pub z_q: f64,
     pub z_wdot: f64,
@@ -271,120 +185,157 @@ pub fn damping_derivatives(
             degrees: wing.sweep_le.to_degrees(),
         });
     }
+    let mut out = Damping {
+        theory,
+        derivatives: DampingDerivatives::default(),
+        fig18: None,
+        warnings: Warnings::default(),
+    };
+    out.derivatives = match theory {
+        Theory::Slender | Theory::Transonic => slender(wing, h, mach, &mut out),
+        Theory::Garrick => garrick(wing, h, mach, &mut out),
+        Theory::GarnerTaper => garner_taper(wing, h, mach, &mut out)?,
+        Theory::Supersonic => supersonic(wing, h, mach, &mut out)?,
+        Theory::TransonicFrequency => transonic_frequency(wing, h, mach, omega_bar, &mut out)?,
+    };
+    if wing.taper > 0.0 && theory != Theory::GarnerTaper {
+        out.warnings.push(Warning::TrueDeltaOnly {
+            theory,
+            taper: wing.taper,
+        });
+    }
+    Ok(out)
+}
+
+/// (37), and (38) for z_q and m_q (its acceleration derivatives are the
+/// frequency-dependent ones of (39): in the steady limit, (37)'s).
+fn slender(wing: &WingInput, h: f64, mach: f64, out: &mut Damping) -> DampingDerivatives {
+    let a = wing.aspect_ratio;
+    if out.theory == Theory::Transonic && (mach - 1.0).abs() > TRANSONIC_RANGE {
+        out.warnings.push(Warning::AwayFromSonic {
+            theory: out.theory,
+            mach,
+        });
+    }
+    let beta_a = a * (1.0 - mach * mach).abs().sqrt();
+    if out.theory == Theory::Slender && beta_a > 1.0 {
+        out.warnings.push(Warning::NotSlender { beta_a });
+    }
+    let z_wdot = -PI * a / 4.0;
+    DampingDerivatives {
+        z_q: -PI * a / 2.0 * (1.0 - h),
+        z_wdot,
+        m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
+        m_wdot: z_wdot * (5.0 / 8.0 - h),
+    }
+}
+
+/// (32) z_θ̇ = −(πA/4)(3 − 2h), (33) m_θ̇ = −(πA/2)(h − 1)².
+fn garrick(wing: &WingInput, h: f64, mach: f64, out: &mut Damping) -> DampingDerivatives {
+    let a = wing.aspect_ratio;
+    incompressible(mach, out);
+    DampingDerivatives::split(
+        -PI * a / 4.0 * (3.0 - 2.0 * h),
+        -PI * a / 2.0 * (h - 1.0).powi(2),
+        a,
+        h,
+    )
+}
+
+/// Garner, λ = 1/7: −½∂C_L/∂(φ̇c̄ₛ/V) = −πA(5/8 − x₀/(4c̄ₛ)),
+/// −½∂C_m/∂(φ̇c̄ₛ/V) = −πA[49/64 − (7/8)x₀/c̄ₛ + ¼(x₀/c̄ₛ)²], with
+/// x₀/c̄ₛ = (57/48)h + 9/16 and the report's factors 3/2 and 9/8:
+/// z_θ̇ = −πA(0.7265625 − 0.4453125h), m_θ̇ = −(9/8)(0.3525390625)πA(h − 1)²
+/// — the report's (34)–(35) print them rounded, 0.728 − 0.446h and 0.4.
+fn garner_taper(
+    wing: &WingInput,
+    h: f64,
+    mach: f64,
+    out: &mut Damping,
+) -> Result<DampingDerivatives, DampingError> {
+    if (wing.taper - 1.0 / 7.0).abs() > 1e-3 {
+        return Err(DampingError::Taper { taper: wing.taper });
+    }
+    let a = wing.aspect_ratio;
+    incompressible(mach, out);
+    let z = -PI * a * (0.726_562_5 - 0.445_312_5 * h);
+    let m = -9.0 / 8.0 * 0.352_539_062_5 * PI * a * (h - 1.0).powi(2);
+    Ok(DampingDerivatives::split(z, m, a, h))
+}
+
+/// The incompressible theories (32)–(35) warn above M = 0.7.
+fn incompressible(mach: f64, out: &mut Damping) {
+    if mach > 0.7 {
+        out.warnings.push(Warning::Incompressible {
+            theory: out.theory,
+            mach,
+        });
+    }
+}
+
+/// (36) with subsonic leading edges, E and H from Fig 18.
+fn supersonic(
+    wing: &WingInput,
+    h: f64,
+    mach: f64,
+    out: &mut Damping,
+) -> Result<DampingDerivatives, DampingError> {
+    if mach <= 1.0 {
+        return Err(DampingError::SubsonicMach { mach });
+    }
+    let beta_cot = geometry::beta_cot(wing.sweep_le, mach);
+    if beta_cot >= 1.0 {
+        return Err(DampingError::SupersonicLeadingEdge {
+            mach,
+            beta_cot,
+            sonic: geometry::sonic_leading_edge_mach(wing.sweep_le),
+        });
+    }
+    if mach < 1.1 {
+        out.warnings.push(Warning::NearlyTransonic { mach });
+    }
+    if beta_cot > 0.95 {
+        out.warnings.push(Warning::NearlySonicEdge { beta_cot });
+    }
+    let f = Fig18::at(beta_cot);
+    out.fig18 = Some(f);
+    Ok(eq36(wing.aspect_ratio, h, mach, f.e, f.h))
+}
+
+/// (39)–(40): (37) with Mangler's frequency functions in the acceleration
+/// derivatives.
+fn transonic_frequency(
+    wing: &WingInput,
+    h: f64,
+    mach: f64,
+    omega_bar: Option<f64>,
+    out: &mut Damping,
+) -> Result<DampingDerivatives, DampingError> {
+    let w = match omega_bar {
+        Some(w) if w.is_finite() && w > 0.0 => w,
+        omega_bar => return Err(DampingError::Frequency { omega_bar }),
+    };
+    if (mach - 1.0).abs() > TRANSONIC_RANGE {
+        out.warnings.push(Warning::AwayFromSonic {
+            theory: out.theory,
+            mach,
+        });
+    }
     let a = wing.aspect_ratio;
     let cot = 1.0 / wing.sweep_le.tan();
-    let mut warnings = Warnings::default();
-    let mut fig18 = None;
-    let true_delta_only = |w: &mut Warnings| {
-        if wing.taper > 0.0 {
-            w.push(Warning::TrueDeltaOnly {
-                theory,
-                taper: wing.taper,
-            });
-        }
-    };
-    let derivatives = match theory {
-        Theory::Slender | Theory::Transonic => {
-            // (37); (38) gives the same z_q and m_q (its acceleration
-            // derivatives are the frequency-dependent ones of (39): in the
-            // steady limit they are taken from (37)).
-            if theory == Theory::Transonic && (mach - 1.0).abs() > 0.2 {
-                warnings.push(Warning::AwayFromSonic { theory, mach });
-            }
-            if theory == Theory::Slender && a * (1.0 - mach * mach).abs().sqrt() > 1.0 {
-                warnings.push(Warning::NotSlender {
-                    beta_a: a * (1.0 - mach * mach).abs().sqrt(),
-                });
-            }
-            true_delta_only(&mut warnings);
-            let z_wdot = -PI * a / 4.0;
-            DampingDerivatives {
-                z_q: -PI * a / 2.0 * (1.0 - h),
-                z_wdot,
-                m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
-                m_wdot: z_wdot * (5.0 / 8.0 - h),
-            }
-        }
-        Theory::Garrick => {
-            // (32) z_θ̇ = −(πA/4)(3 − 2h), (33) m_θ̇ = −(πA/2)(h − 1)²
-            if mach > 0.7 {
-                warnings.push(Warning::Incompressible { theory, mach });
-            }
-            true_delta_only(&mut warnings);
-            DampingDerivatives::split(
-                -PI * a / 4.0 * (3.0 - 2.0 * h),
-                -PI * a / 2.0 * (h - 1.0).powi(2),
-                a,
-                h,
-            )
-        }
-        Theory::GarnerTaper => {
-            // Garner, λ = 1/7: −½∂C_L/∂(φ̇c̄ₛ/V) = −πA(5/8 − x₀/(4c̄ₛ)),
-            // −½∂C_m/∂(φ̇c̄ₛ/V) = −πA[49/64 − (7/8)x₀/c̄ₛ + ¼(x₀/c̄ₛ)²], with
-            // x₀/c̄ₛ = (57/48)h + 9/16 and the report's factors 3/2 and 9/8:
-            // z_θ̇ = −πA(0.7265625 − 0.4453125h), m_θ̇ = −(9/8)(0.3525390625)πA(h − 1)²
-            // — the report's (34)–(35) print them rounded, 0.728 − 0.446h and 0.4.
-            if (wing.taper - 1.0 / 7.0).abs() > 1e-3 {
-                return Err(DampingError::Taper { taper: wing.taper });
-            }
-            if mach > 0.7 {
-                warnings.push(Warning::Incompressible { theory, mach });
-            }
-            let z = -PI * a * (0.726_562_5 - 0.445_312_5 * h);
-            let m = -9.0 / 8.0 * 0.352_539_062_5 * PI * a * (h - 1.0).powi(2);
-            DampingDerivatives::split(z, m, a, h)
-        }
-        Theory::Supersonic => {
-            if mach <= 1.0 {
-                return Err(DampingError::SubsonicMach { mach });
-            }
-            let beta = (mach * mach - 1.0).sqrt();
-            let beta_cot = beta * cot;
-            if beta_cot >= 1.0 {
-                return Err(DampingError::SupersonicLeadingEdge {
-                    mach,
-                    beta_cot,
-                    sonic: (1.0 + 1.0 / (cot * cot)).sqrt(),
-                });
-            }
-            if mach < 1.1 {
-                warnings.push(Warning::NearlyTransonic { mach });
-            }
-            if beta_cot > 0.95 {
-                warnings.push(Warning::NearlySonicEdge { beta_cot });
-            }
-            true_delta_only(&mut warnings);
-            let f = Fig18::at(beta_cot);
-            fig18 = Some(f);
-            eq36(a, h, mach, f.e, f.h)
-        }
-        Theory::TransonicFrequency => {
-            let w = match omega_bar {
-                Some(w) if w.is_finite() && w > 0.0 => w,
-                omega_bar => return Err(DampingError::Frequency { omega_bar }),
-            };
-            if (mach - 1.0).abs() > 0.2 {
-                warnings.push(Warning::AwayFromSonic { theory, mach });
-            }
-            true_delta_only(&mut warnings);
-            let (k, _) = mangler_k(w, wing.sweep_le);
-            let z_wdot = -PI * a / 4.0 * k;
-            let extra = 9.0 / 64.0 * PI * cot.powi(3);
-            DampingDerivatives {
-                z_q: -PI * a / 2.0 * (1.0 - h),
-                z_wdot,
-                m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
-                m_wdot: z_wdot * (5.0 / 8.0 - h) - extra,
-            }
-        }
-    };
-    Ok(Damping {
-        theory,
-        derivatives,
-        fig18,
-        warnings,
+    let (k, _) = mangler_k(w, wing.sweep_le);
+    let z_wdot = -PI * a / 4.0 * k;
+    let extra = 9.0 / 64.0 * PI * cot.powi(3);
+    Ok(DampingDerivatives {
+        z_q: -PI * a / 2.0 * (1.0 - h),
+        z_wdot,
+        m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
+        m_wdot: z_wdot * (5.0 / 8.0 - h) - extra,
     })
 }
+
+/// The transonic theories (38)–(40) warn further than this from M = 1.
+pub const TRANSONIC_RANGE: f64 = 0.2;
 
 /// Eq (36), recovered (Mangler; Ribner & Malvestuto, NACA Rep. 908), in
 /// the report's notation, for given E and H (Fig 18):
