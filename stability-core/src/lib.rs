@@ -4,6 +4,26 @@
 //! speeds*, College of Aeronautics, Cranfield, 1953 ("the report").
 //!
 //! Equation numbers in this crate's documentation are the report's.
+//!
+//! The modules follow the report's method, planform to response:
+//!
+//! | the report | module |
+//! | --- | --- |
+//! | §2.2 the planform | [`geometry`] |
+//! | §5–6 aerodynamic coefficients, stiffness derivatives | [`aero`], [`stiffness`] |
+//! | §7 the damping derivatives and their theories | [`theory`], [`damping`] |
+//! | §3 the derivative set | [`derivatives`] |
+//! | §3–4, eqs (4)–(6) the stability quartic; its roots | [`quartic`], [`roots`] |
+//! | §4, eqs (7)–(8) the modes; the report's own method | [`modes`], [`classical`] |
+//! | §4 Routh, §8 the damping standard, §9 margins | [`criteria`] |
+//! | a derivative set's analysis; a design point; the study | [`analysis`], [`case`], [`study`] |
+//! | §10 which derivative drives the damping | [`sensitivity`] |
+//! | §11 responses | [`response`] |
+//! | the appendix's notations | [`notation`] |
+//!
+//! Around them: [`warnings`] (validity limits approached), [`json`] (the
+//! results as the command line prints them), [`display`] (numbers and
+//! quotes in messages), [`examples`] (the example aircraft).
 
 pub mod aero;
 pub mod analysis;
@@ -24,6 +44,7 @@ pub mod roots;
 pub mod sensitivity;
 pub mod stiffness;
 pub mod study;
+pub mod theory;
 pub mod warnings;
 
 pub use derivatives::Derivatives;

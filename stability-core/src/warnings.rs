@@ -2,8 +2,8 @@
 //! a result. Held inline (a design point's evaluation allocates nothing) and
 //! written out only when displayed.
 
-use crate::damping::theory::Theory;
 use crate::display::Num;
+use crate::theory::Theory;
 use arrayvec::ArrayVec;
 use serde::Serialize;
 use std::fmt;

@@ -1,5 +1,7 @@
-//! The theories of §7 the damping derivatives come from: their names in
-//! configs and on the command line, and the report's equations for each.
+//! The theories of §7 the damping derivatives come from (the table in
+//! `damping`): their names in configs and on the command line, and the
+//! report's equations for each. Its own module so that `damping` and
+//! `warnings`, which both name theories, need not import each other.
 
 use crate::display::excerpt;
 use serde::Serialize;

@@ -14,9 +14,7 @@
 //! | `transonic` | (38) | K.W. Mangler's low-frequency theory at M = 1, steady |
 //! | `transonic-frequency` | (39)–(40) | the same, with the frequency-dependent terms |
 
-pub mod theory;
-
-pub use theory::{Theory, UnknownTheory};
+pub use crate::theory::{Theory, UnknownTheory};
 
 use crate::display::{Num, OptNum};
 use crate::geometry::{self, Planform};
