@@ -1,10 +1,10 @@
 //! The hot path allocates nothing: the generated coefficient and gradient
 //! functions, the quartic's roots and a derivative set's whole analysis
-//! (roots, modes, Routh, §8 criteria, eq 7 check), and a design point's
-//! evaluation from its planform (coefficients, derivatives of every theory,
-//! the frequency iteration, warnings). A counting global
-//! allocator sees no allocation while they run. (One test, so that no other
-//! test's allocations run beside it.)
+//! (roots at any scale, modes, Routh, §8 criteria, eq 7 check), and a
+//! design point's evaluation from its planform (coefficients, derivatives
+//! of every theory, the frequency iteration, warnings). A counting global
+//! allocator sees no allocation while they run. (One test, so that no
+//! other test's allocations run beside it.)
 
 use stability_core::{Quartic, QuarticGradient};
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -48,6 +48,12 @@ fn the_hot_path_does_not_allocate() {
         let lean = stability_core::analysis::Analysis::without_classical(black_box(&di))
             .expect("analysis");
         acc += r[0].re + a.modes.len() as f64 + lean.routh.discriminant;
+    }
+    // the badly scaled, whose roots take the Newton-polygon path
+    for i_b in [1e-160, 1e308] {
+        let di = stability_core::Derivatives { i_b, ..d };
+        let a = stability_core::analysis::Analysis::of(black_box(&di)).expect("analysis");
+        acc += a.roots[0].re;
     }
     use stability_core::case::{DampingModel, evaluate};
     use stability_core::damping::Theory;
