@@ -43,15 +43,7 @@ impl Routh {
     /// so its sign is the same at every scale at which the roots are
     /// found, and the verdict agrees with them.
     pub fn of(q: &Quartic) -> Routh {
-        use crate::roots::binary::{Wide, ldexp};
-        let [a, b, c, d, e] = q.to_array().map(Wide::new);
-        let terms = [
-            b.mul(c).mul(d),
-            Wide::new(-1.0).mul(a).mul(d).mul(d),
-            Wide::new(-1.0).mul(b).mul(b).mul(e),
-        ];
-        let (sum, abs, exp) = Wide::sum(&terms);
-        let r = ldexp(sum, exp);
+        let (sum, abs, r) = Routh::discriminant(q);
         let sign = |x: f64| {
             if x > 0.0 {
                 1
@@ -69,6 +61,29 @@ impl Routh {
             stable,
             marginal: sum.abs() <= 8.0 * f64::EPSILON * abs,
         }
+    }
+
+    /// R = BCD − AD² − B²E and Σ|terms| on a common scale 2^k, and R
+    /// itself: in plain f64 when every coefficient is zero or within
+    /// 1e±90 (no product of three can leave f64's range, and the result is
+    /// the same to the bit), else with `Wide` numbers.
+    fn discriminant(q: &Quartic) -> (f64, f64, f64) {
+        use crate::roots::binary::{Wide, ldexp};
+        let in_range = |x: f64| x == 0.0 || (1e-90..1e90).contains(&x.abs());
+        if q.to_array().iter().all(|&x| in_range(x)) {
+            let t = [q.b * q.c * q.d, -q.a * q.d * q.d, -q.b * q.b * q.e];
+            let r = t[0] + t[1] + t[2];
+            return (r, t[0].abs() + t[1].abs() + t[2].abs(), r);
+        }
+        let [a, b, c, d, e] = q.to_array().map(Wide::new);
+        let minus = Wide::new(-1.0);
+        let terms = [
+            b.mul(c).mul(d),
+            minus.mul(a).mul(d).mul(d),
+            minus.mul(b).mul(b).mul(e),
+        ];
+        let (sum, abs, exp) = Wide::sum(&terms);
+        (sum, abs, ldexp(sum, exp))
     }
 }
 
