@@ -213,12 +213,14 @@ impl std::fmt::Display for StiffAdvice {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         if self.0 <= MAX_STEPS as f64 {
             write!(f, "take at least {} steps", self.0)
-        } else {
+        } else if self.0.is_finite() {
             write!(
                 f,
-                "it would take {} steps (at most {MAX_STEPS}): shorten the time span",
-                Num(self.0)
+                "it would take {:.3e} steps, more than the {MAX_STEPS} allowed: shorten the time span",
+                self.0
             )
+        } else {
+            write!(f, "no step count would do: shorten the time span")
         }
     }
 }
