@@ -287,7 +287,7 @@ pub fn parse(path: &str, text: &str) -> Result<Config, InputError> {
         let m = m.get_ref();
         if let Some(d) = &m.damping {
             damping = DampingModel::parse(d.get_ref())
-                .map_err(|e| err(d.span(), "[model] damping", e))?;
+                .map_err(|e| err(d.span(), "[model] damping", e.to_string()))?;
         }
         if let Some(w) = &m.omega_bar {
             omega_bar = Some(positive(

@@ -244,13 +244,7 @@ pub fn parse(path: &str, text: &str) -> Result<DerivativeFile, InputError> {
             )
         })?;
         let st = avl::parse_st(&st_text).map_err(|e| {
-            let line = match &e {
-                avl::AvlError::NotStFile { line, .. }
-                | avl::AvlError::BadNumber { line, .. }
-                | avl::AvlError::NoStabilityAxes { line, .. } => *line,
-                avl::AvlError::Missing { last_line, .. } => *last_line,
-                avl::AvlError::Empty => 0,
-            };
+            let line = e.line();
             InputError {
                 file: shown.clone(),
                 line,
@@ -459,7 +453,9 @@ pub fn parse(path: &str, text: &str) -> Result<DerivativeFile, InputError> {
             }
         }
     }
-    report = notation.to_report(&own, &parameters);
+    report = notation
+        .to_report(&own, &parameters)
+        .map_err(|e| InputError::file(path, e.to_string()))?;
     for i in 0..N_ROWS {
         if report[i].is_none() {
             report[i] = extra[i];

@@ -27,7 +27,9 @@ pub fn run(from: &str, to: &str, file: &str, json_out: bool) -> Result<(), Failu
             tables::NOTATIONS.join(", ")
         )));
     };
-    let values = target.from_report(&input.report, &input.parameters);
+    let values = target
+        .from_report(&input.report, &input.parameters)
+        .map_err(|e| bad(e.to_string()))?;
     let names = target.names();
     let report_names = Notation::REPORT.names();
     let quartic_rows: Vec<&str> = DERIVATIVE_ROWS

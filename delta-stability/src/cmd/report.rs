@@ -574,7 +574,10 @@ pub fn run(out: &Path) -> Result<(), Failure> {
                 2.0,
                 400,
             ) {
-                f38 = f38.with(Series::new(name, s.iter().map(|x| (x.t, x.w)).collect()));
+                f38 = f38.with(Series::new(
+                    name,
+                    s.samples.iter().map(|x| (x.t, x.w)).collect(),
+                ));
             }
         }
     }

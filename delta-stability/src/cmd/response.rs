@@ -56,7 +56,8 @@ pub fn run(o: &Options) -> Result<(), Failure> {
     let ss = StateSpace::new(&file.derivatives, simp).map_err(|e| bad(e.to_string()))?;
     let samples = ss
         .simulate(input, o.until, o.steps)
-        .map_err(|e| bad(e.to_string()))?;
+        .map_err(|e| bad(e.to_string()))?
+        .samples;
     let tau = file.dimensional.map(|d| d.tau());
     // The report's closed form, eq (45), for the step (from the 2-DOF
     // equation as printed, with the same simplifications applied).
