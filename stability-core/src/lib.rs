@@ -13,6 +13,7 @@ pub mod criteria;
 pub mod damping;
 pub mod derivatives;
 pub mod geometry;
+pub mod lifting_surface;
 pub mod modes;
 pub mod notation;
 pub mod quartic;
