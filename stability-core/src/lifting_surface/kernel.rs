@@ -86,6 +86,9 @@ pub enum I1Approximation {
     /// Desmarais (1982), twelve terms, fifty times more accurate.
     #[default]
     Desmarais,
+    /// No approximation: I₁ by numerical quadrature ([`i1_by_quadrature`]),
+    /// to about 10⁻¹² — a reference, some hundred times slower.
+    Quadrature,
 }
 
 /// 1 − u/√(1 + u²) for u ≥ 0 without cancellation:
@@ -114,7 +117,9 @@ fn exponential_sum(u: f64, k: f64, approx: I1Approximation) -> Complex64 {
                 q *= step;
             }
         }
-        I1Approximation::Desmarais => {
+        // (the quadrature never comes here: `i1` and `numerator` route it
+        // before; Desmarais' sum stands in for it should it ever)
+        I1Approximation::Desmarais | I1Approximation::Quadrature => {
             let mut p = 2.0 * DESMARAIS_B;
             let mut q = (-p * u).exp();
             for &a in &DESMARAIS_A {
@@ -140,6 +145,9 @@ fn i1_reduced(u: f64, k: f64, approx: I1Approximation) -> Complex64 {
 /// Rodden, Giesing & Kálmán's reflection for u₁ < 0 (1971, eq A.5):
 /// I₁(u₁) = 2 Re I₁(0) − conj I₁(−u₁).
 pub fn i1(u1: f64, k1: f64, approx: I1Approximation) -> Complex64 {
+    if approx == I1Approximation::Quadrature {
+        return i1_by_quadrature(u1, k1);
+    }
     let phase = Complex64::from_polar(1.0, -k1 * u1);
     if u1 >= 0.0 {
         phase * i1_reduced(u1, k1, approx)
@@ -148,6 +156,68 @@ pub fn i1(u1: f64, k1: f64, approx: I1Approximation) -> Complex64 {
         let j = i1_reduced(-u1, k1, approx).conj();
         Complex64::new(2.0 * i1_reduced(0.0, k1, approx).re, 0.0) - phase * j
     }
+}
+
+/// Gauss–Legendre nodes and weights on [0, 1], n = 64 (Newton's method on
+/// P₆₄ from Tricomi's initial guesses; computed once).
+fn gauss_legendre_64() -> &'static [(f64, f64)] {
+    static RULE: std::sync::OnceLock<Vec<(f64, f64)>> = std::sync::OnceLock::new();
+    RULE.get_or_init(|| {
+        let n = 64;
+        (0..n)
+            .map(|i| {
+                let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+                let mut dp = 1.0;
+                for _ in 0..100 {
+                    // P_n(x) and P_n'(x) by the three-term recurrence
+                    let (mut p0, mut p1) = (1.0, x);
+                    for k in 2..=n {
+                        let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
+                        p0 = p1;
+                        p1 = p2;
+                    }
+                    dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+                    let dx = p1 / dp;
+                    x -= dx;
+                    if dx.abs() < 1e-16 {
+                        break;
+                    }
+                }
+                let w = 2.0 / ((1.0 - x * x) * dp * dp);
+                (0.5 * (1.0 + x), 0.5 * w)
+            })
+            .collect()
+    })
+}
+
+/// I₁(u₁, k₁) without approximation, for reference: for u₁ ≥ 0 the
+/// integral over [u₁, u₁ + 2] by 64-point Gauss–Legendre, and beyond
+/// U = u₁ + 2 along the rotated path v = U − it, where the integrand
+/// decays as e^{−k₁t} (the integrand (1 + v²)^{−3/2} is analytic for
+/// Re v > 0, and the arc at infinity contributes nothing for k₁ ≥ 0):
+/// ∫_U^∞ = −i e^{−ik₁U} ∫₀^∞ e^{−k₁t}(1 + (U − it)²)^{−3/2} dt, mapped by
+/// t = Us/(1 − s) onto the same rule. u₁ < 0 by the reflection of [`i1`].
+/// Accurate to about 10⁻¹² for k₁ ≤ 20 (tested against mpmath).
+pub fn i1_by_quadrature(u1: f64, k1: f64) -> Complex64 {
+    if u1 < 0.0 {
+        let at0 = i1_by_quadrature(0.0, k1);
+        return Complex64::new(2.0 * at0.re, 0.0) - i1_by_quadrature(-u1, k1).conj();
+    }
+    let rule = gauss_legendre_64();
+    let f = |v: Complex64| (v * v + 1.0).powf(-1.5);
+    let big_u = u1 + 2.0;
+    let mut near = Complex64::new(0.0, 0.0);
+    for &(s, w) in rule {
+        let v = u1 + 2.0 * s;
+        near += Complex64::from_polar(w * 2.0 * (1.0 + v * v).powf(-1.5), -k1 * v);
+    }
+    let mut tail = Complex64::new(0.0, 0.0);
+    for &(s, w) in rule {
+        let t = big_u * s / (1.0 - s);
+        let dt = big_u / ((1.0 - s) * (1.0 - s));
+        tail += f(Complex64::new(big_u, -t)) * ((-k1 * t).exp() * dt * w);
+    }
+    near + Complex64::new(0.0, -1.0) * Complex64::from_polar(1.0, -k1 * big_u) * tail
 }
 
 /// The flow a kernel is evaluated in: Mach number, β² = 1 − M², and
@@ -208,6 +278,9 @@ pub fn numerator(x0: f64, y0: f64, flow: &KernelFlow) -> Complex64 {
     let second = m * b2 * r * r / (big_r * r_minus);
     let lag = Complex64::from_polar(1.0, -kappa * x0);
     let both = Complex64::from_polar(1.0, -kappa * m * r_minus / b2); // e^{−ik₁u₁ − iκx₀}
+    if flow.approx == I1Approximation::Quadrature {
+        return -(lag * i1_by_quadrature(u1, k1) + both * second);
+    }
     if u1 >= 0.0 {
         -(both * (i1_reduced(u1, k1, flow.approx) + second))
     } else {
@@ -275,10 +348,53 @@ mod tests {
                         .enumerate()
                         .map(|(n, a)| a * (-(2f64.powi(n as i32 + 1)) * DESMARAIS_B * u).exp())
                         .sum::<f64>(),
+                    I1Approximation::Quadrature => continue,
                 };
                 worst = worst.max((fit - one_minus_u_over_root(u)).abs());
             }
             assert!(worst < tol, "{approx:?}: {worst}");
+        }
+    }
+
+    /// I₁(u₁, k₁) by mpmath (30 digits, `quadosc`), from
+    /// `scripts/lifting_surface_reference.py`.
+    const I1_MPMATH: [(f64, f64, f64, f64); 20] = [
+        (0.0, 0.0, 1.0, 0.0),
+        (0.0, 0.3, 0.9167976100371975, -0.23757010105317376),
+        (0.0, 2.0, 0.27973176363304485, -0.46728898961084966),
+        (0.0, 10.0, 0.00018648773453825585, -0.10369265741380134),
+        (0.5, 0.0, 0.55278640450004206, 0.0),
+        (0.5, 0.3, 0.47111228051529486, -0.20595429279355557),
+        (0.5, 2.0, -0.10267977608361377, -0.2722292316065221),
+        (0.5, 10.0, 0.070959780755843377, -0.011493489666878438),
+        (2.0, 0.0, 0.10557280900008412, 0.0),
+        (2.0, 0.3, 0.046761480225534639, -0.074779267312425882),
+        (2.0, 2.0, 0.013524121280235246, 0.034796048369741849),
+        (2.0, 10.0, -0.0075962736243883289, -0.0045416355421080372),
+        (10.0, 0.0, 0.0049628097900108643, 0.0),
+        (10.0, 0.3, -0.001660189418897333, 0.0016274749390504203),
+        (10.0, 2.0, -0.00040883992072131395, -0.0002593241983138397),
+        (10.0, 10.0, 5.2346539369977457e-5, -8.3376089631172374e-5),
+        (-1.5, 0.0, 1.8320502943378437, 0.0),
+        (-1.5, 0.3, 1.7326575499018109, -0.1055795287211595),
+        (-1.5, 2.0, 0.60305309952458511, 0.052705864119201701),
+        (-1.5, 10.0, 0.012971480502329575, 0.011186048800967058),
+    ];
+
+    #[test]
+    fn i1_against_mpmath() {
+        // largest error found, for each method: the approximations' errors
+        // are k₁ times their integrated fit errors
+        for (approx, tol) in [
+            (I1Approximation::Quadrature, 1e-12),
+            (I1Approximation::Desmarais, 2e-4),
+            (I1Approximation::Laschka, 2e-3),
+        ] {
+            for (u, k, re, im) in I1_MPMATH {
+                let v = i1(u, k, approx);
+                let err = (v - Complex64::new(re, im)).norm();
+                assert!(err < tol, "{approx:?} I₁({u}, {k}) = {v}, mpmath {re} {im}i: {err:e}");
+            }
         }
     }
 
