@@ -305,7 +305,7 @@ impl Trapezoid {
         if !(semi_span.is_finite() && semi_span > 0.0) {
             return Err(TrapezoidError::Length("semi-span", semi_span));
         }
-        if !(sweep_le.abs() < PI / 2.0) {
+        if sweep_le.is_nan() || sweep_le.abs() >= PI / 2.0 {
             return Err(TrapezoidError::Sweep(sweep_le.to_degrees()));
         }
         Ok(Trapezoid {

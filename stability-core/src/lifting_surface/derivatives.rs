@@ -69,6 +69,28 @@ impl Solution {
         }
     }
 
+    /// Richardson's extrapolation (8X_N − 6X_{N/2} + X_{N/4})/3 of each
+    /// number, from the solutions of N, N/2 and N/4 boxes per strip.
+    pub(super) fn richardson(&self, half: &Solution, quarter: &Solution) -> Solution {
+        self.combine(half, 8.0 / 3.0, -2.0)
+            .combine(quarter, 1.0, 1.0 / 3.0)
+    }
+
+    /// a·self + b·other, number by number.
+    pub(super) fn combine(&self, other: &Solution, a: f64, b: f64) -> Solution {
+        let c = |x: f64, y: f64| a * x + b * y;
+        Solution {
+            mach: self.mach,
+            omega_bar: self.omega_bar,
+            lift_alpha: c(self.lift_alpha, other.lift_alpha),
+            moment_alpha: c(self.moment_alpha, other.moment_alpha),
+            lift_alphadot: c(self.lift_alphadot, other.lift_alphadot),
+            moment_alphadot: c(self.moment_alphadot, other.moment_alphadot),
+            lift_q: c(self.lift_q, other.lift_q),
+            moment_q: c(self.moment_q, other.moment_q),
+        }
+    }
+
     /// C_Lα(ω̄), the in-phase lift slope.
     pub fn lift_slope(&self) -> f64 {
         self.lift_alpha

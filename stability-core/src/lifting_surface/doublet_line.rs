@@ -41,6 +41,14 @@ const FAR: f64 = 4.0;
 /// kernel's own length scale |a|/β there (see [`DoubletLine::integrate`]).
 pub const GRADING: f64 = 1.0;
 
+/// Beyond |ȳ| = GAUSS_BEYOND·e the oscillatory part is integrated by
+/// two-point Gauss–Legendre instead of the quartic (see
+/// [`DoubletLine::gauss`]).
+pub const GAUSS_BEYOND: f64 = 6.0;
+
+/// 1/√3, the two-point Gauss–Legendre station on [−1, 1].
+pub const FRAC_1_SQRT_3: f64 = 0.577_350_269_189_625_8;
+
 /// ∫_{−e}^{e} η′ⁿ/(ȳ − η′)² dη′, n = 0…4, as finite parts (|ȳ| < e) or
 /// ordinary integrals (|ȳ| > e). With F₂ = 2e/(ȳ² − e²) (the finite part of
 /// ∫dη′/(ȳ − η′)²) and F₁ = ln|(ȳ + e)/(ȳ − e)| (the principal value of
@@ -116,8 +124,8 @@ pub fn quartic_weights(ybar: f64, e: f64) -> [f64; 5] {
 pub fn horseshoe(x: f64, y: f64, a: (f64, f64), b: (f64, f64)) -> f64 {
     let (r1x, r1y) = (x - a.0, y - a.1);
     let (r2x, r2y) = (x - b.0, y - b.1);
-    let r1 = r1x.hypot(r1y);
-    let r2 = r2x.hypot(r2y);
+    let r1 = (r1x * r1x + r1y * r1y).sqrt();
+    let r2 = (r2x * r2x + r2y * r2y).sqrt();
     let cz = r1x * r2y - r1y * r2x;
     let (r0x, r0y) = (b.0 - a.0, b.1 - a.1);
     // the bound segment; nothing on its own line
@@ -151,7 +159,8 @@ impl DoubletLine {
         }
     }
 
-    fn factor(&self) -> f64 {
+    /// Δx/8π.
+    pub fn factor(&self) -> f64 {
         self.chord / (8.0 * PI)
     }
 
@@ -190,6 +199,25 @@ impl DoubletLine {
         acc
     }
 
+    /// ∫ f/(ȳ − η′)² dη′ by two-point Gauss–Legendre, for a line far from
+    /// the receiving point (|ȳ| > [`GAUSS_BEYOND`]·e), where the integrand is
+    /// smooth on the scale |ȳ|: the error is of relative order (e/ȳ)⁴/135
+    /// of the line's own contribution (measured on the 45° delta at
+    /// M = 0.8: 4·10⁻⁴ of z_ẇ, < 10⁻⁵ of the others).
+    fn gauss<T>(&self, x: f64, y: f64, f: &impl Fn(f64, f64) -> T) -> T
+    where
+        T: Copy + Default + std::ops::Add<Output = T> + std::ops::Mul<f64, Output = T>,
+    {
+        let (xbar, ybar) = (x - self.xi, y - self.eta);
+        let mut acc = T::default();
+        for s in [-FRAC_1_SQRT_3, FRAC_1_SQRT_3] {
+            let eta = s * self.e;
+            let u = ybar - eta;
+            acc = acc + f(xbar - eta * self.tan_sweep, u) * (self.e / (u * u));
+        }
+        acc
+    }
+
     /// FP∫ f/(ȳ − η′)² dη′ across the line (without Δx/8π), by the quartic
     /// rule — on pieces graded towards the receiving point's station where
     /// the point lies on the line's own strip closer to the line than the
@@ -208,6 +236,9 @@ impl DoubletLine {
         T: Copy + Default + std::ops::Add<Output = T> + std::ops::Mul<f64, Output = T>,
     {
         let (xbar, ybar) = (x - self.xi, y - self.eta);
+        if ybar.abs() > GAUSS_BEYOND * self.e {
+            return self.gauss(x, y, &f);
+        }
         let h0 = GRADING * (xbar - ybar * self.tan_sweep).abs() / beta;
         if ybar.abs() >= self.e || h0 >= self.e - ybar.abs() {
             return self.quartic(x, y, &f);

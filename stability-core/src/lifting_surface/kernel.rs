@@ -98,49 +98,6 @@ fn one_minus_u_over_root(u: f64) -> f64 {
     1.0 / (q * (q + u))
 }
 
-/// Σ aₙ e^{−pₙu}/(pₙ + ik) for u ≥ 0: the exponential sum's
-/// ∫_u^∞ e^{−ik(v − u)} (1 − v/√(1 + v²)) dv.
-fn exponential_sum(u: f64, k: f64, approx: I1Approximation) -> Complex64 {
-    let mut acc = Complex64::new(0.0, 0.0);
-    let mut add = |a: f64, p: f64, q: f64| {
-        // a q/(p + ik) = a q (p − ik)/(p² + k²)
-        let s = a * q / (p * p + k * k);
-        acc.re += s * p;
-        acc.im -= s * k;
-    };
-    match approx {
-        I1Approximation::Laschka => {
-            let step = (-LASCHKA_C * u).exp();
-            let mut q = step;
-            for (n, &a) in LASCHKA_A.iter().enumerate() {
-                add(a, (n + 1) as f64 * LASCHKA_C, q);
-                q *= step;
-            }
-        }
-        // (the quadrature never comes here: `i1` and `numerator` route it
-        // before; Desmarais' sum stands in for it should it ever)
-        I1Approximation::Desmarais | I1Approximation::Quadrature => {
-            let mut p = 2.0 * DESMARAIS_B;
-            let mut q = (-p * u).exp();
-            for &a in &DESMARAIS_A {
-                add(a, p, q);
-                p *= 2.0;
-                q *= q;
-            }
-        }
-    }
-    acc
-}
-
-/// e^{ik₁u} I₁(u, k₁) for u ≥ 0, the approximation of Rodden, Giesing &
-/// Kálmán (1971, eq A.1): integrating by parts,
-/// I₁ = e^{−ik₁u}[1 − u/√(1 + u²) − ik₁ Σ aₙ e^{−pₙu}/(pₙ + ik₁)].
-fn i1_reduced(u: f64, k: f64, approx: I1Approximation) -> Complex64 {
-    let s = exponential_sum(u, k, approx);
-    // 1 − u/√(1+u²) − ik s
-    Complex64::new(one_minus_u_over_root(u) + k * s.im, -k * s.re)
-}
-
 /// I₁(u₁, k₁) = ∫_{u₁}^∞ e^{−ik₁u}(1 + u²)^{−3/2} du for any real u₁, with
 /// Rodden, Giesing & Kálmán's reflection for u₁ < 0 (1971, eq A.5):
 /// I₁(u₁) = 2 Re I₁(0) − conj I₁(−u₁).
@@ -148,13 +105,14 @@ pub fn i1(u1: f64, k1: f64, approx: I1Approximation) -> Complex64 {
     if approx == I1Approximation::Quadrature {
         return i1_by_quadrature(u1, k1);
     }
+    let radial = Radial::for_k1(0.0, k1, approx);
     let phase = Complex64::from_polar(1.0, -k1 * u1);
     if u1 >= 0.0 {
-        phase * i1_reduced(u1, k1, approx)
+        phase * radial.i1_reduced(u1, approx)
     } else {
         // conj(e^{−ik₁|u₁|} J) = e^{−ik₁u₁} conj(J)
-        let j = i1_reduced(-u1, k1, approx).conj();
-        Complex64::new(2.0 * i1_reduced(0.0, k1, approx).re, 0.0) - phase * j
+        let j = radial.i1_reduced(-u1, approx).conj();
+        Complex64::new(radial.twice_re_at_zero, 0.0) - phase * j
     }
 }
 
@@ -257,11 +215,98 @@ pub fn steady_numerator(x0: f64, y0: f64, beta2: f64) -> f64 {
     -(1.0 + x0 / big_r)
 }
 
+/// What the numerator needs of the spanwise distance r = |y₀| alone, for
+/// every x₀ at that r: k₁ = κr and the exponential sum's coefficients
+/// cₙ = aₙ/(pₙ² + k₁²) as cₙpₙ and cₙ — so that a lattice, whose rows and
+/// columns share r strip by strip, divides once per strip pair and not
+/// once per box pair.
+#[derive(Debug, Clone, Copy)]
+pub struct Radial {
+    r: f64,
+    k1: f64,
+    cp: [f64; 12],
+    c: [f64; 12],
+    /// 2 Re I₁(0, k₁), the reflection's constant.
+    twice_re_at_zero: f64,
+}
+
+impl Radial {
+    pub fn new(y0: f64, flow: &KernelFlow) -> Radial {
+        Radial::for_k1(y0.abs(), flow.kappa * y0.abs(), flow.approx)
+    }
+
+    fn for_k1(r: f64, k1: f64, approx: I1Approximation) -> Radial {
+        let mut cp = [0.0; 12];
+        let mut c = [0.0; 12];
+        let mut fill = |n: usize, a: f64, p: f64| {
+            let cn = a / (p * p + k1 * k1);
+            cp[n] = cn * p;
+            c[n] = cn;
+        };
+        match approx {
+            I1Approximation::Laschka => {
+                for (n, &a) in LASCHKA_A.iter().enumerate() {
+                    fill(n, a, (n + 1) as f64 * LASCHKA_C);
+                }
+            }
+            I1Approximation::Desmarais | I1Approximation::Quadrature => {
+                let mut p = 2.0 * DESMARAIS_B;
+                for (n, &a) in DESMARAIS_A.iter().enumerate() {
+                    fill(n, a, p);
+                    p *= 2.0;
+                }
+            }
+        }
+        // I₁(0, k₁) = 1 − k₁² Σcₙ − ik₁ Σcₙpₙ (u = 0: all exponentials 1)
+        let twice_re_at_zero = 2.0 * (1.0 - k1 * k1 * c.iter().sum::<f64>());
+        Radial {
+            r,
+            k1,
+            cp,
+            c,
+            twice_re_at_zero,
+        }
+    }
+
+    /// e^{ik₁u} I₁(u, k₁) for u ≥ 0 (Rodden, Giesing & Kálmán 1971,
+    /// eq A.1): 1 − u/√(1 + u²) − ik₁ Σ aₙe^{−pₙu}/(pₙ + ik₁)
+    /// = 1 − u/√(1 + u²) − k₁² Σ cₙqₙ − ik₁ Σ cₙpₙqₙ, qₙ = e^{−pₙu}.
+    fn i1_reduced(&self, u: f64, approx: I1Approximation) -> Complex64 {
+        let (mut a, mut b) = (0.0, 0.0);
+        match approx {
+            I1Approximation::Laschka => {
+                let step = (-LASCHKA_C * u).exp();
+                let mut q = step;
+                for n in 0..LASCHKA_A.len() {
+                    a += self.cp[n] * q;
+                    b += self.c[n] * q;
+                    q *= step;
+                }
+            }
+            I1Approximation::Desmarais | I1Approximation::Quadrature => {
+                let mut q = (-2.0 * DESMARAIS_B * u).exp();
+                for n in 0..DESMARAIS_A.len() {
+                    a += self.cp[n] * q;
+                    b += self.c[n] * q;
+                    q *= q;
+                }
+            }
+        }
+        let k = self.k1;
+        Complex64::new(one_minus_u_over_root(u) - k * k * b, -k * a)
+    }
+}
+
 /// The full planar numerator N = K₁ e^{−iκx₀} (Landahl 1967). On the line
 /// r = 0 it is −2e^{−iκx₀} downstream and 0 upstream (I₁ → 2, the
 /// second term → 0).
 pub fn numerator(x0: f64, y0: f64, flow: &KernelFlow) -> Complex64 {
-    let r = y0.abs();
+    numerator_at(x0, &Radial::new(y0, flow), flow)
+}
+
+/// [`numerator`] with the spanwise distance's factors given.
+pub fn numerator_at(x0: f64, radial: &Radial, flow: &KernelFlow) -> Complex64 {
+    let r = radial.r;
     if r <= ON_LINE * (x0.abs() + r) {
         return if x0 > 0.0 {
             Complex64::from_polar(-2.0, -flow.kappa * x0)
@@ -273,20 +318,19 @@ pub fn numerator(x0: f64, y0: f64, flow: &KernelFlow) -> Complex64 {
     let big_r = (x0 * x0 + b2 * r * r).sqrt();
     let r_minus = big_r - m * x0; // β²r√(1 + u₁²) > 0
     let u1 = (m * big_r - x0) / (b2 * r);
-    let k1 = kappa * r;
     // M r/(R√(1+u₁²)) = Mβ²r²/(R(R − Mx₀)), times e^{−ik₁u₁}
     let second = m * b2 * r * r / (big_r * r_minus);
-    let lag = Complex64::from_polar(1.0, -kappa * x0);
     let both = Complex64::from_polar(1.0, -kappa * m * r_minus / b2); // e^{−ik₁u₁ − iκx₀}
     if flow.approx == I1Approximation::Quadrature {
-        return -(lag * i1_by_quadrature(u1, k1) + both * second);
+        let lag = Complex64::from_polar(1.0, -kappa * x0);
+        return -(lag * i1_by_quadrature(u1, radial.k1) + both * second);
     }
     if u1 >= 0.0 {
-        -(both * (i1_reduced(u1, k1, flow.approx) + second))
+        -(both * (radial.i1_reduced(u1, flow.approx) + second))
     } else {
-        let j = i1_reduced(-u1, k1, flow.approx).conj();
-        let i0 = 2.0 * i1_reduced(0.0, k1, flow.approx).re;
-        -(lag * i0 - both * j + both * second)
+        let lag = Complex64::from_polar(1.0, -kappa * x0);
+        let j = radial.i1_reduced(-u1, flow.approx).conj();
+        -(lag * radial.twice_re_at_zero + both * (second - j))
     }
 }
 
@@ -297,15 +341,20 @@ pub fn increment(x0: f64, y0: f64, flow: &KernelFlow) -> Complex64 {
     numerator(x0, y0, flow) - steady_numerator(x0, y0, flow.beta2)
 }
 
+/// [`increment`] with the spanwise distance's factors given.
+pub fn increment_at(x0: f64, y0: f64, radial: &Radial, flow: &KernelFlow) -> Complex64 {
+    numerator_at(x0, radial, flow) - steady_numerator(x0, y0, flow.beta2)
+}
+
 /// The first-order term of the numerator in frequency,
 /// N = N₀ + iκN₁ + O(κ² ln κ), exact:
 /// N₁ = x₀ + (x₀² + r²)/R.
 ///
-/// From I₁ = I₁⁰ − ik₁/√(1 + u₁²) + O(k₁² ln k₁) and e^{−ik₁u₁} = 1 − ik₁u₁
-/// + …, with the identities above; the quasi-steady derivatives (the
-/// report's "neglecting terms of second order in frequency", §7) are the
-/// lattice's response to this term. On the line r = 0: 2x₀ downstream, 0
-/// upstream.
+/// From I₁ = I₁⁰ − ik₁/√(1 + u₁²) + O(k₁² ln k₁) and
+/// e^{−ik₁u₁} = 1 − ik₁u₁ + …, with the identities above; the quasi-steady
+/// derivatives (the report's "neglecting terms of second order in
+/// frequency", §7) are the lattice's response to this term. On the line
+/// r = 0: 2x₀ downstream, 0 upstream.
 pub fn first_order_numerator(x0: f64, y0: f64, beta2: f64) -> f64 {
     let r = y0.abs();
     if r <= ON_LINE * (x0.abs() + r) {

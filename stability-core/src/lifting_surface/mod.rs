@@ -65,7 +65,7 @@ mod solve;
 pub use crate::geometry::Trapezoid;
 pub use derivatives::LiftingSurfaceDerivatives;
 pub use kernel::I1Approximation;
-pub use lattice::{Box, Lattice, LatticeSpec, Spacing};
+pub use lattice::{Box, Extrapolation, Lattice, LatticeSpec, Spacing};
 use serde::Serialize;
 
 /// Below this ω̄ [`Lattice::solve`] returns the quasi-steady limit.
@@ -81,9 +81,13 @@ pub enum LiftingSurfaceError {
     #[error("the frequency parameter ω̄ = ωc̄/V must be finite and ≥ 0 (0: quasi-steady), not {0}")]
     Frequency(f64),
     #[error(
-        "a lattice needs at least one chordwise box and one strip, not {chordwise} × {spanwise}"
+        "a lattice needs at least one strip and a number of chordwise boxes that is a positive multiple of {multiple} (4 for Richardson's extrapolation), not {chordwise} × {spanwise}"
     )]
-    Lattice { chordwise: usize, spanwise: usize },
+    Lattice {
+        chordwise: usize,
+        spanwise: usize,
+        multiple: usize,
+    },
     #[error(
         "a lattice of {boxes} boxes on the half wing is more than the {max} this solver takes"
     )]
