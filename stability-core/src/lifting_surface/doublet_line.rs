@@ -135,8 +135,16 @@ pub fn horseshoe(x: f64, y: f64, a: (f64, f64), b: (f64, f64)) -> f64 {
         0.0
     };
     // trailing legs: from b to +∞, and from +∞ to a
-    let leg_b = if r2y != 0.0 { (1.0 + r2x / r2) / r2y } else { 0.0 };
-    let leg_a = if r1y != 0.0 { -(1.0 + r1x / r1) / r1y } else { 0.0 };
+    let leg_b = if r2y != 0.0 {
+        (1.0 + r2x / r2) / r2y
+    } else {
+        0.0
+    };
+    let leg_a = if r1y != 0.0 {
+        -(1.0 + r1x / r1) / r1y
+    } else {
+        0.0
+    };
     -(bound + leg_b + leg_a)
 }
 
@@ -282,7 +290,10 @@ impl DoubletLine {
         let e = self.e / pieces as f64;
         let f = |x0, y0| kernel::steady_numerator(x0, y0, beta2);
         (0..pieces)
-            .map(|i| self.piece(-self.e + (2 * i + 1) as f64 * e, e).quartic(x, y, &f))
+            .map(|i| {
+                self.piece(-self.e + (2 * i + 1) as f64 * e, e)
+                    .quartic(x, y, &f)
+            })
             .sum::<f64>()
             * self.factor()
     }
@@ -301,7 +312,10 @@ mod tests {
             let mi = moment_integrals(ybar, e);
             for n in 0..5 {
                 let s: f64 = (0..5).map(|k| w[k] * STATIONS[k].powi(n as i32)).sum();
-                assert!((s - mi[n]).abs() < 1e-12 * (1.0 + mi[n].abs()), "{ybar} {n}");
+                assert!(
+                    (s - mi[n]).abs() < 1e-12 * (1.0 + mi[n].abs()),
+                    "{ybar} {n}"
+                );
             }
         }
     }
@@ -322,7 +336,12 @@ mod tests {
                 y2 * y2 * f2 - 4.0 * y2 * ybar * f1 + 6.0 * y2 + 2.0 / 3.0,
             ];
             for n in 0..5 {
-                assert!((near[n] - b[n]).abs() < 1e-11, "{ybar} {n}: {} {}", near[n], b[n]);
+                assert!(
+                    (near[n] - b[n]).abs() < 1e-11,
+                    "{ybar} {n}: {} {}",
+                    near[n],
+                    b[n]
+                );
                 assert!((a[n] - b[n]).abs() < 1e-11);
             }
         }
@@ -349,10 +368,20 @@ mod tests {
         for m in [0.0, 0.7] {
             let beta2: f64 = 1.0 - m * m;
             // own strip (finite part), neighbours, downstream, upstream, mirror side
-            for (x, y) in [(0.25, 0.2), (0.3, 0.33), (0.9, 0.1), (-0.4, 0.25), (0.5, -0.3), (0.2, 0.5)] {
+            for (x, y) in [
+                (0.25, 0.2),
+                (0.3, 0.33),
+                (0.9, 0.1),
+                (-0.4, 0.25),
+                (0.5, -0.3),
+                (0.2, 0.5),
+            ] {
                 let exact = line.steady(x, y, beta2.sqrt());
                 let quad = line.steady_by_quadrature(x, y, beta2, 401);
-                assert!((exact - quad).abs() < 1e-6 * (1.0 + exact.abs()), "{m} ({x}, {y}): {exact} {quad}");
+                assert!(
+                    (exact - quad).abs() < 1e-6 * (1.0 + exact.abs()),
+                    "{m} ({x}, {y}): {exact} {quad}"
+                );
             }
         }
     }

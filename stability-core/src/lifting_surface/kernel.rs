@@ -442,7 +442,10 @@ mod tests {
             for (u, k, re, im) in I1_MPMATH {
                 let v = i1(u, k, approx);
                 let err = (v - Complex64::new(re, im)).norm();
-                assert!(err < tol, "{approx:?} I₁({u}, {k}) = {v}, mpmath {re} {im}i: {err:e}");
+                assert!(
+                    err < tol,
+                    "{approx:?} I₁({u}, {k}) = {v}, mpmath {re} {im}i: {err:e}"
+                );
             }
         }
     }
@@ -451,10 +454,19 @@ mod tests {
     fn at_zero_frequency_the_numerator_is_the_steady_one() {
         for m in [0.0, 0.5, 0.9] {
             let flow = KernelFlow::new(m, 0.0, I1Approximation::Desmarais);
-            for (x0, y0) in [(0.3, 0.2), (-0.4, 0.1), (2.0, -1.5), (1e-3, 0.7), (-3.0, 0.01)] {
+            for (x0, y0) in [
+                (0.3, 0.2),
+                (-0.4, 0.1),
+                (2.0, -1.5),
+                (1e-3, 0.7),
+                (-3.0, 0.01),
+            ] {
                 let n = numerator(x0, y0, &flow);
                 let n0 = steady_numerator(x0, y0, flow.beta2);
-                assert!((n.re - n0).abs() < 1e-14 && n.im.abs() < 1e-14, "{m} {x0} {y0}: {n} {n0}");
+                assert!(
+                    (n.re - n0).abs() < 1e-14 && n.im.abs() < 1e-14,
+                    "{m} {x0} {y0}: {n} {n0}"
+                );
             }
         }
     }
@@ -468,7 +480,10 @@ mod tests {
                 let slope = increment(x0, y0, &flow) / Complex64::new(0.0, kappa);
                 let exact = first_order_numerator(x0, y0, flow.beta2);
                 // the fit's error, integrated, enters the slope at ~1e-3
-                assert!((slope.re - exact).abs() < 2e-3 * (1.0 + exact.abs()), "{slope} {exact}");
+                assert!(
+                    (slope.re - exact).abs() < 2e-3 * (1.0 + exact.abs()),
+                    "{slope} {exact}"
+                );
                 assert!(slope.im.abs() < 1e-3 * (1.0 + exact.abs()), "{slope}");
             }
         }

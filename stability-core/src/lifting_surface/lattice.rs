@@ -363,7 +363,8 @@ mod tests {
         assert!(matches!(
             Lattice::new(
                 &w,
-                LatticeSpec::new(6, 4, Spacing::Uniform).with_extrapolation(Extrapolation::Richardson)
+                LatticeSpec::new(6, 4, Spacing::Uniform)
+                    .with_extrapolation(Extrapolation::Richardson)
             ),
             Err(LiftingSurfaceError::Lattice { multiple: 4, .. })
         ));

@@ -88,9 +88,7 @@ pub enum LiftingSurfaceError {
         spanwise: usize,
         multiple: usize,
     },
-    #[error(
-        "a lattice of {boxes} boxes on the half wing is more than the {max} this solver takes"
-    )]
+    #[error("a lattice of {boxes} boxes on the half wing is more than the {max} this solver takes")]
     TooManyBoxes { boxes: usize, max: usize },
     #[error("the lattice's normalwash matrix is singular at M = {mach}, ω̄ = {omega_bar}")]
     Singular { mach: f64, omega_bar: f64 },

@@ -172,7 +172,9 @@ fn complex_solve(d: &DMatrix<Complex64>, w: &DMatrix<f64>) -> faer::Mat<Complex6
 /// The harmonic Dᵢⱼ, steady plus oscillatory.
 fn harmonic_matrix(grid: &Grid, flow: &KernelFlow) -> DMatrix<Complex64> {
     let beta = flow.beta2.sqrt();
-    let mut d = matrix(&grid.boxes, |line, x, y| Complex64::new(line.steady(x, y, beta), 0.0));
+    let mut d = matrix(&grid.boxes, |line, x, y| {
+        Complex64::new(line.steady(x, y, beta), 0.0)
+    });
     add_blocked(
         &mut d,
         grid,
@@ -285,7 +287,10 @@ mod tests {
             Complex64::new(line.steady(x, y, beta), 0.0) + line.oscillatory(x, y, &flow)
         });
         let scale = pairwise.iter().map(|v| v.norm()).fold(0.0, f64::max);
-        let worst = (blocked - pairwise).iter().map(|v| v.norm()).fold(0.0, f64::max);
+        let worst = (blocked - pairwise)
+            .iter()
+            .map(|v| v.norm())
+            .fold(0.0, f64::max);
         assert!(worst < 1e-13 * scale, "{worst} of {scale}");
         let mut blocked = DMatrix::zeros(l.boxes().len(), l.boxes().len());
         add_blocked(
@@ -297,7 +302,10 @@ mod tests {
         );
         let pairwise = matrix(l.boxes(), |line, x, y| line.first_order(x, y, flow.beta2));
         let scale = pairwise.iter().map(|v| v.abs()).fold(0.0, f64::max);
-        let worst = (blocked - pairwise).iter().map(|v| v.abs()).fold(0.0, f64::max);
+        let worst = (blocked - pairwise)
+            .iter()
+            .map(|v| v.abs())
+            .fold(0.0, f64::max);
         assert!(worst < 1e-13 * scale, "{worst} of {scale}");
     }
 }
