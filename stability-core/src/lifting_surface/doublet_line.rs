@@ -15,6 +15,20 @@ use super::kernel::{self, KernelFlow};
 use num_complex::Complex64;
 use std::f64::consts::PI;
 
+/// How the kernel's oscillatory part is integrated across a line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+pub enum LineRule {
+    /// Rodden, Taylor & McIntosh's quartic across every line, as they (and
+    /// panelaero, and Nastran) do.
+    Quartic,
+    /// The quartic, but on graded pieces on the receiving point's own strip
+    /// ([`DoubletLine::integrate`]) and by two-point Gauss far from it
+    /// ([`DoubletLine::gauss`]): as exact near the singular strip, cheaper
+    /// far from it.
+    #[default]
+    Graded,
+}
+
 /// A doublet line, the quarter-chord line of a box (or of its mirror image).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DoubletLine {
@@ -239,11 +253,21 @@ impl DoubletLine {
     /// pieces (half-width GRADING·|a|/β at the station, each next one twice
     /// as wide) lift that limit; the analytic finite part is kept on the
     /// central piece.
-    fn integrate<T>(&self, x: f64, y: f64, beta: f64, f: impl Fn(f64, f64) -> T) -> T
+    fn integrate<T>(
+        &self,
+        x: f64,
+        y: f64,
+        beta: f64,
+        rule: LineRule,
+        f: impl Fn(f64, f64) -> T,
+    ) -> T
     where
         T: Copy + Default + std::ops::Add<Output = T> + std::ops::Mul<f64, Output = T>,
     {
         let (xbar, ybar) = (x - self.xi, y - self.eta);
+        if rule == LineRule::Quartic {
+            return self.quartic(x, y, &f);
+        }
         if ybar.abs() > GAUSS_BEYOND * self.e {
             return self.gauss(x, y, &f);
         }
@@ -270,15 +294,15 @@ impl DoubletLine {
 
     /// The oscillatory increment D − D₀ at (x, y): N − N₀ integrated
     /// across the line by [`Self::integrate`].
-    pub fn oscillatory(&self, x: f64, y: f64, flow: &KernelFlow) -> Complex64 {
+    pub fn oscillatory(&self, x: f64, y: f64, flow: &KernelFlow, rule: LineRule) -> Complex64 {
         let beta = flow.beta2.sqrt();
-        self.integrate(x, y, beta, |x0, y0| kernel::increment(x0, y0, flow)) * self.factor()
+        self.integrate(x, y, beta, rule, |x0, y0| kernel::increment(x0, y0, flow)) * self.factor()
     }
 
     /// The first-order term D₁ per unit iκ (κ = ω/V), N₁ integrated across
     /// the line by [`Self::integrate`]; D = D₀ + iκD₁ + O(κ² ln κ).
-    pub fn first_order(&self, x: f64, y: f64, beta2: f64) -> f64 {
-        self.integrate(x, y, beta2.sqrt(), |x0, y0| {
+    pub fn first_order(&self, x: f64, y: f64, beta2: f64, rule: LineRule) -> f64 {
+        self.integrate(x, y, beta2.sqrt(), rule, |x0, y0| {
             kernel::first_order_numerator(x0, y0, beta2)
         }) * self.factor()
     }

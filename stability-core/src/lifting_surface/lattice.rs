@@ -29,7 +29,7 @@
 //! finest alone.
 
 use super::LiftingSurfaceError;
-use super::doublet_line::DoubletLine;
+use super::doublet_line::{DoubletLine, LineRule};
 use super::kernel::I1Approximation;
 use crate::geometry::Trapezoid;
 use serde::Serialize;
@@ -80,12 +80,15 @@ pub struct LatticeSpec {
     pub spacing: Spacing,
     /// How the kernel's integral I₁ is approximated.
     pub kernel: I1Approximation,
+    /// How the kernel's oscillatory part is integrated across each line.
+    pub line_rule: LineRule,
     pub extrapolation: Extrapolation,
 }
 
 impl Default for LatticeSpec {
     /// The default lattice: 12 chordwise boxes on 16 strips
-    /// ([`Spacing::Auto`]), Desmarais' kernel, Richardson's extrapolation
+    /// ([`Spacing::Auto`]), Desmarais' kernel, the graded line rule,
+    /// Richardson's extrapolation
     /// over 12, 6 and 3 boxes per strip — 192 + 96 + 48 boxes on the half
     /// wing. Its convergence is in `docs/damping-theories.md`.
     fn default() -> LatticeSpec {
@@ -94,6 +97,7 @@ impl Default for LatticeSpec {
             spanwise: 16,
             spacing: Spacing::Auto,
             kernel: I1Approximation::Desmarais,
+            line_rule: LineRule::Graded,
             extrapolation: Extrapolation::Richardson,
         }
     }
@@ -111,8 +115,14 @@ impl LatticeSpec {
             spanwise,
             spacing,
             kernel: I1Approximation::Desmarais,
+            line_rule: LineRule::Graded,
             extrapolation: Extrapolation::None,
         }
+    }
+
+    /// The same lattice with another line rule.
+    pub fn with_line_rule(self, line_rule: LineRule) -> LatticeSpec {
+        LatticeSpec { line_rule, ..self }
     }
 
     /// The same lattice with another kernel approximation.

@@ -64,6 +64,7 @@ mod solve;
 
 pub use crate::geometry::Trapezoid;
 pub use derivatives::LiftingSurfaceDerivatives;
+pub use doublet_line::LineRule;
 pub use kernel::I1Approximation;
 pub use lattice::{Box, Extrapolation, Lattice, LatticeSpec, Spacing};
 use serde::Serialize;

@@ -16,7 +16,7 @@
 //! (x̄ the M.A.C.'s leading edge), pitch about any axis is
 //! (1 + iω̄(x̄ − x_a)/c̄)·incidence + iω̄·rate: two solves serve every axis.
 
-use super::doublet_line::{DoubletLine, FRAC_1_SQRT_3, GAUSS_BEYOND};
+use super::doublet_line::{DoubletLine, FRAC_1_SQRT_3, GAUSS_BEYOND, LineRule};
 use super::kernel::{self, KernelFlow, Radial};
 use super::lattice::{Box, Grid, Lattice};
 use super::{LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution};
@@ -103,7 +103,7 @@ impl Lattice {
     ) -> Result<Solution, LiftingSurfaceError> {
         let boxes = &grid.boxes[..];
         let flow = KernelFlow::new(mach, omega_bar / self.wing().mac(), self.spec().kernel);
-        let d = harmonic_matrix(grid, &flow);
+        let d = harmonic_matrix(grid, &flow, self.spec().line_rule);
         let f = complex_solve(&d, &self.normalwash(boxes));
         let (l1, m1) = self.loads(boxes, (0..boxes.len()).map(|i| f[(i, 0)]));
         let (l2, m2) = self.loads(boxes, (0..boxes.len()).map(|i| f[(i, 1)]));
@@ -132,12 +132,14 @@ impl Lattice {
         // D₁ per unit iω̄ = (1/c̄) × the first-order factor per unit iκ
         let mac = self.wing().mac();
         let mut d1 = DMatrix::zeros(boxes.len(), boxes.len());
+        let rule = self.spec().line_rule;
         add_blocked(
             &mut d1,
             grid,
+            rule,
             |_| (),
             |x0, y0, _| kernel::first_order_numerator(x0, y0, beta2),
-            |line, x, y| line.first_order(x, y, beta2),
+            |line, x, y| line.first_order(x, y, beta2, rule),
         );
         d1 /= mac;
         let f1 = lu.solve(&(-(d1 * f0.column(0)))).ok_or(singular)?;
@@ -170,7 +172,7 @@ fn complex_solve(d: &DMatrix<Complex64>, w: &DMatrix<f64>) -> faer::Mat<Complex6
 }
 
 /// The harmonic Dᵢⱼ, steady plus oscillatory.
-fn harmonic_matrix(grid: &Grid, flow: &KernelFlow) -> DMatrix<Complex64> {
+fn harmonic_matrix(grid: &Grid, flow: &KernelFlow, rule: LineRule) -> DMatrix<Complex64> {
     let beta = flow.beta2.sqrt();
     let mut d = matrix(&grid.boxes, |line, x, y| {
         Complex64::new(line.steady(x, y, beta), 0.0)
@@ -178,9 +180,10 @@ fn harmonic_matrix(grid: &Grid, flow: &KernelFlow) -> DMatrix<Complex64> {
     add_blocked(
         &mut d,
         grid,
+        rule,
         |y0| Radial::new(y0, flow),
         |x0, y0, radial| kernel::increment_at(x0, y0, radial, flow),
-        |line, x, y| line.oscillatory(x, y, flow),
+        |line, x, y| line.oscillatory(x, y, flow, rule),
     );
     d
 }
@@ -189,9 +192,9 @@ fn harmonic_matrix(grid: &Grid, flow: &KernelFlow) -> DMatrix<Complex64> {
 /// ≈ FP∫ f/(ȳ − η′)² dη′ — two-point Gauss beyond |ȳ| = [`GAUSS_BEYOND`]·e,
 /// the quartic otherwise (as [`DoubletLine`]'s own rule for a point off its
 /// strip). Each station: (η′, y₀, weight).
-fn strip_rule(ybar: f64, e: f64) -> ([(f64, f64, f64); 5], usize) {
+fn strip_rule(ybar: f64, e: f64, rule: LineRule) -> ([(f64, f64, f64); 5], usize) {
     let mut out = [(0.0, 0.0, 0.0); 5];
-    if ybar.abs() > GAUSS_BEYOND * e {
+    if rule == LineRule::Graded && ybar.abs() > GAUSS_BEYOND * e {
         for (k, s) in [-FRAC_1_SQRT_3, FRAC_1_SQRT_3].into_iter().enumerate() {
             let y0 = ybar - s * e;
             out[k] = (s * e, y0, e / (y0 * y0));
@@ -215,6 +218,7 @@ fn strip_rule(ybar: f64, e: f64) -> ([(f64, f64, f64); 5], usize) {
 fn add_blocked<T, R>(
     d: &mut DMatrix<T>,
     grid: &Grid,
+    rule: LineRule,
     prep: impl Fn(f64) -> R,
     eval: impl Fn(f64, f64, &R) -> T,
     own: impl Fn(&DoubletLine, f64, f64) -> T,
@@ -239,14 +243,14 @@ fn add_blocked<T, R>(
                     }
                     continue;
                 }
-                let (rule, m) = strip_rule(y - at(ss).eta, at(ss).e);
-                let prepared: Vec<R> = rule[..m].iter().map(|&(_, y0, _)| prep(y0)).collect();
+                let (stations, m) = strip_rule(y - at(ss).eta, at(ss).e, rule);
+                let prepared: Vec<R> = stations[..m].iter().map(|&(_, y0, _)| prep(y0)).collect();
                 for i in rs..rs + nc {
                     for j in ss..ss + nc {
                         let line = at(j);
                         let xbar = boxes[i].x_c - line.xi;
                         let mut acc = T::default();
-                        for (&(eta, y0, w), p) in rule[..m].iter().zip(&prepared) {
+                        for (&(eta, y0, w), p) in stations[..m].iter().zip(&prepared) {
                             acc += eval(xbar - eta * line.tan_sweep, y0, p) * w;
                         }
                         d[(i, j)] += acc * line.factor();
@@ -282,9 +286,10 @@ mod tests {
         let l = Lattice::new(&w, LatticeSpec::new(4, 12, Spacing::Cosine)).unwrap();
         let flow = KernelFlow::new(0.6, 0.9, crate::lifting_surface::I1Approximation::Desmarais);
         let beta = flow.beta2.sqrt();
-        let blocked = harmonic_matrix(&l.grids()[0], &flow);
+        let rule = LineRule::Graded;
+        let blocked = harmonic_matrix(&l.grids()[0], &flow, rule);
         let pairwise = matrix(l.boxes(), |line, x, y| {
-            Complex64::new(line.steady(x, y, beta), 0.0) + line.oscillatory(x, y, &flow)
+            Complex64::new(line.steady(x, y, beta), 0.0) + line.oscillatory(x, y, &flow, rule)
         });
         let scale = pairwise.iter().map(|v| v.norm()).fold(0.0, f64::max);
         let worst = (blocked - pairwise)
@@ -296,11 +301,14 @@ mod tests {
         add_blocked(
             &mut blocked,
             &l.grids()[0],
+            rule,
             |_| (),
             |x0, y0, _| kernel::first_order_numerator(x0, y0, flow.beta2),
-            |line, x, y| line.first_order(x, y, flow.beta2),
+            |line, x, y| line.first_order(x, y, flow.beta2, rule),
         );
-        let pairwise = matrix(l.boxes(), |line, x, y| line.first_order(x, y, flow.beta2));
+        let pairwise = matrix(l.boxes(), |line, x, y| {
+            line.first_order(x, y, flow.beta2, rule)
+        });
         let scale = pairwise.iter().map(|v| v.abs()).fold(0.0, f64::max);
         let worst = (blocked - pairwise)
             .iter()
