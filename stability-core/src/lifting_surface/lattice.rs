@@ -108,6 +108,19 @@ impl LatticeSpec {
     /// 256 MB).
     pub const MAX_BOXES: usize = 4000;
 
+    /// The default lattice for `wing`: [`LatticeSpec::default`] (16 strips)
+    /// up to aspect ratio 4, and two more strips for each unit of aspect
+    /// ratio beyond (24 at A = 8) — the α̇ derivatives of wings of larger
+    /// aspect ratio need the narrower strips to stay within 0.5 % of a
+    /// lattice twice as dense (`docs/damping-theories.md`).
+    pub fn for_wing(wing: &Trapezoid) -> LatticeSpec {
+        let extra = (wing.aspect_ratio() - 4.0 - 1e-9).max(0.0).ceil() as usize;
+        LatticeSpec {
+            spanwise: 16 + 2 * extra,
+            ..LatticeSpec::default()
+        }
+    }
+
     /// A single lattice (no extrapolation) with Desmarais' kernel.
     pub fn new(chordwise: usize, spanwise: usize, spacing: Spacing) -> LatticeSpec {
         LatticeSpec {

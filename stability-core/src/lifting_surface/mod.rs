@@ -28,7 +28,8 @@
 //! use stability_core::geometry::{Planform, Size, Trapezoid};
 //! use stability_core::lifting_surface::{Lattice, LatticeSpec};
 //! let delta = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();
-//! let lattice = Lattice::new(&Trapezoid::from(&delta), LatticeSpec::default()).unwrap();
+//! let wing = Trapezoid::from(&delta);
+//! let lattice = Lattice::new(&wing, LatticeSpec::for_wing(&wing)).unwrap();
 //! let solution = lattice.solve(0.5, 0.0).unwrap(); // M = 0.5, quasi-steady
 //! for h in [0.0, 0.25, 0.5] {
 //!     let d = solution.derivatives(h, 0.01).unwrap(); // C_D = 0.01
