@@ -58,7 +58,7 @@
 
 mod derivatives;
 pub mod doublet_line;
-// pub mod figures;
+pub mod figures;
 pub mod kernel;
 mod lattice;
 mod solve;
@@ -98,6 +98,8 @@ pub enum LiftingSurfaceError {
     NotFinite { mach: f64, omega_bar: f64 },
     #[error("{what} must be a finite number, not {value}")]
     NonFinite { what: &'static str, value: f64 },
+    #[error("{0}")]
+    Planform(String),
 }
 
 /// One solve of the lattice: the wing's response to incidence and to pitch
