@@ -306,44 +306,51 @@ pub fn numerator(x0: f64, y0: f64, flow: &KernelFlow) -> Complex64 {
 
 /// [`numerator`] with the spanwise distance's factors given.
 pub fn numerator_at(x0: f64, radial: &Radial, flow: &KernelFlow) -> Complex64 {
+    numerator_and_steady(x0, radial, flow).0
+}
+
+/// N and N₀ together (they share R).
+fn numerator_and_steady(x0: f64, radial: &Radial, flow: &KernelFlow) -> (Complex64, f64) {
     let r = radial.r;
     if r <= ON_LINE * (x0.abs() + r) {
         return if x0 > 0.0 {
-            Complex64::from_polar(-2.0, -flow.kappa * x0)
+            (Complex64::from_polar(-2.0, -flow.kappa * x0), -2.0)
         } else {
-            Complex64::new(0.0, 0.0)
+            (Complex64::new(0.0, 0.0), 0.0)
         };
     }
     let (m, b2, kappa) = (flow.mach, flow.beta2, flow.kappa);
     let big_r = (x0 * x0 + b2 * r * r).sqrt();
+    let steady = -(1.0 + x0 / big_r);
     let r_minus = big_r - m * x0; // β²r√(1 + u₁²) > 0
     let u1 = (m * big_r - x0) / (b2 * r);
     // M r/(R√(1+u₁²)) = Mβ²r²/(R(R − Mx₀)), times e^{−ik₁u₁}
     let second = m * b2 * r * r / (big_r * r_minus);
     let both = Complex64::from_polar(1.0, -kappa * m * r_minus / b2); // e^{−ik₁u₁ − iκx₀}
-    if flow.approx == I1Approximation::Quadrature {
+    let n = if flow.approx == I1Approximation::Quadrature {
         let lag = Complex64::from_polar(1.0, -kappa * x0);
-        return -(lag * i1_by_quadrature(u1, radial.k1) + both * second);
-    }
-    if u1 >= 0.0 {
+        -(lag * i1_by_quadrature(u1, radial.k1) + both * second)
+    } else if u1 >= 0.0 {
         -(both * (radial.i1_reduced(u1, flow.approx) + second))
     } else {
         let lag = Complex64::from_polar(1.0, -kappa * x0);
         let j = radial.i1_reduced(-u1, flow.approx).conj();
         -(lag * radial.twice_re_at_zero + both * (second - j))
-    }
+    };
+    (n, steady)
 }
 
 /// The oscillatory increment N − N₀ that the doublet lattice integrates
 /// along each doublet line (Albano & Rodden 1969, eq 21), the steady part
 /// being carried by horseshoe vortices.
 pub fn increment(x0: f64, y0: f64, flow: &KernelFlow) -> Complex64 {
-    numerator(x0, y0, flow) - steady_numerator(x0, y0, flow.beta2)
+    increment_at(x0, &Radial::new(y0, flow), flow)
 }
 
-/// [`increment`] with the spanwise distance's factors given.
-pub fn increment_at(x0: f64, y0: f64, radial: &Radial, flow: &KernelFlow) -> Complex64 {
-    numerator_at(x0, radial, flow) - steady_numerator(x0, y0, flow.beta2)
+/// [`increment`] with the spanwise distance's factors given (r = |y₀|).
+pub fn increment_at(x0: f64, radial: &Radial, flow: &KernelFlow) -> Complex64 {
+    let (n, n0) = numerator_and_steady(x0, radial, flow);
+    n - n0
 }
 
 /// The first-order term of the numerator in frequency,

@@ -182,7 +182,7 @@ fn harmonic_matrix(grid: &Grid, flow: &KernelFlow, rule: LineRule) -> DMatrix<Co
         grid,
         rule,
         |y0| Radial::new(y0, flow),
-        |x0, y0, radial| kernel::increment_at(x0, y0, radial, flow),
+        |x0, _, radial| kernel::increment_at(x0, radial, flow),
         |line, x, y| line.oscillatory(x, y, flow, rule),
     );
     d
