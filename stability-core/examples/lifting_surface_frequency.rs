@@ -11,7 +11,9 @@ use stability_core::geometry::Trapezoid;
 use stability_core::lifting_surface::{I1Approximation, Lattice, LatticeSpec, Spacing};
 
 fn main() {
-    println!("| wing | M | ω̄ | z_ẇ exact | z_ẇ Desmarais | z_ẇ Laschka | m_ẇ(0) exact | m_ẇ(0) Desmarais | m_ẇ(0) Laschka |");
+    println!(
+        "| wing | M | ω̄ | z_ẇ exact | z_ẇ Desmarais | z_ẇ Laschka | m_ẇ(0) exact | m_ẇ(0) Desmarais | m_ẇ(0) Laschka |"
+    );
     println!("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
     for (name, deg, mach) in [("delta 60°", 60.0f64, 0.5), ("delta 45°", 45.0, 0.8)] {
         let t = deg.to_radians().tan();
@@ -28,7 +30,11 @@ fn main() {
                 .iter()
                 .map(|l| l.solve(mach, w).unwrap().derivatives(0.0, 0.0).unwrap())
                 .collect();
-            let label = if w == 0.0 { "0 (quasi-steady)".to_string() } else { w.to_string() };
+            let label = if w == 0.0 {
+                "0 (quasi-steady)".to_string()
+            } else {
+                w.to_string()
+            };
             println!(
                 "| {name} | {mach} | {label} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} |",
                 d[0].z_wdot, d[1].z_wdot, d[2].z_wdot, d[0].m_wdot, d[1].m_wdot, d[2].m_wdot

@@ -80,8 +80,8 @@ fn a_rectangle_of_large_aspect_ratio_tends_to_the_flat_plate() {
     // C_Lα = 2π/β, H₀ = ¼, z_q = −π/β (the ¾-chord point sees qc/2V),
     // m_q = −π/(8β) (the linear "camber" of the rotation).
     let aspect = [20.0, 40.0, 80.0];
-    for mach in [0.0, 0.5] {
-        let beta = (1.0 - mach * mach as f64).sqrt();
+    for mach in [0.0f64, 0.5] {
+        let beta = f64::sqrt(1.0 - mach * mach);
         let mut rows = Vec::new();
         for a in aspect {
             let l = Lattice::new(
@@ -177,10 +177,10 @@ fn prandtl_glauert_maps_a_wing_at_m_onto_its_affine_wing_at_rest() {
     // M = 0, with the steady coefficients divided by β (chords, the M.A.C.
     // and its position unchanged).
     for (wing, mach) in [
-        (delta(4.0), 0.6),
+        (delta(4.0), 0.6f64),
         (Trapezoid::new(1.0, 1.0 / 7.0, 0.7, 0.9).unwrap(), 0.8),
     ] {
-        let beta = (1.0 - mach * mach as f64).sqrt();
+        let beta = f64::sqrt(1.0 - mach * mach);
         let spec = LatticeSpec::new(8, 12, Spacing::Auto);
         let at_m = Lattice::new(&wing, spec).unwrap().solve(mach, 0.0).unwrap();
         let affine = wing.affine(beta).unwrap();

@@ -18,8 +18,7 @@ use stability_core::lifting_surface::{Lattice, LatticeSpec};
 
 #[test]
 fn steady_derivatives_agree_with_avl() {
-    let avl: Value =
-        serde_json::from_str(include_str!("data/lifting_surface/avl.json")).unwrap();
+    let avl: Value = serde_json::from_str(include_str!("data/lifting_surface/avl.json")).unwrap();
     let mut worst = [0.0f64; 5];
     println!("wing | M | C_Lα ours/AVL | H₀ ours/AVL | m_w ours/AVL | z_q ours/AVL | m_q ours/AVL");
     for w in avl["wings"].as_array().unwrap() {
@@ -56,8 +55,17 @@ fn steady_derivatives_agree_with_avl() {
             }
         }
     }
-    println!("largest differences: C_Lα {:.2} %, H₀ {:.4}, m_w {:.4}, z_q {:.2} %, m_q {:.2} %",
-        100.0 * worst[0], worst[1], worst[2], 100.0 * worst[3], 100.0 * worst[4]);
-    assert!(worst[0] < 0.005 && worst[3] < 0.005 && worst[4] < 0.012, "{worst:?}");
+    println!(
+        "largest differences: C_Lα {:.2} %, H₀ {:.4}, m_w {:.4}, z_q {:.2} %, m_q {:.2} %",
+        100.0 * worst[0],
+        worst[1],
+        worst[2],
+        100.0 * worst[3],
+        100.0 * worst[4]
+    );
+    assert!(
+        worst[0] < 0.005 && worst[3] < 0.005 && worst[4] < 0.012,
+        "{worst:?}"
+    );
     assert!(worst[1] < 0.004 && worst[2] < 0.01, "{worst:?}");
 }

@@ -53,8 +53,10 @@
 //! M = 1 the Prandtl–Glauert stretching needs ever more chordwise boxes
 //! and linear theory itself fails (the note: "invalid near M₁ = 1.0").
 //! At frequency the lattice needs boxes short against the wavelength,
-//! Δx·ω/V ≲ 0.5 (Rodden's rule of thumb); the default lattice meets it for
-//! ω̄ up to about 5.
+//! Δx·ω/V ≲ 0.5, and strips narrower than V/ω: the default lattice meets
+//! both for ω̄ ≲ 2 on the note's wings. Below ω̄ ≈ 0.1 the harmonic α̇
+//! derivatives carry Desmarais' approximation error (up to 1 %): ask for
+//! ω̄ = 0 for quasi-steady values, which are exact.
 
 mod derivatives;
 pub mod doublet_line;
