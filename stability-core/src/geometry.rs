@@ -265,3 +265,183 @@ mod tests {
         ));
     }
 }
+
+/// Why a trapezoid is not a wing.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum TrapezoidError {
+    #[error("the {0} must be a positive finite length, not {1}")]
+    Length(&'static str, f64),
+    #[error("the tip chord must be a finite length ≥ 0 (0: a pointed tip), not {0}")]
+    TipChord(f64),
+    #[error("the leading-edge sweep must lie strictly between −90° and 90°, not {0}°")]
+    Sweep(f64),
+}
+
+/// A straight-tapered trapezoidal wing of any sweep, taper and aspect ratio:
+/// root chord c_r on the centre line with its leading edge at the origin,
+/// tip chord c_t = λc_r at semi-span s, leading edge swept by Λ; the trailing
+/// edge's sweep follows, tan Λ_TE = tan Λ − (c_r − c_t)/s. A [`Planform`]
+/// (unswept trailing edge, 0 ≤ λ < 1) is the special case
+/// `Trapezoid::from(&planform)`; a rectangle has Λ = 0, λ = 1.
+///
+/// With x aft from the apex and y outboard, the chord is
+/// c(y) = c_r(1 − (1 − λ)y/s) and the leading edge x(y) = y tan Λ, so:
+/// S = s(c_r + c_t); b = 2s; A = b²/S; the M.A.C.
+/// c̄ = (2/S)∫₀ˢ c² dy = (2/3)c_r(1 + λ + λ²)/(1 + λ) at
+/// ȳ = (2/S)∫₀ˢ yc dy = (s/3)(1 + 2λ)/(1 + λ), its leading edge at
+/// x̄ = ȳ tan Λ — the integrals of §2.2 for a general trapezoid; for a
+/// `Planform` they are §2.2's printed forms (`tests/geometry.rs` checks that
+/// the two agree and that both match a numerical integration).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Trapezoid {
+    /// Root chord c_r.
+    pub root_chord: f64,
+    /// Tip chord c_t (0: a pointed tip).
+    pub tip_chord: f64,
+    /// Semi-span s.
+    pub semi_span: f64,
+    /// Leading-edge sweep Λ (rad), positive swept back.
+    pub sweep_le: f64,
+}
+
+impl Trapezoid {
+    /// A trapezoid from its root and tip chords, semi-span and leading-edge
+    /// sweep (radians).
+    pub fn new(
+        root_chord: f64,
+        tip_chord: f64,
+        semi_span: f64,
+        sweep_le: f64,
+    ) -> Result<Trapezoid, TrapezoidError> {
+        if !(root_chord.is_finite() && root_chord > 0.0) {
+            return Err(TrapezoidError::Length("root chord", root_chord));
+        }
+        if !(tip_chord.is_finite() && tip_chord >= 0.0) {
+            return Err(TrapezoidError::TipChord(tip_chord));
+        }
+        if !(semi_span.is_finite() && semi_span > 0.0) {
+            return Err(TrapezoidError::Length("semi-span", semi_span));
+        }
+        if sweep_le.is_nan() || sweep_le.abs() >= PI / 2.0 {
+            return Err(TrapezoidError::Sweep(sweep_le.to_degrees()));
+        }
+        Ok(Trapezoid {
+            root_chord,
+            tip_chord,
+            semi_span,
+            sweep_le,
+        })
+    }
+
+    /// The trapezoid of aspect ratio `aspect_ratio`, taper λ and
+    /// leading-edge sweep (radians) with the given root chord:
+    /// s = A c_r (1 + λ)/4.
+    pub fn from_aspect_ratio(
+        aspect_ratio: f64,
+        taper: f64,
+        sweep_le: f64,
+        root_chord: f64,
+    ) -> Result<Trapezoid, TrapezoidError> {
+        if !(aspect_ratio.is_finite() && aspect_ratio > 0.0) {
+            return Err(TrapezoidError::Length("aspect ratio", aspect_ratio));
+        }
+        Trapezoid::new(
+            root_chord,
+            taper * root_chord,
+            aspect_ratio * root_chord * (1.0 + taper) / 4.0,
+            sweep_le,
+        )
+    }
+
+    /// An unswept rectangle of chord `chord` and aspect ratio `aspect_ratio`.
+    pub fn rectangle(aspect_ratio: f64, chord: f64) -> Result<Trapezoid, TrapezoidError> {
+        Trapezoid::from_aspect_ratio(aspect_ratio, 1.0, 0.0, chord)
+    }
+
+    /// Taper ratio λ = c_t/c_r.
+    pub fn taper(&self) -> f64 {
+        self.tip_chord / self.root_chord
+    }
+
+    /// Span b = 2s.
+    pub fn span(&self) -> f64 {
+        2.0 * self.semi_span
+    }
+
+    /// Area S = s(c_r + c_t).
+    pub fn area(&self) -> f64 {
+        self.semi_span * (self.root_chord + self.tip_chord)
+    }
+
+    /// Aspect ratio A = b²/S.
+    pub fn aspect_ratio(&self) -> f64 {
+        self.span() * self.span() / self.area()
+    }
+
+    /// The local chord c(y), 0 ≤ y ≤ s.
+    pub fn chord_at(&self, y: f64) -> f64 {
+        self.root_chord + (self.tip_chord - self.root_chord) * y / self.semi_span
+    }
+
+    /// The leading edge's x (aft of the apex) at station y.
+    pub fn leading_edge_at(&self, y: f64) -> f64 {
+        y * self.sweep_le.tan()
+    }
+
+    /// Mean aerodynamic chord c̄ = (2/3)c_r(1 + λ + λ²)/(1 + λ).
+    pub fn mac(&self) -> f64 {
+        let l = self.taper();
+        2.0 / 3.0 * self.root_chord * (1.0 + l + l * l) / (1.0 + l)
+    }
+
+    /// The reference chord of the derivatives: the M.A.C., as for
+    /// [`Planform::reference_chord`].
+    pub fn reference_chord(&self) -> f64 {
+        self.mac()
+    }
+
+    /// ȳ: spanwise station of the M.A.C., (s/3)(1 + 2λ)/(1 + λ).
+    pub fn y_mac(&self) -> f64 {
+        let l = self.taper();
+        self.semi_span / 3.0 * (1.0 + 2.0 * l) / (1.0 + l)
+    }
+
+    /// x̄: leading edge of the M.A.C. aft of the apex, ȳ tan Λ.
+    pub fn x_mac(&self) -> f64 {
+        self.leading_edge_at(self.y_mac())
+    }
+
+    /// Sweep of the line through fraction `f` of the local chord
+    /// (0: leading edge, ¼: quarter chord, 1: trailing edge):
+    /// tan Λ_f = tan Λ − f(c_r − c_t)/s.
+    pub fn sweep_at(&self, f: f64) -> f64 {
+        (self.sweep_le.tan() - f * (self.root_chord - self.tip_chord) / self.semi_span).atan()
+    }
+
+    /// Trailing-edge sweep Λ_TE.
+    pub fn sweep_te(&self) -> f64 {
+        self.sweep_at(1.0)
+    }
+
+    /// The affine wing of the Prandtl–Glauert (Göthert) rule: spans scaled
+    /// by β, chords kept, so that tan Λ′ = tan Λ/β and A′ = βA.
+    pub fn affine(&self, beta: f64) -> Result<Trapezoid, TrapezoidError> {
+        Trapezoid::new(
+            self.root_chord,
+            self.tip_chord,
+            beta * self.semi_span,
+            (self.sweep_le.tan() / beta).atan(),
+        )
+    }
+}
+
+impl From<&Planform> for Trapezoid {
+    fn from(p: &Planform) -> Trapezoid {
+        Trapezoid {
+            root_chord: p.root_chord,
+            tip_chord: p.tip_chord(),
+            semi_span: p.semi_span(),
+            sweep_le: p.sweep_le,
+        }
+    }
+}

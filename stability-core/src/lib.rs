@@ -38,6 +38,7 @@ pub mod display;
 pub mod examples;
 pub mod geometry;
 pub mod json;
+pub mod lifting_surface;
 pub mod modes;
 pub mod notation;
 pub mod quartic;

@@ -1,0 +1,66 @@
+//! The doublet lattice, one planform (the note's 60° delta) at one Mach
+//! number: the harmonic solve (M = 0.5, ω̄ = 0.5) and the quasi-steady one
+//! (M = 0.5, ω̄ = 0), every derivative included, at the default lattice and
+//! at the next coarser and denser ones (all extrapolated as the default is:
+//! 8×12, 12×16 (default), 16×24 boxes per strip × strips); and
+//! `Solution::derivatives`, what a sweep calls per design point.
+//!
+//! `cargo bench -p stability-core --bench lifting_surface`
+
+use divan::{AllocProfiler, Bencher, black_box};
+use stability_core::geometry::{Planform, Size, Trapezoid};
+use stability_core::lifting_surface::{Lattice, LatticeSpec, Solution};
+
+#[global_allocator]
+static ALLOC: AllocProfiler = AllocProfiler::system();
+
+fn main() {
+    divan::main();
+}
+
+const LATTICES: [&str; 3] = ["coarser 8x12", "default 12x16", "denser 16x24"];
+
+fn lattice(name: &str) -> Lattice {
+    let p = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();
+    let wing = Trapezoid::from(&p);
+    let (chordwise, spanwise) = match name {
+        "coarser 8x12" => (8, 12),
+        "default 12x16" => (12, 16),
+        _ => (16, 24),
+    };
+    let spec = LatticeSpec {
+        chordwise,
+        spanwise,
+        ..LatticeSpec::for_wing(&wing)
+    };
+    assert!(name != "default 12x16" || spec == LatticeSpec::for_wing(&wing));
+    Lattice::new(&wing, spec).unwrap()
+}
+
+fn all_derivatives(s: &Solution) -> f64 {
+    let d = s.derivatives(0.25, 0.01).unwrap();
+    d.lift_slope + d.aerodynamic_centre + d.z_w + d.m_w + d.z_wdot + d.m_wdot + d.z_q + d.m_q
+}
+
+#[divan::bench(args = LATTICES, sample_count = 20)]
+fn harmonic(bencher: Bencher, name: &str) {
+    let l = lattice(name);
+    bencher.bench_local(|| all_derivatives(&black_box(&l).solve(0.5, black_box(0.5)).unwrap()));
+}
+
+#[divan::bench(args = LATTICES, sample_count = 20)]
+fn quasi_steady(bencher: Bencher, name: &str) {
+    let l = lattice(name);
+    bencher.bench_local(|| all_derivatives(&black_box(&l).solve(0.5, black_box(0.0)).unwrap()));
+}
+
+/// One solution's derivatives about one c.g.: a sweep's cost per point.
+#[divan::bench]
+fn derivatives_per_point(bencher: Bencher) {
+    let s = lattice("coarser 8x12").solve(0.5, 0.5).unwrap();
+    let mut h = 0.0;
+    bencher.bench_local(|| {
+        h += 1e-6;
+        black_box(&s).derivatives(black_box(h), 0.01).unwrap()
+    });
+}

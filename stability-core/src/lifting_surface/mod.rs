@@ -1,0 +1,132 @@
+//! Lifting-surface theory for a flat wing in harmonic pitching and plunging
+//! motion at subsonic speeds: the doublet-lattice method, giving the
+//! stiffness pair (lift slope, aerodynamic centre) and the damping
+//! derivatives of §7 in the report's notation, for any straight-tapered
+//! wing ([`Trapezoid`], which a [`crate::geometry::Planform`] converts to).
+//!
+//! The note bases its subsonic damping on lifting-surface theory
+//! (Multhopp–Garner, Lehrian's vortex lattice, §7); this module is that
+//! theory in its modern form:
+//!
+//! - E. Albano and W.P. Rodden, "A doublet-lattice method for calculating
+//!   lift distributions on oscillating surfaces in subsonic flows",
+//!   AIAA J. 7(2), 1969, pp. 279–285: boxes with a pressure doublet line at
+//!   the quarter chord and a collocation point at three-quarters;
+//! - the steady part from horseshoe vortices (a vortex lattice) with the
+//!   Prandtl–Glauert factor, plus the oscillatory increment of the kernel
+//!   (M.T. Landahl, AIAA J. 5(5), 1967) integrated across each line by the
+//!   quartic approximation of W.P. Rodden, P.F. Taylor and S.C. McIntosh,
+//!   "Further refinement of the subsonic doublet-lattice method",
+//!   J. Aircraft 35(5), 1998, pp. 720–727;
+//! - the kernel's integral I₁ by R.N. Desmarais' approximation (AIAA Paper
+//!   82-0687, 1982; default) or I.E. Laschka's (1963).
+//!
+//! Symmetric motions only: the half wing and the mirror image of each box.
+//!
+//! # Use
+//! ```
+//! use stability_core::geometry::{Planform, Size, Trapezoid};
+//! use stability_core::lifting_surface::{Lattice, LatticeSpec};
+//! let delta = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();
+//! let wing = Trapezoid::from(&delta);
+//! let lattice = Lattice::new(&wing, LatticeSpec::for_wing(&wing)).unwrap();
+//! let solution = lattice.solve(0.5, 0.0).unwrap(); // M = 0.5, quasi-steady
+//! for h in [0.0, 0.25, 0.5] {
+//!     let d = solution.derivatives(h, 0.01).unwrap(); // C_D = 0.01
+//!     assert!(d.m_q < 0.0 && d.z_w < 0.0);
+//! }
+//! ```
+//! A sweep over c.g., μ₁ and i_B solves once per (planform, Mach, ω̄) and
+//! calls [`Solution::derivatives`] for each point (allocation-free, a few
+//! dozen flops); a frequency iteration calls [`Lattice::solve`] with each
+//! new ω̄ on the same lattice.
+//!
+//! # Notation
+//! The report's (§3): forces on ½ρSV, moments with a further c̄ (the
+//! M.A.C.), rates per qc̄/V and α̇c̄/V, ω̄ = ωc̄/V, h the c.g. aft of the
+//! M.A.C.'s leading edge in M.A.C.; z = −lift, m nose-up.
+//!
+//! # Limits
+//! Linear, inviscid, thin, flat wing: no thickness, camber, separation or
+//! leading-edge vortex (the lift of a slender delta at incidence is
+//! underestimated once its vortices form). Subsonic, 0 ≤ M < 1; towards
+//! M = 1 the Prandtl–Glauert stretching needs ever more chordwise boxes
+//! and linear theory itself fails (the note: "invalid near M₁ = 1.0").
+//! At frequency the lattice needs boxes short against the wavelength,
+//! Δx·ω/V ≲ 0.5, and strips narrower than V/ω: the default lattice meets
+//! both for ω̄ ≲ 2 on the note's wings. Below ω̄ ≈ 0.1 the harmonic α̇
+//! derivatives carry Desmarais' approximation error (up to 1 %): ask for
+//! ω̄ = 0 for quasi-steady values, which are exact.
+
+mod derivatives;
+pub mod doublet_line;
+pub mod figures;
+pub mod kernel;
+mod lattice;
+mod solve;
+
+pub use crate::geometry::Trapezoid;
+pub use derivatives::LiftingSurfaceDerivatives;
+pub use doublet_line::LineRule;
+pub use kernel::I1Approximation;
+pub use lattice::{Box, Extrapolation, Lattice, LatticeSpec, Spacing};
+use serde::Serialize;
+
+/// Below this ω̄ [`Lattice::solve`] returns the quasi-steady limit.
+pub const OMEGA_BAR_QUASI_STEADY: f64 = 1e-6;
+
+/// Why the lattice cannot be built or solved.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum LiftingSurfaceError {
+    #[error(
+        "the doublet lattice is a subsonic theory: it needs 0 ≤ M < 1, not M = {0} (use the supersonic or transonic theories above)"
+    )]
+    Mach(f64),
+    #[error("the frequency parameter ω̄ = ωc̄/V must be finite and ≥ 0 (0: quasi-steady), not {0}")]
+    Frequency(f64),
+    #[error(
+        "a lattice needs at least one strip and a number of chordwise boxes that is a positive multiple of {multiple} (4 for Richardson's extrapolation), not {chordwise} × {spanwise}"
+    )]
+    Lattice {
+        chordwise: usize,
+        spanwise: usize,
+        multiple: usize,
+    },
+    #[error("a lattice of {boxes} boxes on the half wing is more than the {max} this solver takes")]
+    TooManyBoxes { boxes: usize, max: usize },
+    #[error("the lattice's normalwash matrix is singular at M = {mach}, ω̄ = {omega_bar}")]
+    Singular { mach: f64, omega_bar: f64 },
+    #[error("the lattice's solution at M = {mach}, ω̄ = {omega_bar} is not finite")]
+    NotFinite { mach: f64, omega_bar: f64 },
+    #[error("{what} must be a finite number, not {value}")]
+    NonFinite { what: &'static str, value: f64 },
+    #[error("{0}")]
+    Planform(String),
+}
+
+/// One solve of the lattice: the wing's response to incidence and to pitch
+/// rate at one Mach number and ω̄, with moments about the M.A.C.'s leading
+/// edge (h = 0). Everything else follows by axis transfer
+/// ([`Solution::derivatives`]).
+///
+/// With the incidence response C_L = α₀(ℓ_α + iω̄ℓ_α̇), C_m = α₀(μ_α + iω̄μ_α̇)
+/// and the unit-rate response (normalwash (x − x̄)/c̄) C_L = ℓ_q + i…,
+/// C_m = μ_q + i…:
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Solution {
+    pub mach: f64,
+    /// ω̄ (0: the quasi-steady limit).
+    pub omega_bar: f64,
+    /// ℓ_α: in-phase lift per unit incidence, C_Lα(ω̄).
+    pub lift_alpha: f64,
+    /// μ_α: in-phase moment about h = 0 per unit incidence.
+    pub moment_alpha: f64,
+    /// ℓ_α̇: quadrature lift per unit incidence, divided by ω̄ (per α̇c̄/V).
+    pub lift_alphadot: f64,
+    /// μ_α̇: quadrature moment (h = 0) per unit incidence, divided by ω̄.
+    pub moment_alphadot: f64,
+    /// ℓ_q: in-phase lift per unit rate (per qc̄/V, axis at h = 0).
+    pub lift_q: f64,
+    /// μ_q: in-phase moment (h = 0) per unit rate.
+    pub moment_q: f64,
+}

@@ -1,0 +1,51 @@
+//! `Solution::derivatives` — what a sweep over c.g., μ₁ and i_B calls once
+//! per design point after one solve — allocates nothing: a counting global
+//! allocator sees no allocation while it runs. (One test, so that no other
+//! test's allocations run beside it.)
+
+use stability_core::geometry::Trapezoid;
+use stability_core::lifting_surface::{Lattice, LatticeSpec, Spacing};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::hint::black_box;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+// SAFETY: forwards to the system allocator, counting calls.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        // SAFETY: same contract as the caller's.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: same contract as the caller's.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+#[test]
+fn derivatives_from_a_solution_do_not_allocate() {
+    let wing = Trapezoid::from_aspect_ratio(2.3, 0.0, 60f64.to_radians(), 1.0).unwrap();
+    let solution = Lattice::new(&wing, LatticeSpec::new(4, 6, Spacing::Auto))
+        .unwrap()
+        .solve(0.5, 0.3)
+        .unwrap();
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    let mut acc = 0.0;
+    for i in 0..10_000 {
+        let h = -0.2 + 1e-4 * i as f64;
+        let d = black_box(&solution)
+            .derivatives(black_box(h), 0.01)
+            .unwrap();
+        acc += d.m_q + d.z_wdot + d.m_w;
+    }
+    assert_eq!(ALLOCATIONS.load(Ordering::SeqCst) - before, 0);
+    assert!(acc.is_finite());
+}
