@@ -2,10 +2,11 @@
 //! condition → derivatives (§5–7) → quartic (§4) → modes → criteria (§8–9).
 
 use crate::Failure;
-use crate::cmd::quartic::{analysis_json, analysis_table};
-use crate::config;
-use crate::diag::InputError;
+use crate::cmd::quartic::analysis_json;
+use crate::config::{self, limits};
+use crate::diag::{InputError, num};
 use crate::fmt::sig;
+use crate::page::analysis_page;
 use serde_json::{Value, json};
 use stability_core::Derivatives;
 use stability_core::case::{CaseResult, DampingModel, evaluate};
@@ -14,30 +15,35 @@ use stability_core::criteria::Margins;
 /// Overrides of the config from the command line.
 #[derive(Debug, Default, Clone)]
 pub struct Overrides {
-    pub damping: Option<String>,
+    pub damping: Option<DampingModel>,
     pub mach: Option<f64>,
     pub cg: Option<f64>,
 }
 
-pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
+/// The config with the command line's overrides applied, each within its
+/// range.
+fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
     let mut cfg = config::read(path)?;
-    let bad = |m: String| Failure::Input(InputError::file(path, m));
-    if let Some(d) = &o.damping {
-        cfg.case.damping = DampingModel::parse(d).map_err(|e| bad(format!("--damping: {e}")))?;
+    let bad =
+        |flag: &str, m: String| Failure::Input(InputError::file(path, format!("{flag}: {m}")));
+    if let Some(d) = o.damping {
+        cfg.case.damping = d;
+        cfg.overridden_by("[model] damping", format!("--damping {}", d.name()));
     }
     if let Some(m) = o.mach {
-        if !(m.is_finite() && m > 0.0) {
-            return Err(bad(format!("--mach must be a positive number, not {m}")));
-        }
-        cfg.case.mach = m;
+        cfg.case.mach = limits::MACH.check(m).map_err(|e| bad("--mach", e))?;
+        cfg.overridden_by("[flight] mach", format!("--mach {}", num(m)));
     }
     if let Some(h) = o.cg {
-        if !h.is_finite() {
-            return Err(bad(format!("--cg must be a finite number, not {h}")));
-        }
-        cfg.case.h = h;
+        cfg.case.h = limits::CG.check(h).map_err(|e| bad("--cg", e))?;
+        cfg.overridden_by("[flight] cg", format!("--cg {}", num(h)));
     }
-    let r = evaluate(&cfg.case).map_err(|e| bad(e.to_string()))?;
+    Ok(cfg)
+}
+
+pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
+    let cfg = overridden(path, o)?;
+    let r = evaluate(&cfg.case).map_err(|e| cfg.explain(&e))?;
     for w in &r.warnings {
         eprintln!("warning: {w}");
     }
@@ -183,7 +189,7 @@ pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
         let _ = writeln!(s, "{}", line.trim_end());
     }
     let _ = writeln!(s);
-    s.push_str(&analysis_table(
+    s.push_str(&analysis_page(
         "The stability quartic (eqs 4–6):",
         &r.analysis,
         None,

@@ -4,11 +4,11 @@
 
 use crate::Failure;
 use crate::diag::InputError;
-use crate::fmt::sig;
 use crate::input::{self, DerivativeFile};
+use crate::page::analysis_page;
 use serde_json::{Value, json};
 use stability_core::analysis::Analysis;
-use stability_core::criteria::{Category, Verdict, phugoid_level, short_period_level};
+use stability_core::criteria::{Category, phugoid_level, short_period_level};
 use stability_core::modes::Mode;
 
 pub fn run(file: &str, json: bool) -> Result<(), Failure> {
@@ -141,12 +141,8 @@ pub fn to_json(input: &DerivativeFile, a: &Analysis) -> Value {
     Value::Object(map)
 }
 
-fn cell(v: Option<f64>) -> String {
-    v.map_or("—".to_string(), |x| sig(x, 4))
-}
-
 pub fn table(input: &DerivativeFile, a: &Analysis) -> String {
-    analysis_table(
+    analysis_page(
         &format!(
             "Stability quartic of {} (eqs 4–6; the errata of docs/errata.md applied)",
             input.path
@@ -154,188 +150,4 @@ pub fn table(input: &DerivativeFile, a: &Analysis) -> String {
         a,
         input.dimensional.map(|d| d.tau()),
     )
-}
-
-/// The §8 verdict in words, with the cycles to half amplitude behind it.
-fn verdict_text(a: &Analysis) -> String {
-    let sp = a.modes.short_period();
-    let cycles = sp.and_then(|m| m.cycles_to_half);
-    match (a.verdict, sp, cycles) {
-        (Verdict::Meets, Some(_), Some(c)) => {
-            format!("met: {} cycles to half amplitude", sig(c, 3))
-        }
-        (Verdict::Meets, _, _) => "met: the short period is aperiodic and decays".into(),
-        (Verdict::Fails, Some(_), Some(c)) => {
-            format!("NOT MET: {} cycles to half amplitude", sig(c, 3))
-        }
-        (Verdict::Fails, _, _) => "NOT MET: the short period is neutral (it never halves)".into(),
-        (Verdict::Divergent, Some(_), _) => "NOT MET: the short period is divergent".into(),
-        (Verdict::Divergent, None, _) => {
-            "NOT MET: the short period is aperiodic and one of its roots grows".into()
-        }
-    }
-}
-
-/// The analysis as a readable page, under `title`.
-pub fn analysis_table(title: &str, a: &Analysis, tau: Option<f64>) -> String {
-    use std::fmt::Write;
-    let mut s = String::new();
-    let q = &a.quartic;
-    let _ = writeln!(s, "{title}");
-    let _ = writeln!(
-        s,
-        "  A λ⁴ + B λ³ + C λ² + D λ + E = 0,  λ in units of 1/τ, τ = m/(½ρSV)"
-    );
-    for (name, v) in ["A", "B", "C", "D", "E"].iter().zip(q.to_array()) {
-        let _ = writeln!(s, "  {name} = {:>14}", sig(v, 7));
-    }
-    let _ = writeln!(
-        s,
-        "\nRouth (§4): R = BCD − AD² − B²E = {}: {}",
-        sig(a.routh.discriminant, 6),
-        if a.routh.stable {
-            "stable (A…E and R all of one sign)"
-        } else {
-            "UNSTABLE"
-        }
-    );
-    if let Some(t) = tau {
-        let _ = writeln!(s, "τ = {} s", sig(t, 5));
-    }
-    let _ = writeln!(
-        s,
-        "\nModes (times in τ{}):",
-        if tau.is_some() {
-            "; seconds in brackets"
-        } else {
-            ""
-        }
-    );
-    let mut rows: Vec<[String; 8]> = vec![[
-        "mode".into(),
-        "root (1/τ)".into(),
-        "period".into(),
-        "t½ / t×2".into(),
-        "cycles ½".into(),
-        "ζ".into(),
-        "ωₙ (1/τ)".into(),
-        "ω̄".into(),
-    ]];
-    for m in a.modes.iter() {
-        let root = if m.im > 0.0 {
-            format!("{} ± {}i", sig(m.re, 5), sig(m.im, 5))
-        } else {
-            sig(m.re, 5)
-        };
-        let (t, tag) = match (m.time_to_half, m.time_to_double) {
-            (Some(t), _) => (Some(t), ""),
-            (None, Some(t)) => (Some(t), " ×2"),
-            _ => (None, ""),
-        };
-        let with_s = |x: Option<f64>| match (x, tau) {
-            (Some(v), Some(tau)) => format!("{} ({} s)", sig(v, 4), sig(v * tau, 3)),
-            _ => cell(x),
-        };
-        let name = match m.origin {
-            Some(o) if m.name.as_str() == "aperiodic" => format!(
-                "aperiodic ({})",
-                match o {
-                    stability_core::modes::Origin::ShortPeriod => "sp",
-                    stability_core::modes::Origin::Phugoid => "ph",
-                    stability_core::modes::Origin::Unknown => "?",
-                }
-            ),
-            _ => m.name.as_str().replace('_', " "),
-        };
-        rows.push([
-            name,
-            root,
-            with_s(m.period),
-            format!("{}{tag}", with_s(t)),
-            cell(m.cycles_to_half.or(m.cycles_to_double.map(|c| -c))),
-            cell(m.damping_ratio),
-            sig(m.natural_frequency, 4),
-            cell(m.frequency_parameter),
-        ]);
-    }
-    let widths: Vec<usize> = (0..8)
-        .map(|k| rows.iter().map(|r| r[k].chars().count()).max().unwrap_or(0))
-        .collect();
-    for r in &rows {
-        let mut line = String::from(" ");
-        for (k, cellv) in r.iter().enumerate() {
-            let pad = widths[k] - cellv.chars().count();
-            if k == 0 {
-                line.push_str(&format!(" {cellv}{}", " ".repeat(pad)));
-            } else {
-                line.push_str(&format!("  {}{cellv}", " ".repeat(pad)));
-            }
-        }
-        let _ = writeln!(s, "{line}");
-    }
-    if let Some(c) = &a.classical {
-        let _ = writeln!(
-            s,
-            "\nThe report's eq (7): short period {} ± {}i (error {}%), phugoid {} ± {}i (error {}%); refined by successive approximation in {} iterations{}",
-            sig(c.short_period.0, 5),
-            sig(c.short_period.1, 5),
-            sig(100.0 * c.short_period_error, 3),
-            sig(c.phugoid.0, 5),
-            sig(c.phugoid.1, 5),
-            sig(100.0 * c.phugoid_error, 3),
-            c.refinement_iterations,
-            if c.refinement_converged {
-                ""
-            } else {
-                " (not converged)"
-            }
-        );
-    }
-    let sp = &a.short_period_approximation;
-    let ds = &a.damping_standard;
-    let _ = writeln!(
-        s,
-        "\nShort-period approximation (§8–9: x_u, z_ẇ/μ₁, z_q/μ₁ neglected): B ≈ {}, C ≈ {}, root ≈ {} ± {}i, cycles to ½ ≈ {} (report's 0.2206√C/B: {})",
-        sig(sp.b, 5),
-        sig(sp.c, 5),
-        sig(sp.re, 5),
-        sig(sp.im, 5),
-        cell(sp.cycles_to_half),
-        cell(sp.cycles_to_half_report)
-    );
-    let verdict = verdict_text(a);
-    let _ = writeln!(
-        s,
-        "Damping standard (§8: half amplitude within one cycle): {verdict}"
-    );
-    let _ = writeln!(
-        s,
-        "  eq (41): m_θ̇ = {}, m_θ̇max = {}, Δm_θ̇ = {} (exact second-order limit: {})",
-        sig(ds.m_thetadot, 5),
-        cell(ds.m_thetadot_max),
-        cell(ds.margin),
-        cell(ds.margin_exact)
-    );
-    if let Some(z) = a.modes.short_period().and_then(|m| m.damping_ratio) {
-        let _ = writeln!(
-            s,
-            "MIL-F-8785C short period, ζ = {}: Category A {}, B {}, C {}",
-            sig(z, 3),
-            short_period_level(z, Category::A).as_str(),
-            short_period_level(z, Category::B).as_str(),
-            short_period_level(z, Category::C).as_str()
-        );
-    }
-    if let Some(m) = a.modes.phugoid()
-        && let Some(z) = m.damping_ratio
-    {
-        let t2 = tau.and_then(|t| m.time_to_double.map(|x| x * t));
-        let _ = writeln!(
-            s,
-            "MIL-F-8785C phugoid, ζ = {}: {}",
-            sig(z, 3),
-            phugoid_level(z, t2).as_str()
-        );
-    }
-    s
 }
