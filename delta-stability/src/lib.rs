@@ -11,6 +11,7 @@ pub mod input;
 pub mod output;
 pub mod page;
 pub mod plot;
+pub mod report;
 
 /// Why a command failed; each kind has its own exit status.
 #[derive(Debug, thiserror::Error)]

@@ -108,7 +108,7 @@ pub fn remove_stale(dir: &Path) -> usize {
             .modified()
             .ok()
             .and_then(|m| now.duration_since(m).ok());
-        if !unchanged.is_some_and(|d| d >= after) {
+        if unchanged.is_none_or(|d| d < after) {
             continue;
         }
         let gone = if meta.is_dir() {
@@ -200,6 +200,11 @@ impl AtomicDir {
             tmp,
             target: target.to_path_buf(),
         })
+    }
+
+    /// The temporary directory being filled.
+    pub fn path(&self) -> &Path {
+        self.tmp.path()
     }
 
     /// Writes the file `name` (a relative path) into the directory.

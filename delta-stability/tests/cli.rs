@@ -438,6 +438,7 @@ fn report_writes_the_figures_summary_and_page() {
     let shown = std::fs::read_to_string(root().join("docs/figures/fig33.csv")).unwrap();
     let cells = |t: &str| -> Vec<String> {
         t.lines()
+            .filter(|l| !l.starts_with('#'))
             .flat_map(|l| l.split(',').map(String::from).collect::<Vec<_>>())
             .collect()
     };
@@ -451,8 +452,130 @@ fn report_writes_the_figures_summary_and_page() {
             });
     assert!(
         same,
-        "docs/figures/fig33.* are stale: cargo run --release -p delta-stability -- report && cp report/fig33.svg report/fig33.csv docs/figures/"
+        "docs/figures/fig33.* are stale: run `cargo xtask regen` (it writes delta_stability::report::readme_figures())"
     );
+    // and the library function the xtask writes them from renders exactly
+    // the report's files
+    for (rel, contents) in delta_stability::report::readme_figures().unwrap() {
+        let name = std::path::Path::new(&rel).file_name().unwrap();
+        let written = std::fs::read_to_string(dir.path().join(name)).unwrap();
+        assert!(written == contents, "{rel} differs from the report's");
+    }
+    // the conclusions are generated from what was computed: the 45° delta's
+    // intervals in summary.json appear, as numbers, in its row
+    let fails = &summary["delta_45"]["fails_one_cycle_mach"][0];
+    let interval = format!(
+        "{:.2}–{:.2}",
+        fails[0].as_f64().unwrap(),
+        fails[1].as_f64().unwrap()
+    );
+    let row = html
+        .split("<tr>")
+        .find(|r| r.contains("0.97 &lt; M &lt; 1.5"))
+        .unwrap();
+    assert!(
+        row.contains(&interval) && row.contains("class=\""),
+        "{interval}: {row}"
+    );
+}
+
+/// The relative links (`href`, `src`) of an HTML page.
+fn links(html: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for attr in ["href=\"", "src=\""] {
+        for part in html.split(attr).skip(1) {
+            let target = part.split('"').next().unwrap_or("");
+            if !target.starts_with('#') && !target.contains("://") {
+                out.push(target.to_string());
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn the_report_page_links_work_wherever_out_points() {
+    let dir = Scratch::new();
+    let out = dir.path().join("somewhere/else/report");
+    run_ok(&["report", "--out", path(&out)]);
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let targets = links(&html);
+    assert!(targets.len() > 70, "{targets:?}");
+    for t in targets {
+        assert!(
+            out.join(&t).is_file(),
+            "index.html links to {t}, which is not in the report"
+        );
+        assert!(!t.starts_with(".."), "{t} leaves the report");
+    }
+}
+
+#[test]
+fn a_killed_report_leaves_the_previous_report_whole() {
+    let dir = Scratch::new();
+    let out = dir.path().join("report");
+    run_ok(&["report", "--out", path(&out)]);
+    let previous = "<!doctype html><p>the previous report</p>";
+    std::fs::write(out.join("index.html"), previous).unwrap();
+    let listing = |p: &std::path::Path| -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(p)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .collect();
+        v.sort();
+        v
+    };
+    let before = listing(&out);
+    // kill a run once its temporary directory holds some of its figures
+    let mut killed = false;
+    for _ in 0..5 {
+        let mut child = bin()
+            .args(["report", "--out", path(&out)])
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("run");
+        let started = wait_for(|| {
+            entries_named(dir.path(), ".delta-stability-")
+                .iter()
+                .any(|d| std::fs::read_dir(d).is_ok_and(|mut e| e.next().is_some()))
+        });
+        child.kill().unwrap();
+        let status = child.wait().unwrap();
+        if started && !status.success() {
+            killed = true;
+            break;
+        }
+        std::fs::write(out.join("index.html"), previous).unwrap();
+    }
+    assert!(killed, "no run was killed while writing");
+    assert_eq!(
+        std::fs::read_to_string(out.join("index.html")).unwrap(),
+        previous
+    );
+    assert_eq!(listing(&out), before, "a mix of old and new");
+    let stray = entries_named(dir.path(), ".delta-stability-");
+    assert_eq!(stray.len(), 1, "{stray:?}");
+    // a later run removes the dead run's directory and replaces the report
+    age(&stray[0], 3600);
+    run_ok(&["report", "--out", path(&out)]);
+    assert_ne!(
+        std::fs::read_to_string(out.join("index.html")).unwrap(),
+        previous
+    );
+    assert!(entries_named(dir.path(), ".delta-stability-").is_empty());
+}
+
+#[test]
+fn the_report_replaces_only_a_report() {
+    let dir = Scratch::new();
+    let notes = dir.write("notes.txt", "mine");
+    let err = stderr(&run_err(&["report", "--out", path(dir.path())], 3));
+    assert!(
+        err.contains("will not replace") && err.contains("notes.txt"),
+        "{err}"
+    );
+    assert_eq!(std::fs::read_to_string(notes).unwrap(), "mine");
 }
 
 /// The eigenvalues of the state matrix of eqs (2) (independent of the

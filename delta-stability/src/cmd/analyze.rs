@@ -9,8 +9,9 @@ use crate::fmt::sig;
 use crate::page::analysis_page;
 use serde_json::{Value, json};
 use stability_core::Derivatives;
-use stability_core::case::{CaseResult, DampingModel, evaluate};
+use stability_core::case::{CaseResult, DampingModel, FrequencyIteration, evaluate};
 use stability_core::criteria::Margins;
+use std::fmt::Write;
 
 /// Overrides of the config from the command line.
 #[derive(Debug, Default, Clone)]
@@ -117,11 +118,30 @@ pub fn to_json(cfg: &config::Config, r: &CaseResult) -> Value {
 }
 
 pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
-    use std::fmt::Write;
-    let c = &cfg.case;
-    let p = &c.planform;
     let mut s = String::new();
     let _ = writeln!(s, "Design point of {}", cfg.path);
+    design_point(&mut s, cfg, r);
+    derivatives(&mut s, &r.derivatives);
+    s.push_str(&analysis_page(
+        "The stability quartic (eqs 4–6):",
+        &r.analysis,
+        None,
+    ));
+    let lift_slope = r.coefficients.lift_slope.value;
+    let m = Margins::of(&r.analysis.quartic, &r.derivatives, lift_slope);
+    let _ = writeln!(
+        s,
+        "Margins (§9): static K_n = {} (eq 42), manoeuvre H_m = {}",
+        m.static_margin.map_or("—".into(), |x| sig(x, 4)),
+        m.manoeuvre_margin.map_or("—".into(), |x| sig(x, 4))
+    );
+    s
+}
+
+/// The planform, flight condition, coefficients and damping theory.
+fn design_point(s: &mut String, cfg: &config::Config, r: &CaseResult) {
+    let c = &cfg.case;
+    let p = &c.planform;
     let _ = writeln!(
         s,
         "  planform (§2.2): Λ = {}°, taper {}, A = {}, M.A.C. = {}, S = {}",
@@ -160,26 +180,35 @@ pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
         sig(r.damping.derivatives.m_thetadot(), 4)
     );
     if let Some(f) = &r.frequency {
-        let _ = writeln!(
-            s,
-            "  frequency parameter: ω̄ {} → {} in {} iterations{}; m_θ̇ {} → {}, cycles to ½ {} → {}",
-            sig(f.initial, 4),
-            sig(f.converged, 4),
-            f.iterations,
-            if f.converged_ok {
-                ""
-            } else {
-                " (not converged)"
-            },
-            sig(f.m_thetadot_initial, 4),
-            sig(f.m_thetadot_converged, 4),
-            f.cycles_to_half_initial.map_or("—".into(), |x| sig(x, 4)),
-            f.cycles_to_half_converged.map_or("—".into(), |x| sig(x, 4)),
-        );
+        frequency(s, f);
     }
+}
+
+/// The frequency iteration of a frequency-dependent theory.
+fn frequency(s: &mut String, f: &FrequencyIteration) {
+    let _ = writeln!(
+        s,
+        "  frequency parameter: ω̄ {} → {} in {} iterations{}; m_θ̇ {} → {}, cycles to ½ {} → {}",
+        sig(f.initial, 4),
+        sig(f.converged, 4),
+        f.iterations,
+        if f.converged_ok {
+            ""
+        } else {
+            " (not converged)"
+        },
+        sig(f.m_thetadot_initial, 4),
+        sig(f.m_thetadot_converged, 4),
+        f.cycles_to_half_initial.map_or("—".into(), |x| sig(x, 4)),
+        f.cycles_to_half_converged.map_or("—".into(), |x| sig(x, 4)),
+    );
+}
+
+/// The fifteen quartic inputs, five to a line.
+fn derivatives(s: &mut String, d: &Derivatives) {
     let _ = writeln!(s, "\nDerivatives (report notation, §3):");
     let names = Derivatives::QUARTIC_INPUTS;
-    let values = r.derivatives.quartic_input_values();
+    let values = d.quartic_input_values();
     for row in 0..3 {
         let mut line = String::from(" ");
         for col in 0..5 {
@@ -189,17 +218,4 @@ pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
         let _ = writeln!(s, "{}", line.trim_end());
     }
     let _ = writeln!(s);
-    s.push_str(&analysis_page(
-        "The stability quartic (eqs 4–6):",
-        &r.analysis,
-        None,
-    ));
-    let m = Margins::of(&r.analysis.quartic, &r.derivatives, a.lift_slope.value);
-    let _ = writeln!(
-        s,
-        "Margins (§9): static K_n = {} (eq 42), manoeuvre H_m = {}",
-        m.static_margin.map_or("—".into(), |x| sig(x, 4)),
-        m.manoeuvre_margin.map_or("—".into(), |x| sig(x, 4))
-    );
-    s
 }
