@@ -352,12 +352,11 @@ fn messages_name_the_line_and_field_and_print_short_numbers() {
 fn a_misspelt_name_is_an_error_with_the_nearest_valid_one() {
     let dir = Scratch::new();
     let ex = example("boeing-747-american.toml");
+    let line = ex.lines().position(|l| l.starts_with("C_mq = ")).unwrap() + 1;
+    let misspelt =
+        format!(":{line}:1: [derivatives] C_mqq: unknown field `C_mqq`; did you mean `C_mq`?");
     for (from, to, expect) in [
-        (
-            "C_mq = -23.92",
-            "C_mqq = -23.92",
-            ":20:1: [derivatives] C_mqq: unknown field `C_mqq`; did you mean `C_mq`?",
-        ),
+        ("C_mq = -23.92", "C_mqq = -23.92", misspelt.as_str()),
         (
             "notation = \"american\"",
             "notaton = \"american\"",
