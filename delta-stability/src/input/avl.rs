@@ -81,7 +81,7 @@ fn st_error(shown: &str, text: &str, e: &AvlError) -> InputError {
         | AvlError::BadNumber { line, .. }
         | AvlError::NoStabilityAxes { line, .. } => *line,
         AvlError::Missing { last_line, .. } => *last_line,
-        AvlError::Empty => 0,
+        AvlError::Empty => 1,
     };
     let message = e.to_string();
     let message = message
