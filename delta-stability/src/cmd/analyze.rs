@@ -45,6 +45,14 @@ fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
 pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
     let cfg = overridden(path, o)?;
     let r = evaluate(&cfg.case).map_err(|e| cfg.explain(&e))?;
+    if !crate::cmd::quartic::is_finite(&r.analysis) {
+        return Err(cfg
+            .error_at(
+                "[flight]",
+                "the analysis overflows f64: no result can be written",
+            )
+            .into());
+    }
     for w in &r.warnings {
         eprintln!("warning: {w}");
     }

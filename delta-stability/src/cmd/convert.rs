@@ -55,13 +55,7 @@ fn converted(input: &DerivativeFile, to: Notation) -> Result<Values, InputError>
             num(v),
             input.report[i].map_or("—".into(), num)
         );
-        return Err(match &input.origins[i] {
-            Some(at) => InputError {
-                message,
-                ..at.clone()
-            },
-            None => InputError::file(&input.path, message),
-        });
+        return Err(input.error_at(i, message));
     }
     Ok(values)
 }

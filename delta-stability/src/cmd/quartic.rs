@@ -3,11 +3,10 @@
 //! test, the §8 damping standard and the MIL-F-8785C levels.
 
 use crate::Failure;
-use crate::diag::InputError;
-use crate::input::{self, DerivativeFile};
+use crate::input::{self, DerivativeFile, rows};
 use crate::page::analysis_page;
 use serde_json::{Value, json};
-use stability_core::analysis::Analysis;
+use stability_core::analysis::{Analysis, AnalysisError};
 use stability_core::criteria::{Category, phugoid_level, short_period_level};
 use stability_core::modes::Mode;
 
@@ -16,8 +15,17 @@ pub fn run(file: &str, json: bool) -> Result<(), Failure> {
     for w in &input.warnings {
         eprintln!("warning: {w}");
     }
-    let analysis =
-        Analysis::of(&input.derivatives).map_err(|e| InputError::file(file, e.to_string()))?;
+    let analysis = Analysis::of(&input.derivatives)
+        .map_err(|e| input.error_at(blame(&input, &e), e.to_string()))?;
+    if !is_finite(&analysis) {
+        let largest = largest_input(&input);
+        return Err(input
+            .error_at(
+                largest,
+                "the analysis overflows f64: no result can be written",
+            )
+            .into());
+    }
     if json {
         println!(
             "{}",
@@ -27,6 +35,38 @@ pub fn run(file: &str, json: bool) -> Result<(), Failure> {
         print!("{}", table(&input, &analysis));
     }
     Ok(())
+}
+
+/// Whether every number the analysis would print is finite (absent ones,
+/// such as an aperiodic mode's period, are `None`, not infinite).
+pub fn is_finite(a: &Analysis) -> bool {
+    a.quartic.to_array().iter().all(|v| v.is_finite())
+        && a.roots.iter().all(|z| z.re.is_finite() && z.im.is_finite())
+        && a.routh.discriminant.is_finite()
+        && a.modes.iter().all(|m| m.re.is_finite() && m.im.is_finite())
+}
+
+/// The quartic input of largest magnitude (the likeliest cause of an
+/// overflow).
+fn largest_input(input: &DerivativeFile) -> usize {
+    let mut best = (0.0, rows::QUARTIC[0]);
+    for i in rows::QUARTIC {
+        let v = input.report[i].map_or(0.0, f64::abs);
+        if v > best.0 {
+            best = (v, i);
+        }
+    }
+    best.1
+}
+
+/// The row an analysis error is about.
+fn blame(input: &DerivativeFile, e: &AnalysisError) -> usize {
+    match e {
+        AnalysisError::LeadingCoefficientZero(_) => rows::Z_WDOT,
+        AnalysisError::NonPositiveParameter { mu1, .. } if *mu1 <= 0.0 => rows::MU,
+        AnalysisError::NonPositiveParameter { .. } => rows::I_B,
+        _ => largest_input(input),
+    }
 }
 
 fn opt(v: Option<f64>) -> Value {

@@ -7,10 +7,10 @@ use crate::args::ResponseInput;
 use crate::diag::{InputError, num};
 use crate::files::write_error;
 use crate::fmt::sig;
-use crate::input::{self, DerivativeFile};
+use crate::input::{self, DerivativeFile, rows};
 use crate::output::atomic_write;
 use crate::plot::{Figure, Series};
-use stability_core::response::{Input, Sample, Simplifications, StateSpace, TwoDof};
+use stability_core::response::{Input, ResponseError, Sample, Simplifications, StateSpace, TwoDof};
 use std::fmt::Write;
 use std::path::Path;
 
@@ -94,7 +94,10 @@ fn respond(o: &Options, file: &DerivativeFile) -> Result<Response, InputError> {
         neglect_zq_zwdot: o.neglect_zq_zwdot,
         neglect_u: o.neglect_u,
     };
-    let ss = StateSpace::new(&file.derivatives, simp).map_err(|e| bad(e.to_string()))?;
+    let ss = StateSpace::new(&file.derivatives, simp).map_err(|e| match e {
+        ResponseError::SingularMass => file.error_at(rows::Z_WDOT, e.to_string()),
+        _ => bad(e.to_string()),
+    })?;
     let samples = ss
         .simulate(input, o.until, o.steps)
         .map_err(|e| bad(e.to_string()))?;

@@ -77,6 +77,20 @@ pub struct DerivativeFile {
     pub warnings: Vec<String>,
 }
 
+impl DerivativeFile {
+    /// An error about the value of `row`, where it was given (the file as
+    /// a whole when it was not given in it).
+    pub fn error_at(&self, row: usize, message: impl Into<String>) -> InputError {
+        match self.origins.get(row).and_then(Option::as_ref) {
+            Some(at) => InputError {
+                message: message.into(),
+                ..at.clone()
+            },
+            None => InputError::file(&self.path, message),
+        }
+    }
+}
+
 /// Where a value was written: its span and field.
 #[derive(Debug, Clone)]
 pub struct Origin {

@@ -54,6 +54,7 @@ pub const FLIGHT: [usize; 4] = indices(FLIGHT_ROWS);
 
 pub const X_WDOT: usize = index("x_wdot");
 pub const X_Q: usize = index("x_q");
+pub const Z_WDOT: usize = index("z_wdot");
 pub const C_L: usize = index("c_l");
 pub const MU: usize = index("mu");
 pub const I_B: usize = index("i_b");
