@@ -47,7 +47,10 @@ impl ValueEnum for DampingArg {
                 "the default: slender-wing theory (37) through M = 1, blended into (36) by M = 1.2"
                     .to_string()
             }
-            DampingModel::Theory(t) => format!("{}: eqs {}", theory_meaning(t), t.equations()),
+            DampingModel::Theory(t) => {
+                let eqs = if t.equations().contains('–') { "eqs" } else { "eq" };
+                format!("{}: {eqs} {}", theory_meaning(t), t.equations())
+            }
         };
         Some(PossibleValue::new(self.0.name()).help(help))
     }

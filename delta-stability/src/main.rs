@@ -177,7 +177,12 @@ enum Command {
     /// Writes into DIR: figNN.svg and figNN.csv under the note's figure
     /// numbers, summary.json (intervals of Mach where each wing's short
     /// period diverges or takes more than one cycle to halve, and the largest
-    /// μ₁ meeting the standard at each Mach number) and index.html.
+    /// μ₁ meeting the standard at each Mach number) and index.html (the
+    /// note's conclusions judged against ours, with the numbers; its links
+    /// work wherever DIR is). The files are written into a temporary
+    /// directory beside DIR that replaces DIR only when complete, so a killed
+    /// run leaves the previous report whole; DIR, if it exists, must be an
+    /// earlier report or empty.
     Report {
         /// The output directory.
         #[arg(long, default_value = "report")]
@@ -188,7 +193,8 @@ enum Command {
     /// Each range is A:B:STEP (inclusive) or a single value; those not given
     /// come from CONFIG (see `analyze --help`). Points are evaluated in
     /// parallel; OUT (.csv or .json) is written atomically — a killed run
-    /// leaves no half-written file. Columns: the grid values, stable (Routh),
+    /// leaves no half-written file (its temporary file beside OUT,
+    /// .delta-stability-PID-XXXXXX, is removed by a later run once stale). Columns: the grid values, stable (Routh),
     /// verdict (the one-cycle standard: meets, fails, divergent), the short
     /// period's root, cycles to half amplitude, damping ratio and ω̄, the
     /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
