@@ -19,7 +19,10 @@ for w',
     theta' = q
 Its eigenvalues are the roots of the quartic (4)-(6).
 
-Usage: python sweep_baseline.py POINTS.csv MAX_POINTWISE > result.json
+The design points are those of benches/sweep-grid.json (the grid is
+defined there once); the point-by-point routes take its first `pointwise`.
+
+Usage: python sweep_baseline.py GRID.json POINTS.csv > result.json
 """
 
 import csv
@@ -112,7 +115,9 @@ def worst(ours, theirs):
 
 
 def main():
-    path, max_pointwise = sys.argv[1], int(sys.argv[2])
+    grid_path, path = sys.argv[1], sys.argv[2]
+    with open(grid_path) as f:
+        max_pointwise = int(json.load(f)["pointwise"])
     d, ours = read(path)
     n = len(d)
     k = min(n, max_pointwise)

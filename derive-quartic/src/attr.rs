@@ -92,14 +92,7 @@ impl<'a> Target<'a> {
                 ));
             }
         }
-        let mut it = errors.into_iter();
-        match it.next() {
-            None => Ok(()),
-            Some(mut first) => {
-                it.for_each(|e| first.combine(e));
-                Err(first)
-            }
-        }
+        formula_engine::diag::combine(errors).map_or(Ok(()), Err)
     }
 }
 
@@ -107,6 +100,19 @@ impl<'a> Target<'a> {
 pub struct Spec {
     pub file: SourceFile,
     pub absolute: PathBuf,
+}
+
+impl Spec {
+    /// The generated items, with what makes the build re-run when the spec
+    /// changes.
+    pub fn rerun_when_changed(&self, items: proc_macro2::TokenStream) -> proc_macro2::TokenStream {
+        let path = self.absolute.to_string_lossy().into_owned();
+        quote::quote! {
+            // Re-run this expansion when the spec changes.
+            const _: &[u8] = include_bytes!(#path);
+            #items
+        }
+    }
 }
 
 /// Read the spec at `lit`, relative to the invoking crate's manifest

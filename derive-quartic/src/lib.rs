@@ -24,8 +24,8 @@
 //! file, line and entry. The build re-runs when the spec changes.
 //!
 //! The work is split as in serde_derive: [`attr`] parses the derive input,
-//! `formula_engine` validates the spec into a model, and
-//! `formula_engine::expand` writes the code.
+//! `formula_engine::quartic` validates the spec into a model, and
+//! `formula_engine::quartic::expand` writes the code.
 
 use proc_macro::TokenStream;
 use syn::{DeriveInput, parse_macro_input};
@@ -36,33 +36,19 @@ mod attr;
 #[proc_macro_derive(Quartic, attributes(quartic))]
 pub fn derive_quartic(input: TokenStream) -> TokenStream {
     let input = parse_macro_input!(input as DeriveInput);
-    match expand(&input) {
-        Ok(ts) => ts.into(),
-        Err(e) => e.to_compile_error().into(),
-    }
+    expand_quartic(&input)
+        .unwrap_or_else(syn::Error::into_compile_error)
+        .into()
 }
 
-fn expand(input: &DeriveInput) -> syn::Result<proc_macro2::TokenStream> {
+fn expand_quartic(input: &DeriveInput) -> syn::Result<proc_macro2::TokenStream> {
     let target = attr::Target::parse(input)?;
     let spec = attr::read_spec(&target.spec)?;
-    let model = formula_engine::QuarticModel::load(&spec.file).map_err(|diags| {
-        let mut errors = diags
-            .iter()
-            .map(|d| syn::Error::new_spanned(&target.spec, d.to_string()));
-        let mut first = errors
-            .next()
-            .unwrap_or_else(|| syn::Error::new_spanned(&target.spec, "invalid spec"));
-        errors.for_each(|e| first.combine(e));
-        first
-    })?;
+    let model = formula_engine::QuarticModel::load(&spec.file)
+        .map_err(|errors| errors.to_syn_error(&target.spec))?;
     target.check_fields(&model)?;
-    let body = formula_engine::expand::quartic_impl(&model, &input.ident);
-    let path = spec.absolute.to_string_lossy().into_owned();
-    Ok(quote::quote! {
-        // Re-run this expansion when the spec changes.
-        const _: &[u8] = include_bytes!(#path);
-        #body
-    })
+    let body = formula_engine::quartic::expand::quartic_impl(&model, &input.ident);
+    Ok(spec.rerun_when_changed(body))
 }
 
 /// `notations!("path/to/notation.toml")`: the conversion tables and
@@ -72,27 +58,15 @@ fn expand(input: &DeriveInput) -> syn::Result<proc_macro2::TokenStream> {
 #[proc_macro]
 pub fn notations(input: TokenStream) -> TokenStream {
     let lit = parse_macro_input!(input as syn::LitStr);
-    let expanded = (|| -> syn::Result<proc_macro2::TokenStream> {
-        let spec = attr::read_spec(&lit)?;
-        let model = formula_engine::notation::NotationModel::load(&spec.file).map_err(|diags| {
-            let mut errors = diags
-                .iter()
-                .map(|d| syn::Error::new_spanned(&lit, d.to_string()));
-            let mut first = errors
-                .next()
-                .unwrap_or_else(|| syn::Error::new_spanned(&lit, "invalid spec"));
-            errors.for_each(|e| first.combine(e));
-            first
-        })?;
-        let body = formula_engine::expand::notation_items(&model);
-        let path = spec.absolute.to_string_lossy().into_owned();
-        Ok(quote::quote! {
-            const _: &[u8] = include_bytes!(#path);
-            #body
-        })
-    })();
-    match expanded {
-        Ok(ts) => ts.into(),
-        Err(e) => e.to_compile_error().into(),
-    }
+    expand_notations(&lit)
+        .unwrap_or_else(syn::Error::into_compile_error)
+        .into()
+}
+
+fn expand_notations(lit: &syn::LitStr) -> syn::Result<proc_macro2::TokenStream> {
+    let spec = attr::read_spec(lit)?;
+    let model = formula_engine::NotationModel::load(&spec.file)
+        .map_err(|errors| errors.to_syn_error(lit))?;
+    let body = formula_engine::notation::expand::notation_items(&model);
+    Ok(spec.rerun_when_changed(body))
 }

@@ -3,7 +3,7 @@
 //! the damping standard (§8).
 
 use crate::classical::{first_approximation, refine, relative_errors};
-use crate::criteria::{DampingStandard, Routh, ShortPeriodApproximation, Verdict};
+use crate::criteria::{DampingStandard, FlyingQualities, Routh, ShortPeriodApproximation, Verdict};
 use crate::modes::Modes;
 use crate::roots::{RootsError, solve_quartic};
 use crate::{Derivatives, Quartic};
@@ -103,6 +103,11 @@ impl Analysis {
     /// `None`): the lean path of a sweep.
     pub fn without_classical(d: &Derivatives) -> Result<Analysis, AnalysisError> {
         Analysis::with(d, false)
+    }
+
+    /// The MIL-F-8785C levels of the modes, with τ (s) when known.
+    pub fn flying_qualities(&self, tau: Option<f64>) -> FlyingQualities {
+        FlyingQualities::of(&self.modes, tau)
     }
 
     fn with(d: &Derivatives, classical: bool) -> Result<Analysis, AnalysisError> {

@@ -18,8 +18,8 @@ use crate::stiffness::{Stiffness, stiffness};
 use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
 
-/// Which damping derivatives a case uses.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+/// Which damping derivatives a case uses; serializes as its name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum DampingModel {
     /// One theory, wherever it is asked for (errors outside its domain).
     Theory(Theory),
@@ -32,6 +32,12 @@ pub enum DampingModel {
     /// the leading edge turns sonic (where (36) no longer applies), (36)'s
     /// values at the sonic leading edge, with a warning.
     Faired,
+}
+
+impl Serialize for DampingModel {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
 }
 
 impl DampingModel {

@@ -50,8 +50,10 @@ impl Routh {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ShortPeriodApproximation {
     /// −z_w − m_θ̇/i_B.
+    #[serde(rename = "B")]
     pub b: f64,
     /// (m_q z_w − μ₁ m_w)/i_B.
+    #[serde(rename = "C")]
     pub c: f64,
     /// The root r + is of λ² + bλ + c (s ≥ 0; s = 0 when the pair is real).
     pub re: f64,
@@ -280,7 +282,7 @@ pub enum Category {
 
 /// A flying-qualities level: 1 (adequate), 2 (adequate with increased
 /// workload), 3 (controllable), or worse than 3.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Level {
     One,
     Two,
@@ -296,6 +298,13 @@ impl Level {
             Level::Three => "Level 3",
             Level::WorseThanThree => "worse than Level 3",
         }
+    }
+}
+
+impl Serialize for Level {
+    /// As [`Level::as_str`]: `"Level 1"` … `"worse than Level 3"`.
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
     }
 }
 
@@ -332,6 +341,62 @@ pub fn phugoid_level(zeta: f64, time_to_double_s: Option<f64>) -> Level {
         Level::Three
     } else {
         Level::WorseThanThree
+    }
+}
+
+/// The short period's MIL-F-8785C levels in the three flight-phase
+/// categories.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ShortPeriodLevels {
+    pub damping_ratio: f64,
+    #[serde(rename = "A")]
+    pub a: Level,
+    #[serde(rename = "B")]
+    pub b: Level,
+    #[serde(rename = "C")]
+    pub c: Level,
+}
+
+/// The phugoid's MIL-F-8785C level.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PhugoidLevel {
+    pub damping_ratio: f64,
+    pub level: Level,
+}
+
+/// The MIL-F-8785C levels of a set of modes: the short period's (when it
+/// oscillates) and the phugoid's (when it oscillates; a divergent one needs
+/// τ in seconds for its time to double).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FlyingQualities {
+    pub short_period: Option<ShortPeriodLevels>,
+    pub phugoid: Option<PhugoidLevel>,
+}
+
+impl FlyingQualities {
+    /// The levels of `modes`, with τ in seconds when known.
+    pub fn of(modes: &Modes, tau: Option<f64>) -> FlyingQualities {
+        let short_period =
+            modes
+                .short_period()
+                .and_then(|m| m.damping_ratio)
+                .map(|z| ShortPeriodLevels {
+                    damping_ratio: z,
+                    a: short_period_level(z, Category::A),
+                    b: short_period_level(z, Category::B),
+                    c: short_period_level(z, Category::C),
+                });
+        let phugoid = modes.phugoid().and_then(|m| {
+            let t2 = tau.and_then(|t| m.time_to_double.map(|x| x * t));
+            m.damping_ratio.map(|z| PhugoidLevel {
+                damping_ratio: z,
+                level: phugoid_level(z, t2),
+            })
+        });
+        FlyingQualities {
+            short_period,
+            phugoid,
+        }
     }
 }
 

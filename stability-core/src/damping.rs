@@ -21,8 +21,9 @@ use std::f64::consts::PI;
 use std::fmt;
 use std::str::FromStr;
 
-/// A theory of the damping derivatives.
+/// A theory of the damping derivatives; serializes as its name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Theory {
     Garrick,
     GarnerTaper,

@@ -7,12 +7,15 @@
 
 pub mod aero;
 pub mod analysis;
+pub mod atmosphere;
 pub mod case;
 pub mod classical;
 pub mod criteria;
 pub mod damping;
 pub mod derivatives;
+pub mod examples;
 pub mod geometry;
+pub mod json;
 pub mod modes;
 pub mod notation;
 pub mod quartic;
@@ -21,6 +24,7 @@ pub mod roots;
 pub mod sensitivity;
 pub mod stiffness;
 pub mod study;
+pub mod supersonic;
 pub mod warnings;
 
 pub use derivatives::Derivatives;

@@ -9,16 +9,23 @@
 
 use crate::Derivatives;
 use num_complex::Complex64;
+use serde::Serialize;
 
 pub mod reference;
 
 /// The coefficients of the stability quartic, eq (5); λ in units of 1/τ.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// Serializes as `{"A": …, "B": …, "C": …, "D": …, "E": …}`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Quartic {
+    #[serde(rename = "A")]
     pub a: f64,
+    #[serde(rename = "B")]
     pub b: f64,
+    #[serde(rename = "C")]
     pub c: f64,
+    #[serde(rename = "D")]
     pub d: f64,
+    #[serde(rename = "E")]
     pub e: f64,
 }
 

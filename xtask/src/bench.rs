@@ -9,27 +9,17 @@
 //! do only the roots and the short period's cycles to half amplitude. A
 //! Python virtual environment with numpy and python-control is made under
 //! target/bench/ on first use.
+//!
+//! The grid is defined once, in benches/sweep-grid.json, which the baseline
+//! script reads too; the number of points is counted from the CSV the sweep
+//! writes, not restated.
 
-use std::path::Path;
+use serde_json::Value;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
-/// The grid: the 60° delta's base point, Mach 0.5–2.0 × c.g. 0.20–0.30 ×
-/// μ₁ 50–500 × sweep 45°–75°.
-const GRID: [&str; 9] = [
-    "examples/delta-60.toml",
-    "--mach",
-    "0.5:2:0.0015",
-    "--cg",
-    "0.2:0.3:0.005",
-    "--mu1",
-    "50:500:50",
-    "--sweep",
-    "45:75:7.5",
-];
-const POINTS: usize = 1001 * 21 * 10 * 5;
-/// Points the point-by-point baselines take (they are slow).
-const POINTWISE: usize = 20_000;
+const GRID_FILE: &str = "benches/sweep-grid.json";
 
 fn run(cmd: &mut Command) -> Result<std::process::Output, String> {
     let out = cmd
@@ -45,9 +35,33 @@ fn run(cmd: &mut Command) -> Result<std::process::Output, String> {
     Ok(out)
 }
 
-pub fn bench(root: &Path) -> Result<(), String> {
-    let dir = root.join("target/bench");
-    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+/// The `delta-stability sweep` arguments of benches/sweep-grid.json: the
+/// base file, then `--axis range` for each axis.
+fn grid_args(grid: &Value) -> Result<Vec<String>, String> {
+    let bad = || format!("{GRID_FILE}: expected `base` and `axes` = [[name, range], …]");
+    let mut args = vec![grid["base"].as_str().ok_or_else(bad)?.to_string()];
+    for axis in grid["axes"].as_array().ok_or_else(bad)? {
+        match axis.as_array().map(Vec::as_slice) {
+            Some([Value::String(name), Value::String(range)]) => {
+                args.push(format!("--{name}"));
+                args.push(range.clone());
+            }
+            _ => return Err(bad()),
+        }
+    }
+    Ok(args)
+}
+
+fn read_grid(root: &Path) -> Result<Value, String> {
+    let text = std::fs::read_to_string(root.join(GRID_FILE))
+        .map_err(|e| format!("cannot read {GRID_FILE}: {e}"))?;
+    serde_json::from_str(&text).map_err(|e| format!("{GRID_FILE}: {e}"))
+}
+
+/// The release binary, and the Python of target/bench/venv (made on first
+/// use, with numpy and python-control).
+fn setup(root: &Path, dir: &Path) -> Result<(PathBuf, PathBuf), String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     eprintln!("building delta-stability (release)…");
     run(Command::new(env!("CARGO")).current_dir(root).args([
         "build",
@@ -56,7 +70,6 @@ pub fn bench(root: &Path) -> Result<(), String> {
         "-p",
         "delta-stability",
     ]))?;
-    let bin = root.join("target/release/delta-stability");
     let python = dir.join("venv/bin/python");
     if !python.exists() {
         eprintln!("making target/bench/venv with numpy and python-control…");
@@ -65,83 +78,119 @@ pub fn bench(root: &Path) -> Result<(), String> {
             .arg(dir.join("venv")))?;
         run(Command::new(&python).args(["-m", "pip", "install", "-q", "numpy", "control"]))?;
     }
+    Ok((root.join("target/release/delta-stability"), python))
+}
 
-    let sweep = |extra: &[&str], out: &str| -> Result<f64, String> {
-        // each run starts with no dirty pages of the last one to flush
-        let _ = std::fs::remove_file(dir.join(out));
-        let _ = Command::new("sync").status();
-        let t = Instant::now();
-        run(Command::new(&bin)
-            .current_dir(root)
-            .arg("sweep")
-            .args(GRID)
-            .args(extra)
-            .arg("-o")
-            .arg(dir.join(out)))?;
-        Ok(t.elapsed().as_secs_f64())
-    };
-    eprintln!("delta-stability sweep, {POINTS} design points, 3 runs…");
-    let mut ours: Vec<f64> = (0..3)
-        .map(|_| sweep(&[], "sweep.csv"))
+/// One timed `sweep` over the grid into `dir/out`, in seconds.
+fn timed_sweep(
+    root: &Path,
+    bin: &Path,
+    args: &[String],
+    extra: &[&str],
+    out: &Path,
+) -> Result<f64, String> {
+    // each run starts with no dirty pages of the last one to flush
+    let _ = std::fs::remove_file(out);
+    let _ = Command::new("sync").status();
+    let t = Instant::now();
+    run(Command::new(bin)
+        .current_dir(root)
+        .arg("sweep")
+        .args(args)
+        .args(extra)
+        .arg("-o")
+        .arg(out))?;
+    Ok(t.elapsed().as_secs_f64())
+}
+
+/// The design points a sweep wrote: its CSV's rows after the header.
+fn points_in(csv: &Path) -> Result<usize, String> {
+    let text = std::fs::read_to_string(csv).map_err(|e| format!("{}: {e}", csv.display()))?;
+    Ok(text.lines().count().saturating_sub(1))
+}
+
+/// Our runs: the median of three plain sweeps, and one with derivatives
+/// (the baselines' input). Seconds, and the number of points.
+struct Ours {
+    seconds: Vec<f64>,
+    with_derivatives: f64,
+    points: usize,
+}
+
+fn measure_ours(root: &Path, bin: &Path, args: &[String], dir: &Path) -> Result<Ours, String> {
+    eprintln!("delta-stability sweep over {GRID_FILE}, 3 runs…");
+    let mut seconds: Vec<f64> = (0..3)
+        .map(|_| timed_sweep(root, bin, args, &[], &dir.join("sweep.csv")))
         .collect::<Result<_, _>>()?;
-    ours.sort_by(f64::total_cmp);
-    let with_derivatives = sweep(&["--derivatives"], "sweep-derivatives.csv")?;
+    seconds.sort_by(f64::total_cmp);
+    let with_derivatives = timed_sweep(
+        root,
+        bin,
+        args,
+        &["--derivatives"],
+        &dir.join("sweep-derivatives.csv"),
+    )?;
+    Ok(Ours {
+        seconds,
+        with_derivatives,
+        points: points_in(&dir.join("sweep.csv"))?,
+    })
+}
 
-    eprintln!("python-control and numpy on the same points…");
-    let out = run(Command::new(&python)
-        .arg(root.join("benches/sweep_baseline.py"))
-        .arg(dir.join("sweep-derivatives.csv"))
-        .arg(POINTWISE.to_string()))?;
-    let base: serde_json::Value = serde_json::from_slice(&out.stdout)
-        .map_err(|e| format!("sweep_baseline.py printed no JSON: {e}"))?;
+/// The table's rows: (route, design points per second, points, worst
+/// relative difference of the short-period root from ours).
+fn rows(ours: &Ours, base: &Value) -> Vec<(&'static str, f64, usize, f64)> {
     let rate = |k: &str| base[k]["points_per_second"].as_f64().unwrap_or(f64::NAN);
-    let ours_rate = POINTS as f64 / ours[1];
-    let rows = [
+    let worst = |k: &str| {
+        base[k]["worst_relative_difference"]
+            .as_f64()
+            .unwrap_or(f64::NAN)
+    };
+    let count = |k: &str| base[k]["points"].as_u64().unwrap_or(0) as usize;
+    let n = ours.points;
+    vec![
         (
             "delta-stability sweep → CSV (median of 3)",
-            ours_rate,
-            POINTS,
+            n as f64 / ours.seconds[1],
+            n,
             f64::NAN,
         ),
         (
             "delta-stability sweep --derivatives → CSV",
-            POINTS as f64 / with_derivatives,
-            POINTS,
+            n as f64 / ours.with_derivatives,
+            n,
             f64::NAN,
         ),
         (
             "(a) python-control ss + damp, point by point",
             rate("python_control"),
-            POINTWISE,
-            base["python_control"]["worst_relative_difference"]
-                .as_f64()
-                .unwrap_or(f64::NAN),
+            count("python_control"),
+            worst("python_control"),
         ),
         (
             "(a') numpy eigvals, point by point",
             rate("numpy_pointwise"),
-            POINTWISE,
-            base["numpy_pointwise"]["worst_relative_difference"]
-                .as_f64()
-                .unwrap_or(f64::NAN),
+            count("numpy_pointwise"),
+            worst("numpy_pointwise"),
         ),
         (
             "(b) numpy batched eigvals",
             rate("numpy_batched"),
-            base["points"].as_u64().unwrap_or(0) as usize,
-            base["numpy_batched"]["worst_relative_difference"]
-                .as_f64()
-                .unwrap_or(f64::NAN),
+            count("numpy_batched"),
+            worst("numpy_batched"),
         ),
-    ];
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    ]
+}
+
+fn table(ours: &Ours, base: &Value, threads: usize) -> String {
+    let ours_rate = ours.points as f64 / ours.seconds[1];
     let mut table = format!(
         "Sweep throughput, {threads} cores; versions {}\n\n\
          | route | points | design points/s | ours ÷ route | short-period root vs ours (worst rel.) |\n\
          |---|---:|---:|---:|---:|\n",
         base["versions"]
     );
-    for (name, r, n, diff) in rows {
+    for (name, r, n, diff) in rows(ours, base) {
         let d = if diff.is_nan() {
             "—".to_string()
         } else {
@@ -152,23 +201,59 @@ pub fn bench(root: &Path) -> Result<(), String> {
             ours_rate / r
         ));
     }
+    table
+}
+
+pub fn bench(root: &Path) -> Result<(), String> {
+    let dir = root.join("target/bench");
+    let grid = read_grid(root)?;
+    let args = grid_args(&grid)?;
+    let (bin, python) = setup(root, &dir)?;
+    let ours = measure_ours(root, &bin, &args, &dir)?;
+
+    eprintln!("python-control and numpy on the same points…");
+    let out = run(Command::new(&python)
+        .arg(root.join("benches/sweep_baseline.py"))
+        .arg(root.join(GRID_FILE))
+        .arg(dir.join("sweep-derivatives.csv")))?;
+    let base: Value = serde_json::from_slice(&out.stdout)
+        .map_err(|e| format!("sweep_baseline.py printed no JSON: {e}"))?;
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let table = table(&ours, &base, threads);
     println!("{table}");
     let json = serde_json::json!({
         "threads": threads,
-        "grid": GRID,
-        "points": POINTS,
-        "ours_seconds": ours,
-        "ours_points_per_second": ours_rate,
-        "ours_with_derivatives_seconds": with_derivatives,
+        "grid": grid,
+        "sweep_arguments": args,
+        "points": ours.points,
+        "ours_seconds": ours.seconds,
+        "ours_points_per_second": ours.points as f64 / ours.seconds[1],
+        "ours_with_derivatives_seconds": ours.with_derivatives,
         "baselines": base,
     });
-    std::fs::write(
-        dir.join("sweep-throughput.json"),
+    let write = |name: &str, text: String| {
+        std::fs::write(dir.join(name), text).map_err(|e| format!("target/bench/{name}: {e}"))
+    };
+    write(
+        "sweep-throughput.json",
         serde_json::to_string_pretty(&json).unwrap_or_default(),
-    )
-    .map_err(|e| format!("target/bench/sweep-throughput.json: {e}"))?;
-    std::fs::write(dir.join("sweep-throughput.md"), table)
-        .map_err(|e| format!("target/bench/sweep-throughput.md: {e}"))?;
+    )?;
+    write("sweep-throughput.md", table)?;
     eprintln!("wrote target/bench/sweep-throughput.{{md,json}}");
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_grid_file_gives_the_sweep_its_arguments() {
+        let grid = read_grid(&crate::root()).unwrap_or_else(|e| panic!("{e}"));
+        let args = grid_args(&grid).unwrap_or_else(|e| panic!("{e}"));
+        assert!(crate::root().join(&args[0]).is_file(), "{}", args[0]);
+        let flags: Vec<&str> = args[1..].iter().step_by(2).map(String::as_str).collect();
+        assert_eq!(flags, ["--mach", "--cg", "--mu1", "--sweep"]);
+        assert!(grid["pointwise"].as_u64().is_some_and(|n| n > 0));
+    }
 }

@@ -45,11 +45,19 @@ pub enum Node {
     Sum(Vec<(bool, Node)>),
 }
 
+/// An input a program reads: a symbol of its table.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Input {
+    /// The symbol's id in the table the program was built over.
+    pub id: usize,
+    pub name: String,
+}
+
 /// A straight-line program: `let`s, then the outputs.
 #[derive(Clone, Debug)]
 pub struct Program {
     /// The inputs the program reads, in spec order.
-    pub inputs: Vec<String>,
+    pub inputs: Vec<Input>,
     pub lets: Vec<(String, Node)>,
     /// One expression per output (`Const(0)` for an output that is zero).
     pub outputs: Vec<(String, Node)>,
@@ -59,25 +67,54 @@ type Term = (BigRational, Vec<Atom>);
 
 /// Build the program that evaluates `outputs` (polynomials over `table`).
 pub fn program(table: &SymbolTable, outputs: &[(String, Poly)]) -> Program {
-    let mut terms: Vec<Vec<Term>> = outputs
-        .iter()
-        .map(|(_, p)| {
-            crate::render::ordered_terms(p, table)
-                .into_iter()
-                .map(|(m, c)| {
-                    let mut atoms = Vec::new();
-                    for (id, e) in m.factors() {
-                        let a = if e > 0 { Atom::Sym(id) } else { Atom::Inv(id) };
-                        atoms.extend(std::iter::repeat_n(a, e.unsigned_abs() as usize));
-                    }
-                    atoms.sort();
-                    (c.clone(), atoms)
-                })
-                .collect()
+    let mut terms: Vec<Vec<Term>> = outputs.iter().map(|(_, p)| atoms_of(p, table)).collect();
+    let temps = shared_products(&mut terms);
+    let temps = fold_single_uses(&mut terms, temps);
+    let names = Names::new(table, &terms, &temps);
+    let atom_node = |a: &Atom| names.node(a, table);
+    let mut lets: Vec<(String, Node)> = (names.inverses.iter())
+        .map(|(id, name)| (name.clone(), Node::Recip(table.get(*id).name.clone())))
+        .collect();
+    for (k, body) in temps.iter().enumerate() {
+        let product = Node::Mul(body.iter().map(atom_node).collect());
+        lets.push((names.temps[k].clone(), product));
+    }
+    let outputs = (outputs.iter().zip(terms))
+        .map(|((name, _), ts)| (name.clone(), horner(ts, &atom_node)))
+        .collect();
+    let inputs = (names.inputs.iter())
+        .map(|&id| Input {
+            id,
+            name: table.get(id).name.clone(),
         })
         .collect();
+    Program {
+        inputs,
+        lets,
+        outputs,
+    }
+}
 
-    // 2. Greedy pairwise CSE.
+/// The terms of `p` in display order, each as its coefficient and the
+/// sorted multiset of its factors.
+fn atoms_of(p: &Poly, table: &SymbolTable) -> Vec<Term> {
+    (crate::render::ordered_terms(p, table).into_iter())
+        .map(|(m, c)| {
+            let mut atoms = Vec::new();
+            for (id, e) in m.factors() {
+                let a = if e > 0 { Atom::Sym(id) } else { Atom::Inv(id) };
+                atoms.extend(std::iter::repeat_n(a, e.unsigned_abs() as usize));
+            }
+            atoms.sort();
+            (c.clone(), atoms)
+        })
+        .collect()
+}
+
+/// Step 2, greedy pairwise CSE: the most frequent pair of factors over all
+/// terms becomes a temporary, repeatedly, until no pair occurs twice. The
+/// temporaries' bodies, in order.
+fn shared_products(terms: &mut [Vec<Term>]) -> Vec<Vec<Atom>> {
     let mut temps: Vec<Vec<Atom>> = Vec::new();
     loop {
         let mut counts: BTreeMap<(Atom, Atom), usize> = BTreeMap::new();
@@ -112,40 +149,29 @@ pub fn program(table: &SymbolTable, outputs: &[(String, Poly)]) -> Program {
             }
         }
     }
+    temps
+}
 
-    // Fold temporaries used once back into their single user.
-    loop {
-        let mut uses = vec![0usize; temps.len()];
-        for atoms in terms.iter().flatten().map(|(_, a)| a).chain(temps.iter()) {
-            for a in atoms {
-                if let Atom::Tmp(k) = a {
-                    uses[*k] += 1;
-                }
+/// How often each temporary is used, by the terms and by other temporaries.
+fn uses(terms: &[Vec<Term>], temps: &[Vec<Atom>]) -> Vec<usize> {
+    let mut uses = vec![0usize; temps.len()];
+    for atoms in terms.iter().flatten().map(|(_, a)| a).chain(temps.iter()) {
+        for a in atoms {
+            if let Atom::Tmp(k) = a {
+                uses[*k] += 1;
             }
         }
+    }
+    uses
+}
+
+/// Fold temporaries used once back into their single user, then drop the
+/// unused ones and renumber.
+fn fold_single_uses(terms: &mut [Vec<Term>], mut temps: Vec<Vec<Atom>>) -> Vec<Vec<Atom>> {
+    loop {
+        let uses = uses(terms, &temps);
         let Some(k) = (0..temps.len()).rev().find(|&k| uses[k] == 1) else {
-            // Drop the unused ones (left behind by folding) and renumber.
-            let keep: Vec<usize> = (0..temps.len()).filter(|&k| uses[k] > 0).collect();
-            let renumber: BTreeMap<usize, usize> = keep
-                .iter()
-                .enumerate()
-                .map(|(new, &old)| (old, new))
-                .collect();
-            let fix = |atoms: &mut Vec<Atom>| {
-                for a in atoms.iter_mut() {
-                    if let Atom::Tmp(k) = a {
-                        *k = renumber[k];
-                    }
-                }
-                atoms.sort();
-            };
-            let mut kept: Vec<Vec<Atom>> = keep.iter().map(|&k| temps[k].clone()).collect();
-            kept.iter_mut().for_each(fix);
-            for (_, atoms) in terms.iter_mut().flatten() {
-                fix(atoms);
-            }
-            temps = kept;
-            break;
+            return renumber(terms, &temps, &uses);
         };
         let body = std::mem::take(&mut temps[k]);
         let splice = |atoms: &mut Vec<Atom>| {
@@ -170,42 +196,98 @@ pub fn program(table: &SymbolTable, outputs: &[(String, Poly)]) -> Program {
             }
         }
     }
+}
 
-    // Names.
-    let n = table.len();
-    let mut used_inputs = BTreeSet::new();
-    let mut used_inverses = BTreeSet::new();
-    let mut note = |a: &Atom| match a {
-        Atom::Sym(id) => {
-            used_inputs.insert(*id);
-        }
-        Atom::Inv(id) => {
-            used_inputs.insert(*id);
-            used_inverses.insert(*id);
-        }
-        Atom::Tmp(_) => {}
-    };
-    for atoms in terms.iter().flatten().map(|(_, a)| a).chain(temps.iter()) {
-        atoms.iter().for_each(&mut note);
-    }
-    let mut taken: BTreeSet<String> = table.symbols.iter().map(|s| s.name.clone()).collect();
-    let mut fresh = |wanted: String| {
-        let mut name = wanted.clone();
-        let mut k = 2;
-        while taken.contains(&name) {
-            name = format!("{wanted}_{k}");
-            k += 1;
-        }
-        taken.insert(name.clone());
-        name
-    };
-    let inv_names: BTreeMap<usize, String> = used_inverses
-        .iter()
-        .map(|&id| (id, fresh(format!("inv_{}", table.get(id).name))))
+/// The used temporaries, renumbered in order (the terms updated to match).
+fn renumber(terms: &mut [Vec<Term>], temps: &[Vec<Atom>], uses: &[usize]) -> Vec<Vec<Atom>> {
+    let keep: Vec<usize> = (0..temps.len()).filter(|&k| uses[k] > 0).collect();
+    let renumber: BTreeMap<usize, usize> = (keep.iter().enumerate())
+        .map(|(new, &old)| (old, new))
         .collect();
+    let fix = |atoms: &mut Vec<Atom>| {
+        for a in atoms.iter_mut() {
+            if let Atom::Tmp(k) = a {
+                *k = renumber[k];
+            }
+        }
+        atoms.sort();
+    };
+    let mut kept: Vec<Vec<Atom>> = keep.iter().map(|&k| temps[k].clone()).collect();
+    kept.iter_mut().for_each(fix);
+    for (_, atoms) in terms.iter_mut().flatten() {
+        fix(atoms);
+    }
+    kept
+}
+
+/// The names of a program: the inputs it reads, a `inv_x` per reciprocal,
+/// a readable name per temporary, none of them clashing with a symbol.
+struct Names {
+    inputs: BTreeSet<usize>,
+    inverses: BTreeMap<usize, String>,
+    temps: Vec<String>,
+}
+
+impl Names {
+    fn new(table: &SymbolTable, terms: &[Vec<Term>], temps: &[Vec<Atom>]) -> Names {
+        let mut inputs = BTreeSet::new();
+        let mut used_inverses = BTreeSet::new();
+        for atoms in terms.iter().flatten().map(|(_, a)| a).chain(temps.iter()) {
+            for a in atoms {
+                match a {
+                    Atom::Sym(id) => {
+                        inputs.insert(*id);
+                    }
+                    Atom::Inv(id) => {
+                        inputs.insert(*id);
+                        used_inverses.insert(*id);
+                    }
+                    Atom::Tmp(_) => {}
+                }
+            }
+        }
+        let mut taken: BTreeSet<String> = table.symbols.iter().map(|s| s.name.clone()).collect();
+        let mut fresh = |wanted: String| {
+            let mut name = wanted.clone();
+            let mut k = 2;
+            while taken.contains(&name) {
+                name = format!("{wanted}_{k}");
+                k += 1;
+            }
+            taken.insert(name.clone());
+            name
+        };
+        let inverses = (used_inverses.iter())
+            .map(|&id| (id, fresh(format!("inv_{}", table.get(id).name))))
+            .collect();
+        let temps = temp_names(table, temps, &mut fresh);
+        Names {
+            inputs,
+            inverses,
+            temps,
+        }
+    }
+
+    fn node(&self, a: &Atom, table: &SymbolTable) -> Node {
+        match a {
+            Atom::Sym(id) => Node::Var(table.get(*id).name.clone()),
+            Atom::Inv(id) => Node::Var(self.inverses[id].clone()),
+            Atom::Tmp(k) => Node::Var(self.temps[*k].clone()),
+        }
+    }
+}
+
+/// Each temporary named after the product it holds (`t{k}` when that is
+/// too long).
+fn temp_names(
+    table: &SymbolTable,
+    temps: &[Vec<Atom>],
+    fresh: &mut impl FnMut(String) -> String,
+) -> Vec<String> {
+    let n = table.len();
     // Exponents of each temporary over the input symbols, for its name.
     let mut temp_exps: Vec<Vec<i32>> = Vec::new();
-    let mut temp_names: Vec<String> = Vec::new();
+    let mut names: Vec<String> = Vec::new();
     for (k, body) in temps.iter().enumerate() {
         let mut e = vec![0i32; n];
         for a in body {
@@ -225,38 +307,10 @@ pub fn program(table: &SymbolTable, outputs: &[(String, Poly)]) -> Program {
         } else {
             name
         };
-        temp_names.push(fresh(name));
+        names.push(fresh(name));
         temp_exps.push(e);
     }
-    let atom_node = |a: &Atom| match a {
-        Atom::Sym(id) => Node::Var(table.get(*id).name.clone()),
-        Atom::Inv(id) => Node::Var(inv_names[id].clone()),
-        Atom::Tmp(k) => Node::Var(temp_names[*k].clone()),
-    };
-
-    let mut lets: Vec<(String, Node)> = inv_names
-        .iter()
-        .map(|(id, name)| (name.clone(), Node::Recip(table.get(*id).name.clone())))
-        .collect();
-    for (k, body) in temps.iter().enumerate() {
-        lets.push((
-            temp_names[k].clone(),
-            Node::Mul(body.iter().map(atom_node).collect()),
-        ));
-    }
-    let outputs = outputs
-        .iter()
-        .zip(terms)
-        .map(|((name, _), ts)| (name.clone(), horner(ts, &atom_node)))
-        .collect();
-    Program {
-        inputs: used_inputs
-            .iter()
-            .map(|&id| table.get(id).name.clone())
-            .collect(),
-        lets,
-        outputs,
-    }
+    names
 }
 
 /// Remove one `a` and one `b` from a sorted multiset; false if not both there.
@@ -391,27 +445,29 @@ fn horner_into(terms: Vec<Term>, atom_node: &impl Fn(&Atom) -> Node, out: &mut V
 
 // ------------------------------------------------------------------ emission
 
-fn ident(name: &str) -> Ident {
+pub(crate) fn ident(name: &str) -> Ident {
     Ident::new(name, Span::call_site())
 }
 
 /// An `f64` literal for a rational: exact decimals where the value is a
-/// dyadic fraction, `(p / q)` otherwise (folded by the compiler).
+/// dyadic fraction, `(p / q)` otherwise (folded by the compiler). A
+/// constant beyond the range of `f64` is a compile error, not a guess.
 fn constant(r: &BigRational) -> TokenStream {
     let dyadic = {
         let d = r.denom();
         let power_of_two = d.magnitude().count_ones() == 1;
         power_of_two && d.bits() <= 53 && r.numer().bits() <= 53
     };
-    if dyadic {
-        let v = r.to_f64().unwrap_or(0.0);
-        let lit = Literal::f64_unsuffixed(v);
-        quote!(#lit)
+    let finite = |x: Option<f64>| x.filter(|v| v.is_finite()).map(Literal::f64_unsuffixed);
+    let literals = if dyadic {
+        finite(r.to_f64()).map(|lit| quote!(#lit))
     } else {
-        let p = Literal::f64_unsuffixed(r.numer().to_f64().unwrap_or(0.0));
-        let q = Literal::f64_unsuffixed(r.denom().to_f64().unwrap_or(1.0));
-        quote!((#p / #q))
-    }
+        (finite(r.numer().to_f64()).zip(finite(r.denom().to_f64()))).map(|(p, q)| quote!((#p / #q)))
+    };
+    literals.unwrap_or_else(|| {
+        let message = format!("the constant {r} of a generated formula is beyond the range of f64");
+        quote!(compile_error!(#message))
+    })
 }
 
 /// Tokens of a node.
@@ -477,8 +533,8 @@ pub fn statements(
     output_name: impl Fn(&str) -> String,
 ) -> TokenStream {
     let mut ts = TokenStream::new();
-    for name in &program.inputs {
-        let i = ident(name);
+    for input in &program.inputs {
+        let i = ident(&input.name);
         ts.extend(quote!(let #i = #source.#i;));
     }
     for (name, node) in &program.lets {

@@ -1,87 +1,16 @@
 //! Diagnostics that point into a spec file: file, line, column and entry.
+//!
+//! After serde_derive's `Ctxt`: a [`Diagnostics`] collects problems through
+//! `&self`, so every validation function can report and carry on, and it
+//! cannot be dropped unchecked — it must be consumed by
+//! [`Diagnostics::check`] or [`Diagnostics::finish`], or it panics in
+//! `Drop` (a validation path that forgot its errors is a bug, not a silent
+//! success). The collected problems come out as [`SpecErrors`], which turn
+//! into one `syn::Error` in one place ([`SpecErrors::to_syn_error`]).
 
+use quote::ToTokens;
+use std::cell::RefCell;
 use std::fmt;
-use std::ops::Range;
-
-/// A spec file's text and the name it is shown by.
-#[derive(Clone, Debug)]
-pub struct SourceFile {
-    /// The path as the user wrote it (shown in messages).
-    pub name: String,
-    pub text: String,
-}
-
-impl SourceFile {
-    pub fn new(name: impl Into<String>, text: impl Into<String>) -> Self {
-        SourceFile {
-            name: name.into(),
-            text: text.into(),
-        }
-    }
-
-    /// 1-based line and column (in characters) of a byte offset.
-    pub fn position(&self, offset: usize) -> (usize, usize) {
-        let offset = offset.min(self.text.len());
-        let before = &self.text[..floor_char_boundary(&self.text, offset)];
-        let line = before.matches('\n').count() + 1;
-        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-        let column = before[line_start..].chars().count() + 1;
-        (line, column)
-    }
-
-    /// The text of a 1-based line, without its newline.
-    pub fn line_text(&self, line: usize) -> &str {
-        self.text.lines().nth(line.saturating_sub(1)).unwrap_or("")
-    }
-
-    /// A diagnostic at a byte offset.
-    pub fn at(
-        &self,
-        offset: usize,
-        entry: impl Into<String>,
-        message: impl Into<String>,
-    ) -> Diagnostic {
-        let (line, column) = self.position(offset);
-        Diagnostic {
-            file: self.name.clone(),
-            line,
-            column,
-            entry: entry.into(),
-            message: message.into(),
-            help: None,
-        }
-    }
-
-    /// A diagnostic at the start of a span.
-    pub fn at_span(
-        &self,
-        span: &Range<usize>,
-        entry: impl Into<String>,
-        message: impl Into<String>,
-    ) -> Diagnostic {
-        self.at(span.start, entry, message)
-    }
-
-    /// Byte offset of the first character inside a TOML string whose span
-    /// (quotes included) is `span`.
-    pub fn string_content_start(&self, span: &Range<usize>) -> usize {
-        let rest = self.text.get(span.start..).unwrap_or("");
-        if rest.starts_with("\"\"\"") || rest.starts_with("'''") {
-            span.start + 3
-        } else if rest.starts_with('"') || rest.starts_with('\'') {
-            span.start + 1
-        } else {
-            span.start
-        }
-    }
-}
-
-fn floor_char_boundary(s: &str, mut i: usize) -> usize {
-    while i > 0 && !s.is_char_boundary(i) {
-        i -= 1;
-    }
-    i
-}
 
 /// One problem found in a spec, located at a file, line and column, inside a
 /// named entry of the spec.
@@ -117,34 +46,109 @@ impl fmt::Display for Diagnostic {
     }
 }
 
-/// The problems found in one spec. A spec with any problem yields no model.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Diagnostics(pub Vec<Diagnostic>);
+/// The collector of one spec's problems (see the module documentation).
+#[derive(Debug)]
+pub struct Diagnostics {
+    /// `None` once consumed by `check` or `finish`.
+    list: RefCell<Option<Vec<Diagnostic>>>,
+}
+
+impl Default for Diagnostics {
+    fn default() -> Self {
+        Self::new()
+    }
+}
 
 impl Diagnostics {
-    pub fn push(&mut self, d: Diagnostic) {
-        self.0.push(d);
+    pub fn new() -> Self {
+        Diagnostics {
+            list: RefCell::new(Some(Vec::new())),
+        }
     }
 
-    pub fn is_empty(&self) -> bool {
-        self.0.is_empty()
+    /// Record a problem.
+    pub fn push(&self, d: Diagnostic) {
+        if let Some(list) = self.list.borrow_mut().as_mut() {
+            list.push(d);
+        }
     }
 
-    pub fn iter(&self) -> impl Iterator<Item = &Diagnostic> {
-        self.0.iter()
+    /// How many problems have been recorded so far.
+    pub fn count(&self) -> usize {
+        self.list.borrow().as_ref().map_or(0, Vec::len)
     }
 
-    /// `Ok(value)` if nothing was reported.
-    pub fn into_result<T>(self, value: T) -> Result<T, Diagnostics> {
-        if self.0.is_empty() {
-            Ok(value)
+    /// Whether any problem has been recorded (a stage that needs the
+    /// previous one whole stops here).
+    pub fn has_errors(&self) -> bool {
+        self.count() > 0
+    }
+
+    /// Consume the collector: `Ok(())` if nothing was reported.
+    pub fn check(self) -> Result<(), SpecErrors> {
+        let list = self.list.borrow_mut().take().unwrap_or_default();
+        if list.is_empty() {
+            Ok(())
         } else {
-            Err(self)
+            Err(SpecErrors(list))
+        }
+    }
+
+    /// Consume the collector with the value a validation produced: the value
+    /// if nothing was reported. A validation that gave up (`None`) must have
+    /// said why; if it did not, that is reported as an internal error rather
+    /// than passed over.
+    pub fn finish<T>(self, value: Option<T>, file: &str) -> Result<T, SpecErrors> {
+        self.check()?;
+        value.ok_or_else(|| {
+            SpecErrors(vec![Diagnostic {
+                file: file.to_string(),
+                line: 1,
+                column: 1,
+                entry: String::new(),
+                message: "internal error of derive-quartic: the spec was refused without a diagnostic; please report it".into(),
+                help: None,
+            }])
+        })
+    }
+}
+
+impl Drop for Diagnostics {
+    fn drop(&mut self) {
+        if self.list.get_mut().is_some() && !std::thread::panicking() {
+            panic!("formula_engine::Diagnostics dropped without `check()` or `finish()`");
         }
     }
 }
 
-impl fmt::Display for Diagnostics {
+/// The problems found in one spec. A spec with any problem yields no model.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SpecErrors(pub Vec<Diagnostic>);
+
+impl SpecErrors {
+    pub fn iter(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.0.iter()
+    }
+
+    /// One compile error per diagnostic, all pointing at `at` (the spec
+    /// path as the user wrote it in the macro call).
+    pub fn to_syn_error(&self, at: &impl ToTokens) -> syn::Error {
+        let errors = self
+            .iter()
+            .map(|d| syn::Error::new_spanned(at, d.to_string()));
+        combine(errors).unwrap_or_else(|| syn::Error::new_spanned(at, "invalid spec"))
+    }
+}
+
+/// Several compile errors as one (`None` if there are none).
+pub fn combine(errors: impl IntoIterator<Item = syn::Error>) -> Option<syn::Error> {
+    errors.into_iter().reduce(|mut first, e| {
+        first.combine(e);
+        first
+    })
+}
+
+impl fmt::Display for SpecErrors {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         for (i, d) in self.0.iter().enumerate() {
             if i > 0 {
@@ -156,25 +160,61 @@ impl fmt::Display for Diagnostics {
     }
 }
 
-impl std::error::Error for Diagnostics {}
-
-impl From<Diagnostic> for Diagnostics {
-    fn from(d: Diagnostic) -> Self {
-        Diagnostics(vec![d])
-    }
-}
+impl std::error::Error for SpecErrors {}
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    fn diagnostic(message: &str) -> Diagnostic {
+        Diagnostic {
+            file: "s.toml".into(),
+            line: 2,
+            column: 5,
+            entry: "row `x`".into(),
+            message: message.into(),
+            help: None,
+        }
+    }
+
     #[test]
-    fn positions_are_one_based_lines_and_character_columns() {
-        let f = SourceFile::new("s.toml", "a = 1\nλ = \"x_u\"\n");
-        assert_eq!(f.position(0), (1, 1));
-        assert_eq!(f.position(6), (2, 1));
-        // byte 11 is the opening quote after "λ = " (λ is two bytes)
-        assert_eq!(f.position(11), (2, 5));
-        assert_eq!(f.line_text(2), "λ = \"x_u\"");
+    fn problems_are_collected_through_shared_references() {
+        let diags = Diagnostics::new();
+        let report = |d: &Diagnostics, m: &str| d.push(diagnostic(m));
+        report(&diags, "first");
+        report(&diags, "second");
+        assert_eq!(diags.count(), 2);
+        let errors = diags.check().unwrap_err();
+        assert_eq!(
+            errors.to_string(),
+            "s.toml:2:5: row `x`: first\ns.toml:2:5: row `x`: second"
+        );
+    }
+
+    #[test]
+    fn finish_gives_the_value_only_when_nothing_was_reported() {
+        assert_eq!(Diagnostics::new().finish(Some(3), "s.toml"), Ok(3));
+        let diags = Diagnostics::new();
+        diags.push(diagnostic("bad"));
+        assert!(diags.finish(Some(3), "s.toml").is_err());
+        let silent = Diagnostics::new()
+            .finish(None::<i32>, "s.toml")
+            .unwrap_err();
+        assert!(silent.to_string().contains("internal error"), "{silent}");
+    }
+
+    #[test]
+    #[should_panic(expected = "dropped without `check()` or `finish()`")]
+    fn an_unchecked_collector_panics_when_dropped() {
+        let diags = Diagnostics::new();
+        diags.push(diagnostic("forgotten"));
+    }
+
+    #[test]
+    fn one_syn_error_carries_every_diagnostic() {
+        let errors = SpecErrors(vec![diagnostic("a"), diagnostic("b")]);
+        let lit = syn::LitStr::new("spec.toml", proc_macro2::Span::call_site());
+        let e = errors.to_syn_error(&lit);
+        assert_eq!(e.into_iter().count(), 2);
     }
 }

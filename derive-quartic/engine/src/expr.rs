@@ -5,8 +5,9 @@
 //! term whose symbols are declared positive (so `x/mu1` is exact, `x/(1 + y)`
 //! is not a polynomial and is refused).
 
-use crate::diag::{Diagnostic, Diagnostics, SourceFile};
+use crate::diag::{Diagnostic, Diagnostics};
 use crate::poly::{Poly, rational_from_decimal};
+use crate::spec::SourceFile;
 use num_traits::Zero;
 use quote::ToTokens;
 use syn::{BinOp, Expr, Lit, UnOp};
@@ -69,8 +70,35 @@ impl Site<'_> {
 
 const ALLOWED: &str = "characters allowed in an expression: letters, digits, `_`, `.`, `+ - * /`, parentheses and spaces";
 
-/// Parse `text` (found at `site`) into a polynomial over `table`'s symbols.
-pub fn parse_poly(text: &str, site: &Site<'_>, table: &SymbolTable) -> Result<Poly, Diagnostics> {
+/// Parse `text` (found at `site`) into a polynomial over `table`'s symbols;
+/// every problem is reported to `diags` (and the result is `None`).
+pub fn parse_poly(
+    text: &str,
+    site: &Site<'_>,
+    table: &SymbolTable,
+    diags: &Diagnostics,
+) -> Option<Poly> {
+    let expr = match syntax(text, site, table) {
+        Ok(expr) => expr,
+        Err(d) => {
+            diags.push(d);
+            return None;
+        }
+    };
+    let before = diags.count();
+    let poly = Lower {
+        text,
+        site,
+        table,
+        diags,
+    }
+    .lower(&expr);
+    poly.filter(|_| diags.count() == before)
+}
+
+/// The expression's syntax tree, or the first problem with its characters,
+/// its parentheses or its syntax.
+fn syntax(text: &str, site: &Site<'_>, table: &SymbolTable) -> Result<Expr, Diagnostic> {
     if let Some((i, c)) = text
         .char_indices()
         .find(|(_, c)| !(c.is_ascii_alphanumeric() || "_.+-*/() \t".contains(*c)))
@@ -85,39 +113,20 @@ pub fn parse_poly(text: &str, site: &Site<'_>, table: &SymbolTable) -> Result<Po
         };
         return Err(site
             .error(i, format!("unexpected character `{c}` in `{text}`"))
-            .with_help(help)
-            .into());
+            .with_help(help));
     }
     if text.trim().is_empty() {
-        return Err(site.error(0, "empty expression").into());
+        return Err(site.error(0, "empty expression"));
     }
     if let Some((at, message)) = unbalanced(text) {
         return Err(site
             .error(at, format!("{message} in `{text}`"))
-            .with_help("close every `(` with a `)`")
-            .into());
+            .with_help("close every `(` with a `)`"));
     }
-    let expr: Expr = match syn::parse_str(text) {
-        Ok(e) => e,
-        Err(e) => {
-            return Err(site
-                .error(0, format!("cannot parse `{text}` as an expression: {e}"))
-                .with_help("write it as Rust: `a*b`, `a/mu1`, `(a + b)*c`, `lam.powi(2)`")
-                .into());
-        }
-    };
-    let mut diags = Diagnostics::default();
-    let poly = Lower {
-        text,
-        site,
-        table,
-        diags: &mut diags,
-    }
-    .lower(&expr);
-    match poly {
-        Some(p) if diags.is_empty() => Ok(p),
-        _ => Err(diags),
-    }
+    syn::parse_str(text).map_err(|e| {
+        site.error(0, format!("cannot parse `{text}` as an expression: {e}"))
+            .with_help("write it as Rust: `a*b`, `a/mu1`, `(a + b)*c`, `lam.powi(2)`")
+    })
 }
 
 /// The first unbalanced parenthesis, as (byte offset, message).
@@ -137,7 +146,7 @@ struct Lower<'a, 'b> {
     text: &'a str,
     site: &'a Site<'b>,
     table: &'a SymbolTable,
-    diags: &'a mut Diagnostics,
+    diags: &'a Diagnostics,
 }
 
 impl Lower<'_, '_> {
@@ -324,14 +333,16 @@ mod tests {
         }
     }
 
-    fn parse(text: &str, t: &SymbolTable) -> Result<Poly, Diagnostics> {
+    fn parse(text: &str, t: &SymbolTable) -> Result<Poly, crate::diag::SpecErrors> {
         let file = SourceFile::new("t.toml", format!("e = \"{text}\"\n"));
         let site = Site {
             file: &file,
             offset: 5,
             entry: "test".into(),
         };
-        parse_poly(text, &site, t)
+        let diags = Diagnostics::new();
+        let poly = parse_poly(text, &site, t, &diags);
+        diags.finish(poly, "t.toml")
     }
 
     #[test]

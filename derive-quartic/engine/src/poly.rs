@@ -272,6 +272,20 @@ impl Poly {
         ))
     }
 
+    /// The same polynomial over `n` symbols (`n` at least its arity): the
+    /// symbols it has keep their ids, the new ones do not occur.
+    pub fn widen(&self, n: usize) -> Poly {
+        assert!(n >= self.n, "widen: {n} symbols are fewer than {}", self.n);
+        let terms = (self.terms.iter())
+            .map(|(m, c)| {
+                let mut e = m.0.clone();
+                e.resize(n, 0);
+                (Monomial(e), c.clone())
+            })
+            .collect();
+        Poly { n, terms }
+    }
+
     /// Whether symbol `id` occurs.
     pub fn mentions(&self, id: usize) -> bool {
         self.terms.keys().any(|m| m.exponent(id) != 0)

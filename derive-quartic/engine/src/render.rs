@@ -168,8 +168,9 @@ pub fn rational_text(r: &BigRational) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::diag::SourceFile;
+    use crate::diag::Diagnostics;
     use crate::expr::{Site, Symbol, parse_poly};
+    use crate::spec::SourceFile;
 
     fn table() -> SymbolTable {
         let s = |n: &str, l: &str, p: bool| Symbol {
@@ -194,7 +195,9 @@ mod tests {
             offset: 0,
             entry: String::new(),
         };
-        parse_poly(text, &site, t).unwrap()
+        let diags = Diagnostics::new();
+        let poly = parse_poly(text, &site, t, &diags);
+        diags.finish(poly, "t").unwrap()
     }
 
     #[test]

@@ -1,0 +1,354 @@
+//! Linear supersonic theory of flat triangular and cropped-delta wings
+//! whose leading edges are supersonic, β cot Λ ≥ 1 (β = √(M² − 1)): the
+//! lift slope a = ∂C_L/∂α, the aerodynamic centre H₀ and the damping
+//! derivatives z_q, m_q, z_ẇ, m_ẇ in the report's notation (§3, §7: forces
+//! on ½ρV²S, moments on ½ρV²Sc̄, rates per qc̄/V and α̇c̄/V, c̄ the M.A.C., h
+//! the c.g. aft of the M.A.C.'s leading edge in M.A.C.) — the theory that
+//! takes over from the report's eq (36) (Mangler; Ribner & Malvestuto,
+//! subsonic leading edges) where the leading edge turns supersonic.
+//!
+//! The wing: straight leading edge swept Λ from the apex, unswept (hence
+//! supersonic) trailing edge, streamwise tips, taper λ ∈ [0, 1). With the
+//! leading and trailing edges supersonic the only subsonic edges are the
+//! tips, and the problem is direct: the potential is the source integral
+//! over the wing (Puckett 1946), corrected in the tip Mach cones by
+//! Evvard's reduced area (NACA TN 1382 / Rep. 951, 1950). To first order in
+//! frequency the oscillatory source kernel (Miles, *The Potential Theory of
+//! Unsteady Supersonic Flow*, 1959, ch. 5; Garrick & Rubinow, NACA Rep.
+//! 846, 1946) adds the α̇ terms. `docs/damping-theories.md` derives every
+//! formula used here.
+//!
+//! | module | what | route |
+//! | --- | --- | --- |
+//! | [`strip`] | Ackeret's two-dimensional values and their strip integrals; the true delta exactly | closed form |
+//! | [`evvard`] | the cropped delta: strip values less the tip deficits | closed-form weights, integrated over the tip regions |
+//! | [`source`] | the same seven potential integrals from the source integral at each receiver | independent numerical route (tests) |
+//! | [`transonic`] | where (36)'s low-frequency theory is valid as M → 1⁺ | stated rule |
+//! | [`wave_drag`] | zero-lift wave drag against the edge parameter (the note's Fig 1) | linear theory, numerical |
+
+pub mod evvard;
+pub mod quadrature;
+pub mod source;
+pub mod strip;
+pub mod transonic;
+pub mod wave_drag;
+
+use crate::damping::{DampingDerivatives, Fig18, eq36};
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// |β cot Λ − 1| at or below which the leading edge counts as sonic.
+///
+/// Both theories are continuous at β cot Λ = 1 (`tests/supersonic.rs`), so
+/// the choice decides only which formula is evaluated there; 1e-9 covers
+/// the rounding of β cot Λ (the 60° delta at M = 2 computes
+/// 1.0000000000000002) with a margin of seven decades, and (36) differs
+/// from its sonic-edge limit by O(1 − β²cot²Λ), i.e. by 2e-9 relatively at
+/// the tolerance.
+pub const SONIC_EDGE_TOLERANCE: f64 = 1e-9;
+
+/// A straight-tapered delta of unit root chord (every result here is
+/// non-dimensional).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Wing {
+    /// Leading-edge sweep Λ (rad), in (0, π/2).
+    pub sweep_le: f64,
+    /// Taper λ = c_t/c₀ in [0, 1).
+    pub taper: f64,
+}
+
+/// Why the supersonic-edge theory cannot be applied.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum SupersonicError {
+    #[error("{what} must be a finite number, not {value}")]
+    NonFinite { what: &'static str, value: f64 },
+    #[error("the leading-edge sweep must lie strictly between 0° and 90°, not {0}°")]
+    Sweep(f64),
+    #[error("the taper ratio must lie in [0, 1), not {0}")]
+    Taper(f64),
+    #[error("supersonic theory needs M > 1, not M = {0}")]
+    SubsonicMach(f64),
+    #[error(
+        "the supersonic-edge theory needs β cot Λ ≥ 1; at M = {mach} β cot Λ = {beta_cot:.6} (the leading edge turns sonic at M = {sonic:.4}): use eq (36)"
+    )]
+    SubsonicLeadingEdge {
+        mach: f64,
+        beta_cot: f64,
+        sonic: f64,
+    },
+    #[error(
+        "at M = {mach} the Mach waves from one tip reach the other (2β·s/c₀ = {two_beta_s:.4} < 1; taper {taper}): Evvard's single reflection does not hold"
+    )]
+    TipsInteract {
+        mach: f64,
+        taper: f64,
+        two_beta_s: f64,
+    },
+    #[error(
+        "the ridge of a double-wedge section must lie strictly inside the chord (0 < f < 1), not {0}"
+    )]
+    Ridge(f64),
+    #[error("the frequency parameter ω̄ must be positive and finite, not {0}")]
+    Frequency(f64),
+    #[error(
+        "ω̄·c₀/c̄ = {scaled:.4} is at or above the low-frequency limit {limit}: (36) is valid at no Mach number for this frequency"
+    )]
+    FrequencyTooHigh { scaled: f64, limit: f64 },
+}
+
+impl Wing {
+    /// A wing, checked.
+    pub fn new(sweep_le: f64, taper: f64) -> Result<Wing, SupersonicError> {
+        if !sweep_le.is_finite() {
+            return Err(SupersonicError::NonFinite {
+                what: "the sweep",
+                value: sweep_le,
+            });
+        }
+        if !(sweep_le > 0.0 && sweep_le < PI / 2.0) {
+            return Err(SupersonicError::Sweep(sweep_le.to_degrees()));
+        }
+        if !(0.0..1.0).contains(&taper) {
+            return Err(SupersonicError::Taper(taper));
+        }
+        Ok(Wing { sweep_le, taper })
+    }
+
+    /// cot Λ.
+    pub fn cot(&self) -> f64 {
+        1.0 / self.sweep_le.tan()
+    }
+
+    /// Semi-span s/c₀ = (1 − λ) cot Λ.
+    pub fn semi_span(&self) -> f64 {
+        (1.0 - self.taper) * self.cot()
+    }
+
+    /// Area S/c₀² = s(1 + λ).
+    pub fn area(&self) -> f64 {
+        self.semi_span() * (1.0 + self.taper)
+    }
+
+    /// Aspect ratio A = 4 cot Λ (1 − λ)/(1 + λ) (§2.2).
+    pub fn aspect_ratio(&self) -> f64 {
+        4.0 * self.cot() * (1.0 - self.taper) / (1.0 + self.taper)
+    }
+
+    /// M.A.C. c̄/c₀ = (2/3)(1 + λ + λ²)/(1 + λ) (§2.2).
+    pub fn mac(&self) -> f64 {
+        let l = self.taper;
+        2.0 / 3.0 * (1.0 + l + l * l) / (1.0 + l)
+    }
+
+    /// Leading edge of the M.A.C. aft of the apex, x̄/c₀ =
+    /// (1 − λ)(1 + 2λ)/(3(1 + λ)) (§2.2).
+    pub fn x_mac(&self) -> f64 {
+        let l = self.taper;
+        (1.0 - l) * (1.0 + 2.0 * l) / (3.0 * (1.0 + l))
+    }
+
+    /// The pitch axis x₀/c₀ for the c.g. at h.
+    pub fn axis(&self, h: f64) -> f64 {
+        self.x_mac() + h * self.mac()
+    }
+
+    /// The edge parameter β cot Λ at Mach `mach`.
+    pub fn beta_cot(&self, mach: f64) -> f64 {
+        (mach * mach - 1.0).sqrt() * self.cot()
+    }
+
+    /// The Mach number at which the leading edge is sonic, √(1 + tan²Λ).
+    pub fn sonic_mach(&self) -> f64 {
+        (1.0 + self.sweep_le.tan().powi(2)).sqrt()
+    }
+}
+
+impl From<&crate::damping::WingInput> for Wing {
+    fn from(w: &crate::damping::WingInput) -> Self {
+        Wing {
+            sweep_le: w.sweep_le,
+            taper: w.taper,
+        }
+    }
+}
+
+impl From<&crate::geometry::Planform> for Wing {
+    fn from(p: &crate::geometry::Planform) -> Self {
+        Wing {
+            sweep_le: p.sweep_le,
+            taper: p.taper,
+        }
+    }
+}
+
+/// The six outputs of a theory at one Mach number and c.g.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Derivatives {
+    /// a = ∂C_L/∂α per radian (z_w = −a).
+    pub lift_slope: f64,
+    /// H₀, the aerodynamic centre aft of the M.A.C.'s leading edge, in M.A.C.
+    pub aerodynamic_centre: f64,
+    /// z_q, z_ẇ, m_q, m_ẇ.
+    pub damping: DampingDerivatives,
+}
+
+/// The seven potential integrals from which every derivative follows
+/// (root chord 1, trailing edge at x = 1, Φ the upper-surface potential per
+/// unit V of a unit downwash distribution, Φz = w):
+///
+/// - `te0`, `te1`: ∫ Φ₀ dy along the trailing edge for w = 1 and w = x;
+/// - `ar0`, `ar1`: ∫∫ Φ₀ dS for w = 1 and w = x; `arx0`: ∫∫ x Φ₀ dS, w = 1;
+/// - `te_f`, `ar_f`: the same for the first-order kernel term Φ₁ (kernel
+///   factor (ξ − x), w = 1), ∫ Φ₁ dy along the trailing edge and ∫∫ Φ₁ dS.
+///
+/// The lift and the moment follow from the pressure ΔC_p = (4/V²)(Φ_t + VΦ_x)
+/// integrated by parts, since Φ = 0 on a supersonic leading edge.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PotentialIntegrals {
+    pub te0: f64,
+    pub te1: f64,
+    pub ar0: f64,
+    pub ar1: f64,
+    pub arx0: f64,
+    pub te_f: f64,
+    pub ar_f: f64,
+}
+
+impl PotentialIntegrals {
+    /// The derivatives about the c.g. `h` (docs/damping-theories.md,
+    /// "From the potential to the derivatives"):
+    /// a = −4 te0/S, x_ac = (te0 − ar0)/te0,
+    /// z_q = 4(te1 − x₀te0)/(c̄S),
+    /// m_q = 4[(te1 − ar1) − x₀(te0 − ar0) − x₀(te1 − x₀te0)]/(Sc̄²),
+    /// z_ẇ = 4[(M²/β²)te_f + ar0]/(c̄S),
+    /// m_ẇ = 4[(M²/β²)(te_f − ar_f) + arx0 − x₀((M²/β²)te_f + ar0)]/(Sc̄²).
+    pub fn derivatives(&self, wing: &Wing, mach: f64, h: f64) -> Derivatives {
+        let s = wing.area();
+        let c = wing.mac();
+        let x0 = wing.axis(h);
+        let r = mach * mach / (mach * mach - 1.0);
+        let lift_a = self.te0;
+        let x_ac = (self.te0 - self.ar0) / self.te0;
+        let lift_q = self.te1 - x0 * self.te0;
+        let lift_ad = r * self.te_f + self.ar0;
+        let moment_q = (self.te1 - self.ar1) - x0 * (self.te0 - self.ar0) - x0 * lift_q;
+        let moment_ad = r * (self.te_f - self.ar_f) + self.arx0 - x0 * lift_ad;
+        Derivatives {
+            lift_slope: -4.0 * lift_a / s,
+            aerodynamic_centre: (x_ac - wing.x_mac()) / c,
+            damping: DampingDerivatives {
+                z_q: 4.0 * lift_q / (c * s),
+                z_wdot: 4.0 * lift_ad / (c * s),
+                m_q: 4.0 * moment_q / (s * c * c),
+                m_wdot: 4.0 * moment_ad / (s * c * c),
+            },
+        }
+    }
+}
+
+fn check_mach(mach: f64) -> Result<f64, SupersonicError> {
+    if !mach.is_finite() {
+        return Err(SupersonicError::NonFinite {
+            what: "the Mach number",
+            value: mach,
+        });
+    }
+    if mach <= 1.0 {
+        return Err(SupersonicError::SubsonicMach(mach));
+    }
+    Ok((mach * mach - 1.0).sqrt())
+}
+
+/// The supersonic-edge theory at `mach`: the true delta in closed form
+/// ([`strip::true_delta`]), a cropped delta by [`evvard::integrals`]. Needs
+/// β cot Λ ≥ 1 − [`SONIC_EDGE_TOLERANCE`] (a value within the tolerance is
+/// evaluated at the sonic edge itself) and, for a cropped wing,
+/// 2βs ≥ c₀ (no Mach wave from one tip reaches the other).
+pub fn supersonic_edge(wing: &Wing, mach: f64, h: f64) -> Result<Derivatives, SupersonicError> {
+    let beta = check_mach(mach)?;
+    if !h.is_finite() {
+        return Err(SupersonicError::NonFinite {
+            what: "h",
+            value: h,
+        });
+    }
+    let m = beta * wing.cot();
+    if m < 1.0 - SONIC_EDGE_TOLERANCE {
+        return Err(SupersonicError::SubsonicLeadingEdge {
+            mach,
+            beta_cot: m,
+            sonic: wing.sonic_mach(),
+        });
+    }
+    if wing.taper == 0.0 {
+        return Ok(strip::true_delta(mach, h));
+    }
+    Ok(evvard::integrals(wing, mach)?.derivatives(wing, mach, h))
+}
+
+/// Which theory [`edge_theory`] used.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum EdgeRegime {
+    /// β cot Λ < 1 − tolerance: eq (36) (Mangler; Ribner & Malvestuto).
+    SubsonicEdge,
+    /// |β cot Λ − 1| ≤ tolerance: the sonic edge, where the two agree.
+    SonicEdge,
+    /// β cot Λ > 1 + tolerance: this module's theory.
+    SupersonicEdge,
+}
+
+/// The result of [`edge_theory`].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct EdgeDerivatives {
+    pub regime: EdgeRegime,
+    pub beta_cot: f64,
+    pub derivatives: Derivatives,
+    /// (36) is a true-delta theory: set when it was applied to a cropped
+    /// wing (with the cropped wing's aspect ratio, as `damping` does).
+    pub true_delta_formula_on_cropped_wing: bool,
+}
+
+/// The single entry point for M > 1: eq (36) with its own lift slope
+/// πA/(2E) and aerodynamic centre H₀ = ½ (from m_w = z_w(½ − h)) where the
+/// leading edge is subsonic, the supersonic-edge theory where it is
+/// supersonic, chosen by β cot Λ with [`SONIC_EDGE_TOLERANCE`]; continuous
+/// at the sonic edge (`tests/supersonic.rs`).
+pub fn edge_theory(wing: &Wing, mach: f64, h: f64) -> Result<EdgeDerivatives, SupersonicError> {
+    let beta = check_mach(mach)?;
+    if !h.is_finite() {
+        return Err(SupersonicError::NonFinite {
+            what: "h",
+            value: h,
+        });
+    }
+    let m = beta * wing.cot();
+    let regime = if m < 1.0 - SONIC_EDGE_TOLERANCE {
+        EdgeRegime::SubsonicEdge
+    } else if m <= 1.0 + SONIC_EDGE_TOLERANCE {
+        EdgeRegime::SonicEdge
+    } else {
+        EdgeRegime::SupersonicEdge
+    };
+    let derivatives = match regime {
+        EdgeRegime::SubsonicEdge => eq36_with_own_aero(wing, mach, h),
+        _ => supersonic_edge(wing, mach, h)?,
+    };
+    Ok(EdgeDerivatives {
+        regime,
+        beta_cot: m,
+        derivatives,
+        true_delta_formula_on_cropped_wing: regime == EdgeRegime::SubsonicEdge && wing.taper > 0.0,
+    })
+}
+
+/// Eq (36) as `damping::eq36` recovers it, with (36)'s own lift slope
+/// a = πA/(2E) (z_w = −πA/(2E)) and aerodynamic centre ½ (m_w = z_w(½ − h)).
+pub fn eq36_with_own_aero(wing: &Wing, mach: f64, h: f64) -> Derivatives {
+    let f = Fig18::at(wing.beta_cot(mach));
+    let a = wing.aspect_ratio();
+    Derivatives {
+        lift_slope: PI * a / (2.0 * f.e),
+        aerodynamic_centre: 0.5,
+        damping: eq36(a, h, mach, f.e, f.h),
+    }
+}

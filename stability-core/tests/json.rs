@@ -1,0 +1,153 @@
+//! The JSON of the results, from the types, against the command line's
+//! output as it was assembled by hand with `json!` (before the types
+//! serialized themselves): `tests/data/json/*.json` were written by
+//!
+//! ```sh
+//! delta-stability quartic examples/tailless-delta-45.toml --json
+//! delta-stability quartic examples/tailless-delta-60-dimensional.toml --json
+//! delta-stability analyze examples/delta-45.toml --json
+//! delta-stability analyze examples/delta-45.toml --json --mach 1.0 --damping transonic-frequency
+//! ```
+//!
+//! Every key must be there with the same name and nesting (scripts depend
+//! on them), every value the same (numbers to 1e-12, relative); the keys
+//! only the command adds (`file`, `notation`, and the input file's
+//! `warnings` for `quartic`) are left out, and keys the types add beyond
+//! the hand-assembled ones are listed here.
+
+use serde_json::Value;
+use stability_core::analysis::Analysis;
+use stability_core::case::{DampingModel, evaluate};
+use stability_core::damping::Theory;
+use stability_core::examples::{tailless_delta_45, tailless_delta_60, tailless_delta_60_flight};
+use stability_core::study::report_wing;
+
+/// Keys the types add (a path with `[]` for every array element).
+const ADDED: [&str; 1] = ["modes[].natural_frequency_s"];
+
+fn fixture(name: &str) -> Value {
+    let path = format!("{}/tests/data/json/{name}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+fn without(mut v: Value, keys: &[&str]) -> Value {
+    if let Value::Object(m) = &mut v {
+        for k in keys {
+            m.remove(*k);
+        }
+    }
+    v
+}
+
+/// `.modes[1].re` → `modes[].re`.
+fn generic(path: &str) -> String {
+    let mut out = String::new();
+    let mut in_index = false;
+    for c in path.trim_start_matches('.').chars() {
+        match c {
+            '[' => {
+                in_index = true;
+                out.push('[');
+            }
+            ']' => {
+                in_index = false;
+                out.push(']');
+            }
+            _ if in_index => {}
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
+/// The differences between `got` and `want`, by path.
+fn differences(path: &str, got: &Value, want: &Value, out: &mut Vec<String>) {
+    match (got, want) {
+        (Value::Object(g), Value::Object(w)) => {
+            for (k, wv) in w {
+                let p = format!("{path}.{k}");
+                match g.get(k) {
+                    Some(gv) => differences(&p, gv, wv, out),
+                    None => out.push(format!("{p}: missing")),
+                }
+            }
+            for k in g.keys().filter(|k| !w.contains_key(*k)) {
+                let p = format!("{path}.{k}");
+                if !ADDED.contains(&generic(&p).as_str()) {
+                    out.push(format!("{p}: a key the command did not print"));
+                }
+            }
+        }
+        (Value::Array(g), Value::Array(w)) if g.len() == w.len() => {
+            for (i, (gv, wv)) in g.iter().zip(w).enumerate() {
+                differences(&format!("{path}[{i}]"), gv, wv, out);
+            }
+        }
+        (Value::Number(g), Value::Number(w)) => {
+            let (g, w) = (g.as_f64().unwrap(), w.as_f64().unwrap());
+            if (g - w).abs() > 1e-12 * w.abs().max(1e-300) {
+                out.push(format!("{path}: {g} vs {w}"));
+            }
+        }
+        _ if got == want => {}
+        _ => out.push(format!("{path}: {got} vs {want}")),
+    }
+}
+
+fn assert_same(got: Value, want: Value) {
+    let mut out = Vec::new();
+    differences("", &got, &want, &mut out);
+    assert!(out.is_empty(), "{}", out.join("\n"));
+}
+
+#[test]
+fn quartic_json_without_tau() {
+    let a = Analysis::of(&tailless_delta_45()).unwrap();
+    let want = without(
+        fixture("quartic-tailless-delta-45.json"),
+        &["file", "notation", "warnings"],
+    );
+    assert_same(serde_json::to_value(&a).unwrap(), want.clone());
+    assert_same(serde_json::to_value(a.timed(None)).unwrap(), want);
+}
+
+#[test]
+fn quartic_json_with_tau() {
+    let a = Analysis::of(&tailless_delta_60()).unwrap();
+    let tau = tailless_delta_60_flight().tau();
+    let want = without(
+        fixture("quartic-tailless-delta-60-dimensional.json"),
+        &["file", "notation", "warnings"],
+    );
+    assert_same(serde_json::to_value(a.timed(Some(tau))).unwrap(), want);
+}
+
+#[test]
+fn analyze_json() {
+    let case = report_wing(45.0, 0.9);
+    let r = evaluate(&case).unwrap();
+    let want = without(fixture("analyze-delta-45.json"), &["file"]);
+    assert_same(serde_json::to_value(r.view(&case)).unwrap(), want);
+
+    let mut case = report_wing(45.0, 1.0);
+    case.damping = DampingModel::Theory(Theory::TransonicFrequency);
+    let r = evaluate(&case).unwrap();
+    let want = without(
+        fixture("analyze-delta-45-m1-transonic-frequency.json"),
+        &["file"],
+    );
+    assert_same(serde_json::to_value(r.view(&case)).unwrap(), want);
+}
+
+#[test]
+fn non_finite_numbers_are_null() {
+    let mut a = Analysis::of(&tailless_delta_45()).unwrap();
+    a.routh.discriminant = f64::INFINITY;
+    a.roots[0].re = f64::NAN;
+    let v = serde_json::to_value(&a).unwrap();
+    assert_eq!(v["routh_discriminant"], Value::Null);
+    assert_eq!(v["roots"][0]["re"], Value::Null);
+    let text = serde_json::to_string(&a).unwrap();
+    assert!(!text.contains("inf") && !text.contains("NaN"), "{text}");
+}

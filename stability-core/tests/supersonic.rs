@@ -1,0 +1,445 @@
+//! The supersonic-edge theory (stability_core::supersonic) against its
+//! independent routes: the direct source integral at every receiver
+//! (`supersonic::source`), the closed forms (the true delta's strip
+//! integrals, the cropped delta's lift slope), the limits — eq (36) at the
+//! sonic leading edge, Ackeret's two-dimensional plate at large aspect
+//! ratio — and the exact two-dimensional oscillatory theory.
+
+use stability_core::damping::mangler_k;
+use stability_core::supersonic::{
+    self, Derivatives, EdgeRegime, PotentialIntegrals, SupersonicError, Wing, evvard, source,
+    strip, transonic, wave_drag,
+};
+use std::f64::consts::PI;
+
+fn wing(deg: f64, taper: f64) -> Wing {
+    Wing::new(deg.to_radians(), taper).unwrap()
+}
+
+/// The Mach number at which β cot Λ = m.
+fn mach_at(w: &Wing, m: f64) -> f64 {
+    (1.0 + (m / w.cot()).powi(2)).sqrt()
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / (1.0 + b.abs())
+}
+
+fn worst(a: &Derivatives, b: &Derivatives) -> f64 {
+    [
+        rel(a.lift_slope, b.lift_slope),
+        rel(a.aerodynamic_centre, b.aerodynamic_centre),
+        rel(a.damping.z_q, b.damping.z_q),
+        rel(a.damping.z_wdot, b.damping.z_wdot),
+        rel(a.damping.m_q, b.damping.m_q),
+        rel(a.damping.m_wdot, b.damping.m_wdot),
+    ]
+    .into_iter()
+    .fold(0.0, f64::max)
+}
+
+fn fields(p: &PotentialIntegrals) -> [f64; 7] {
+    [p.te0, p.te1, p.ar0, p.ar1, p.arx0, p.te_f, p.ar_f]
+}
+
+#[test]
+fn true_delta_direct_source_integral_gives_the_strip_closed_form() {
+    let mut max: f64 = 0.0;
+    for (deg, m) in [(45.0, 1.0), (60.0, 1.3), (45.0, 2.5)] {
+        let w = wing(deg, 0.0);
+        let mach = mach_at(&w, m);
+        let direct = source::integrals(&w, mach, 1e-10);
+        let closed = strip::strip_integrals(&w, mach);
+        for (a, b) in fields(&direct).into_iter().zip(fields(&closed)) {
+            max = max.max(rel(a, b));
+        }
+        for h in [0.0, 0.25, 0.6] {
+            let e = worst(
+                &direct.derivatives(&w, mach, h),
+                &strip::true_delta(mach, h),
+            );
+            max = max.max(e);
+        }
+    }
+    println!("true delta: direct route vs closed form, worst relative error {max:.2e}");
+    assert!(max < 1e-7, "{max}");
+}
+
+#[test]
+fn cropped_delta_evvard_weights_against_the_direct_source_integral() {
+    let mut max: f64 = 0.0;
+    for (deg, taper, m) in [
+        (45.0, 1.0 / 7.0, 1.0),
+        (45.0, 1.0 / 7.0, 1.6),
+        (60.0, 0.3, 1.2),
+        (30.0, 0.5, 3.0),
+        (45.0, 0.6, 1.5),
+    ] {
+        let w = wing(deg, taper);
+        let mach = mach_at(&w, m);
+        let a = evvard::integrals(&w, mach).unwrap();
+        let b = source::integrals(&w, mach, 1e-10);
+        for (x, y) in fields(&a).into_iter().zip(fields(&b)) {
+            max = max.max(rel(x, y));
+        }
+        for h in [0.0, 0.25, 0.6] {
+            max = max.max(worst(
+                &a.derivatives(&w, mach, h),
+                &b.derivatives(&w, mach, h),
+            ));
+        }
+    }
+    println!("cropped deltas: Evvard weights vs direct source integral, worst {max:.2e}");
+    assert!(max < 1e-7, "{max}");
+}
+
+#[test]
+fn cropped_delta_lift_slope_closed_form() {
+    // βs ≥ c₀: the tip's reach stays on its own half-wing
+    for (deg, taper, m) in [(45.0, 1.0 / 7.0, 2.0), (30.0, 0.5, 3.0), (20.0, 0.25, 1.8)] {
+        let w = wing(deg, taper);
+        let mach = mach_at(&w, m);
+        let closed = evvard::lift_slope_closed(&w, mach).expect("in range");
+        let a = supersonic::supersonic_edge(&w, mach, 0.25)
+            .unwrap()
+            .lift_slope;
+        let b = source::integrals(&w, mach, 1e-10)
+            .derivatives(&w, mach, 0.25)
+            .lift_slope;
+        println!(
+            "{deg}° λ = {taper:.3} m = {m}: closed {closed:.10} weights {a:.10} direct {b:.10}"
+        );
+        assert!(rel(a, closed) < 1e-10 && rel(b, closed) < 1e-8);
+        assert!(closed < 4.0 / (mach * mach - 1.0).sqrt());
+    }
+    // the rectangular wing's (4/β)(1 − 1/(2βA)) as λ → 1 with m → ∞
+    let w = wing(0.05, 0.999);
+    let mach = 1.5;
+    let beta = (mach * mach - 1.0f64).sqrt();
+    let rect = 4.0 / beta * (1.0 - 1.0 / (2.0 * beta * w.aspect_ratio()));
+    let closed = evvard::lift_slope_closed(&w, mach).unwrap();
+    assert!(rel(closed, rect) < 2e-3, "{closed} vs {rect}");
+}
+
+#[test]
+fn continuous_with_eq36_at_the_sonic_leading_edge() {
+    // (36) with its own lift slope and aerodynamic centre, evaluated at the
+    // sonic edge itself (E = π/2, H = ⅔ by Fig 18's series), against the
+    // supersonic-edge theory at the same Mach number: every output
+    let mut at_edge: f64 = 0.0;
+    for deg in [45.0, 60.0, 70.0] {
+        let w = wing(deg, 0.0);
+        let sonic = w.sonic_mach();
+        for h in [0.0, 0.25, 0.5, 0.8] {
+            let eq36 = supersonic::eq36_with_own_aero(&w, sonic, h);
+            let edge = supersonic::supersonic_edge(&w, sonic, h).unwrap();
+            at_edge = at_edge.max(worst(&eq36, &edge));
+            let chosen = supersonic::edge_theory(&w, sonic, h).unwrap();
+            assert_eq!(chosen.regime, EdgeRegime::SonicEdge);
+            assert!(worst(&chosen.derivatives, &edge) < 1e-15);
+        }
+    }
+    println!(
+        "sonic edge: (36) vs supersonic-edge theory at the same M, worst relative difference {at_edge:.2e}"
+    );
+    assert!(at_edge < 1e-12, "{at_edge}");
+    // one-sided limits: the jump across M_sonic(1 ± ε) vanishes with ε
+    let w = wing(45.0, 0.0);
+    let jump = |eps: f64| {
+        let s = w.sonic_mach();
+        let below = supersonic::eq36_with_own_aero(&w, s * (1.0 - eps), 0.25);
+        let above = supersonic::supersonic_edge(&w, s * (1.0 + eps), 0.25).unwrap();
+        worst(&below, &above)
+    };
+    let (j6, j8) = (jump(1e-6), jump(1e-8));
+    println!("jump across M_sonic(1 ± ε): ε = 1e-6: {j6:.2e}, ε = 1e-8: {j8:.2e}");
+    assert!(j8 < j6 / 50.0 && j8 < 1e-6, "{j6} {j8}");
+    // the 60° delta at exactly M = 2 (β cot Λ computes to 1.0000000000000002)
+    let w = wing(60.0, 0.0);
+    let r = supersonic::edge_theory(&w, 2.0, 0.25).unwrap();
+    assert_eq!(r.regime, EdgeRegime::SonicEdge);
+    assert!(rel(r.derivatives.lift_slope, 4.0 / 3f64.sqrt()) < 1e-12);
+    // and the choice follows β cot Λ either side
+    assert_eq!(
+        supersonic::edge_theory(&w, 1.9, 0.25).unwrap().regime,
+        EdgeRegime::SubsonicEdge
+    );
+    assert_eq!(
+        supersonic::edge_theory(&w, 2.1, 0.25).unwrap().regime,
+        EdgeRegime::SupersonicEdge
+    );
+}
+
+#[test]
+fn tends_to_ackeret_at_large_aspect_ratio() {
+    // cropped delta, λ = 0.5, Λ → 0: every derivative → its strip integral
+    // of the two-dimensional plate, the difference falling like 1/(βA)
+    let mach = 1.5;
+    let mut last = f64::INFINITY;
+    for deg in [30.0, 10.0, 2.0] {
+        let w = wing(deg, 0.5);
+        let theory = supersonic::supersonic_edge(&w, mach, 0.25).unwrap();
+        let strips = strip::strip_integrals(&w, mach).derivatives(&w, mach, 0.25);
+        let e = worst(&theory, &strips);
+        println!(
+            "Λ = {deg}°, A = {:.1}: relative departure from strip theory {e:.2e}",
+            w.aspect_ratio()
+        );
+        assert!(e < last);
+        last = e;
+    }
+    assert!(last < 5e-3, "{last}");
+    // nearly rectangular (λ → 1, A large): Ackeret's plate itself, with
+    // a = 4/β, H₀ = ½, z_ẇ = 2/β³ (per chord; here c̄ → c₀)
+    let w = wing(0.01, 0.99);
+    let d = supersonic::supersonic_edge(&w, mach, 0.3).unwrap();
+    let two_d = strip::two_dimensional(mach, 0.3);
+    let e = worst(&d, &two_d);
+    println!(
+        "λ = 0.99, A = {:.0}: departure from the two-dimensional plate {e:.2e}",
+        w.aspect_ratio()
+    );
+    assert!(e < 1e-2, "{e}");
+}
+
+/// The exact two-dimensional oscillating plate (Garrick & Rubinow, NACA
+/// Rep. 846): Φ(x) = −(1/β) ∫₀ˣ w e^{−iλ(x−ξ)} J₀(μ(x − ξ)) dξ, λ = ωM²/β²,
+/// μ = ωM/β² (V = c = 1), plunging with w = −1: the complex lift and the
+/// moment about the leading edge, ΔC_p = 4(iωΦ + Φ_x); Φ by the trapezoid
+/// rule on half steps, the chord by the midpoint rule, J₀ by its integral.
+fn exact_plate(mach: f64, omega: f64) -> (f64, f64, f64, f64) {
+    let b2 = mach * mach - 1.0;
+    let (lam, mu) = (omega * mach * mach / b2, omega * mach / b2);
+    let j0 = |z: f64| {
+        (0..200)
+            .map(|k| (((k as f64 + 0.5) * PI / 200.0).sin() * z).cos())
+            .sum::<f64>()
+            / 200.0
+    };
+    let beta = b2.sqrt();
+    let kern = |x: f64| {
+        let (a, j) = (-lam * x, j0(mu * x) / beta);
+        (a.cos() * j, a.sin() * j)
+    };
+    let n = 400;
+    let dx = 1.0 / n as f64;
+    let (mut l, mut mo, mut phi) = ((0.0, 0.0), (0.0, 0.0), (0.0, 0.0));
+    let step = |phi: &mut (f64, f64), a: (f64, f64), b: (f64, f64)| {
+        phi.0 += 0.25 * dx * (a.0 + b.0);
+        phi.1 += 0.25 * dx * (a.1 + b.1);
+    };
+    for i in 0..n {
+        let x = (i as f64 + 0.5) * dx;
+        let k = kern(x);
+        step(&mut phi, kern(x - 0.5 * dx), k);
+        let dcp = (4.0 * (k.0 - omega * phi.1), 4.0 * (k.1 + omega * phi.0));
+        l = (l.0 + dcp.0 * dx, l.1 + dcp.1 * dx);
+        mo = (mo.0 - dcp.0 * x * dx, mo.1 - dcp.1 * x * dx);
+        step(&mut phi, k, kern(x + 0.5 * dx));
+    }
+    (l.0, l.1, mo.0, mo.1)
+}
+
+#[test]
+fn the_low_frequency_limit_is_where_the_exact_plate_says() {
+    // at κ = ωcM²/β² = LOW_FREQUENCY_LIMIT the first-order damping lift is
+    // within 5 % and the moment about mid-chord within 9 % of the exact
+    // oscillatory plate, whatever the Mach number
+    for mach in [1.1, 1.5, 2.0] {
+        let b2 = mach * mach - 1.0f64;
+        let omega = transonic::LOW_FREQUENCY_LIMIT * b2 / (mach * mach);
+        let (_, li, _, mi) = exact_plate(mach, omega);
+        let d = strip::two_dimensional(mach, 0.0).damping;
+        let lift = -li / omega / d.z_wdot;
+        let mid = (mi + 0.5 * li) / omega / (d.m_wdot - 0.5 * d.z_wdot);
+        println!(
+            "M = {mach}, κ = 0.5: damping lift {lift:.4}, moment about mid-chord {mid:.4} of first order"
+        );
+        assert!((0.95..1.0).contains(&lift), "{lift}");
+        assert!((0.91..1.0).contains(&mid), "{mid}");
+    }
+}
+
+#[test]
+fn two_dimensional_acceleration_derivatives_are_the_exact_theory_at_low_frequency() {
+    // the quadrature part of the exact lift and moment, divided by ω, at
+    // ω → 0 is −∂C_L/∂(α̇c/V) = z_ẇ and m_ẇ about the leading edge
+    for mach in [1.2, 1.5, 2.5] {
+        let omega = 1e-3;
+        let (_, li, _, mi) = exact_plate(mach, omega);
+        let d = strip::two_dimensional(mach, 0.0).damping;
+        println!(
+            "M = {mach}: −Im C_L/ω = {:.6} (z_ẇ = {:.6}), Im C_m/ω = {:.6} (m_ẇ = {:.6})",
+            -li / omega,
+            d.z_wdot,
+            mi / omega,
+            d.m_wdot
+        );
+        assert!(rel(-li / omega, d.z_wdot) < 1e-3);
+        assert!(rel(mi / omega, d.m_wdot) < 1e-3);
+        // Garrick & Rubinow's pitch damping about the leading edge
+        let beta = (mach * mach - 1.0f64).sqrt();
+        let m_theta = d.m_q + d.m_wdot;
+        assert!(
+            rel(
+                m_theta,
+                -4.0 / (3.0 * beta) * (mach * mach - 2.0) / (mach * mach - 1.0)
+            ) < 1e-14
+        );
+    }
+}
+
+#[test]
+fn eq36_acceleration_derivatives_grow_like_ln_one_over_beta() {
+    let w = wing(45.0, 0.0);
+    let mut prev = 0.0;
+    for beta in [1e-2, 1e-3, 1e-4] {
+        let mach = (1.0f64 + beta * beta).sqrt();
+        let z = supersonic::eq36_with_own_aero(&w, mach, 0.25)
+            .damping
+            .z_wdot;
+        let asym = transonic::z_wdot_eq36_near_sonic(&w, mach);
+        println!("β = {beta:e}: (36) z_ẇ = {z:.6}, asymptote {asym:.6}");
+        assert!(
+            (z - asym).abs() < 200.0 * beta * beta * (1.0 / beta).ln() + 1e-9,
+            "{z} vs {asym}"
+        );
+        // each decade of β adds 3 cot²Λ ln 10 · πA/4 = 3π ln 10 (A = 4)
+        if prev != 0.0 {
+            assert!(rel(z - prev, 3.0 * PI * 10f64.ln()) < 5e-3);
+        }
+        prev = z;
+    }
+}
+
+#[test]
+fn the_transonic_rule() {
+    let w = wing(45.0, 0.0);
+    for omega in [0.05, 0.1, 0.2] {
+        let m_star = transonic::validity_mach(&w, omega).unwrap();
+        let at = transonic::eq36_validity(&w, m_star, omega).unwrap();
+        assert!((at.kappa - transonic::LOW_FREQUENCY_LIMIT).abs() < 1e-12);
+        assert!(
+            transonic::eq36_validity(&w, m_star * 1.01, omega)
+                .unwrap()
+                .valid
+        );
+        assert!(
+            !transonic::eq36_validity(&w, m_star * 0.99, omega)
+                .unwrap()
+                .valid
+        );
+        let m_match = transonic::matching_mach(omega).unwrap();
+        assert!(m_match < m_star);
+        println!(
+            "ω̄ = {omega}: (36) valid above M = {m_star:.4}; matches Mangler at M = {m_match:.4}"
+        );
+    }
+    // at the matching point (36)'s near-sonic z_ẇ is Mangler's (39)–(40)
+    for deg in [45.0, 60.0] {
+        let w = wing(deg, 0.0);
+        let omega = 0.02;
+        let m = transonic::matching_mach(omega).unwrap();
+        let (k, _) = mangler_k(omega, w.sweep_le);
+        let mangler = -PI * w.aspect_ratio() / 4.0 * k;
+        assert!(rel(transonic::z_wdot_eq36_near_sonic(&w, m), mangler) < 1e-6);
+    }
+    // ω̄c₀/c̄ at or above the limit: no Mach number will do
+    assert!(matches!(
+        transonic::validity_mach(&w, 0.4),
+        Err(SupersonicError::FrequencyTooHigh { .. })
+    ));
+    assert!(matches!(
+        transonic::eq36_validity(&w, 1.5, -1.0),
+        Err(SupersonicError::Frequency(_))
+    ));
+}
+
+#[test]
+fn errors_are_typed() {
+    let w = wing(45.0, 0.0);
+    assert!(matches!(
+        supersonic::supersonic_edge(&w, 1.2, 0.25),
+        Err(SupersonicError::SubsonicLeadingEdge { .. })
+    ));
+    assert!(matches!(
+        supersonic::edge_theory(&w, 1.0, 0.25),
+        Err(SupersonicError::SubsonicMach(_))
+    ));
+    assert!(matches!(
+        supersonic::edge_theory(&w, f64::NAN, 0.25),
+        Err(SupersonicError::NonFinite { .. })
+    ));
+    assert!(matches!(
+        Wing::new(0.0, 0.0),
+        Err(SupersonicError::Sweep(_))
+    ));
+    assert!(matches!(
+        Wing::new(0.5, 1.0),
+        Err(SupersonicError::Taper(_))
+    ));
+    // 2βs < c₀: one reflection per tip is not enough
+    let w = wing(45.0, 0.9);
+    assert!(matches!(
+        supersonic::supersonic_edge(&w, 2f64.sqrt(), 0.25),
+        Err(SupersonicError::TipsInteract { .. })
+    ));
+}
+
+#[test]
+fn wave_drag_limits_and_the_existing_blend() {
+    let f = wave_drag::NOTE_RIDGE;
+    let two_d = 1.0 / (f * (1.0 - f));
+    let far = wave_drag::scaled_wave_drag(40.0, f).unwrap();
+    println!("m = 40: C_D β/τ² = {far:.4} (two-dimensional {two_d:.4})");
+    assert!(rel(far, two_d) < 0.05);
+    // slender limit: an unswept trailing edge closes the area distribution
+    // with S′(c₀) ≠ 0, and slender-body theory's drag grows like
+    // (S′(c₀)²/2π) ln(1/(β·span)): C_D β/τ² ≈ m[a + (2/(π(1 − f)²)) ln(1/m)]
+    assert!(matches!(
+        wave_drag::scaled_wave_drag(1.0, 1.0),
+        Err(SupersonicError::Ridge(_))
+    ));
+    // C_Dw itself: (τ²/β)·F at τ = 0.06, the 45° delta at M = √2 (m = 1)
+    let cdw = wave_drag::wave_drag(PI / 4.0, 2f64.sqrt()).unwrap();
+    assert!(rel(cdw, 0.0036 * wave_drag::scaled_wave_drag(1.0, f).unwrap()) < 1e-9);
+    let g = |m: f64| wave_drag::scaled_wave_drag(m, f).unwrap() / m;
+    let slope = (g(0.003125) - g(0.00625)) / 2f64.ln();
+    let slender = 2.0 / (PI * (1.0 - f) * (1.0 - f));
+    println!("slender ln(1/m) coefficient {slope:.4} (slender-body theory {slender:.4})");
+    assert!(rel(slope, slender) < 0.02, "{slope} vs {slender}");
+    for m in [0.3, 0.6, 0.9, 1.2, 2.0, 4.0] {
+        let t = wave_drag::scaled_wave_drag(m, f).unwrap();
+        println!(
+            "m = {m}: linear theory {t:.4}, blend (biconvex) {:.4}",
+            16.0 / 3.0 * m / (1.0 + m * m).sqrt()
+        );
+    }
+}
+
+#[test]
+fn a_shift_of_the_pitch_axis_obeys_the_kinematics() {
+    // about h rather than 0 (lengths in c̄): z_q(h) = z_q(0) − h z_w,
+    // m_q(h) = m_q(0) − h(z_q(0) + m_w(0)) + h² z_w, m_ẇ(h) = m_ẇ(0) − h z_ẇ,
+    // with z_w = −a and m_w(0) = −aH₀ — the assembly of the derivatives
+    // checked apart from the integrals
+    let w = wing(45.0, 1.0 / 7.0);
+    let mach = 1.8;
+    let d0 = supersonic::supersonic_edge(&w, mach, 0.0).unwrap();
+    let a = d0.lift_slope;
+    let (zq0, mq0, mw0) = (d0.damping.z_q, d0.damping.m_q, -a * d0.aerodynamic_centre);
+    for h in [0.3, 0.7] {
+        let d = supersonic::supersonic_edge(&w, mach, h).unwrap();
+        assert!(rel(d.damping.z_q, zq0 + h * a) < 1e-13);
+        assert!(rel(d.damping.m_q, mq0 - h * (zq0 + mw0) - h * h * a) < 1e-13);
+        assert!(rel(d.damping.m_wdot, d0.damping.m_wdot - h * d0.damping.z_wdot) < 1e-13);
+        assert_eq!(d.damping.z_wdot, d0.damping.z_wdot);
+        assert_eq!(d.aerodynamic_centre, d0.aerodynamic_centre);
+    }
+    // the tips move the aerodynamic centre forward of the true delta's ½
+    assert!(
+        d0.aerodynamic_centre < 0.5 && d0.aerodynamic_centre > 0.4,
+        "{}",
+        d0.aerodynamic_centre
+    );
+}
