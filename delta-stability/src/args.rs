@@ -48,7 +48,11 @@ impl ValueEnum for DampingArg {
                     .to_string()
             }
             DampingModel::Theory(t) => {
-                let eqs = if t.equations().contains('–') { "eqs" } else { "eq" };
+                let eqs = if t.equations().contains('–') {
+                    "eqs"
+                } else {
+                    "eq"
+                };
                 format!("{}: {eqs} {}", theory_meaning(t), t.equations())
             }
         };

@@ -261,7 +261,7 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            delta_stability::output::warn(&format!("error: {e}"));
             ExitCode::from(e.status())
         }
     }

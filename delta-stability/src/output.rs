@@ -121,6 +121,29 @@ pub fn remove_stale(dir: &Path) -> usize {
     removed
 }
 
+/// Prints `text` on standard output. A reader that stops reading (`| head`)
+/// ends the output quietly, not with a panic; any other failure (a full
+/// disk) is an I/O failure naming standard output.
+pub fn print(text: &str) -> Result<(), crate::Failure> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(crate::Failure::Io(crate::diag::IoError::new(
+                "cannot write",
+                Path::new("standard output"),
+                crate::files::reason(&e),
+            )))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Prints a warning (or an error) on standard error; where standard error
+/// cannot be written, there is no one to tell, and nothing else is done.
+pub fn warn(text: &str) {
+    let _ = writeln!(std::io::stderr().lock(), "{text}");
+}
+
 /// Write `bytes` to `path` through a temporary file in the same directory,
 /// renamed into place when complete.
 pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {

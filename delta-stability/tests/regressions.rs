@@ -439,3 +439,46 @@ fn exit_statuses_and_input_limits_are_documented_in_help() {
         assert!(help.contains(text), "{text}:\n{help}");
     }
 }
+
+#[test]
+fn a_reader_that_stops_early_is_not_a_panic_and_a_full_disk_is_an_io_failure() {
+    use std::io::{BufRead, BufReader};
+    let mut child = bin()
+        .args([
+            "response",
+            "examples/tailless-delta-45.toml",
+            "--until",
+            "100",
+            "--steps",
+            "200000",
+        ])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run");
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    assert!(first.starts_with("t_hat"), "{first}");
+    // the pipe is closed here, with most of the output unread
+    let out = child.wait_with_output().unwrap();
+    let err = stderr(&out);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    #[cfg(target_os = "linux")]
+    {
+        let full = std::fs::File::create("/dev/full").unwrap();
+        let out = bin()
+            .args(["quartic", "examples/tailless-delta-45.toml"])
+            .stdout(full)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(IO));
+        assert!(
+            stderr(&out).contains("cannot write `standard output`"),
+            "{}",
+            stderr(&out)
+        );
+    }
+}

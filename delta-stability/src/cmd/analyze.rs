@@ -6,6 +6,7 @@ use crate::cmd::quartic::analysis_json;
 use crate::config::{self, limits};
 use crate::diag::{InputError, num};
 use crate::fmt::sig;
+use crate::output::print;
 use crate::page::analysis_page;
 use serde_json::{Value, json};
 use stability_core::Derivatives;
@@ -54,15 +55,15 @@ pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
             .into());
     }
     for w in &r.warnings {
-        eprintln!("warning: {w}");
+        crate::output::warn(&format!("warning: {w}"));
     }
     if json_out {
-        println!(
-            "{}",
+        print(&format!(
+            "{}\n",
             serde_json::to_string_pretty(&to_json(&cfg, &r)).unwrap_or_default()
-        );
+        ))?;
     } else {
-        print!("{}", page(&cfg, &r));
+        print(&page(&cfg, &r))?;
     }
     Ok(())
 }

@@ -10,6 +10,7 @@ use crate::diag::{InputError, num};
 use crate::input::rows::{DERIVATIVES, FLIGHT, QUARTIC};
 use crate::input::tabled::uses_parameter;
 use crate::input::{self, DerivativeFile};
+use crate::output::print;
 use serde_json::{Value, json};
 use stability_core::notation::{Notation, Values, tables};
 use std::fmt::Write;
@@ -17,7 +18,7 @@ use std::fmt::Write;
 pub fn run(from: NotationArg, to: Notation, file: &str, json_out: bool) -> Result<(), Failure> {
     let input = input::read(file)?;
     for w in &input.warnings {
-        eprintln!("warning: {w}");
+        crate::output::warn(&format!("warning: {w}"));
     }
     if input.notation != from.name() {
         return Err(InputError::file(
@@ -33,9 +34,12 @@ pub fn run(from: NotationArg, to: Notation, file: &str, json_out: bool) -> Resul
     let values = converted(&input, to)?;
     if json_out {
         let out = to_json(&input, from.name(), to, &values);
-        println!("{}", serde_json::to_string_pretty(&out).unwrap_or_default());
+        print(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&out).unwrap_or_default()
+        ))?;
     } else {
-        print!("{}", to_toml(&input, from.name(), to, &values));
+        print(&to_toml(&input, from.name(), to, &values))?;
     }
     Ok(())
 }

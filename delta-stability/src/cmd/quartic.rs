@@ -4,6 +4,7 @@
 
 use crate::Failure;
 use crate::input::{self, DerivativeFile, rows};
+use crate::output::print;
 use crate::page::analysis_page;
 use serde_json::{Value, json};
 use stability_core::analysis::{Analysis, AnalysisError};
@@ -13,7 +14,7 @@ use stability_core::modes::Mode;
 pub fn run(file: &str, json: bool) -> Result<(), Failure> {
     let input = input::read(file)?;
     for w in &input.warnings {
-        eprintln!("warning: {w}");
+        crate::output::warn(&format!("warning: {w}"));
     }
     let analysis = Analysis::of(&input.derivatives)
         .map_err(|e| input.error_at(blame(&input, &e), e.to_string()))?;
@@ -27,12 +28,12 @@ pub fn run(file: &str, json: bool) -> Result<(), Failure> {
             .into());
     }
     if json {
-        println!(
-            "{}",
+        print(&format!(
+            "{}\n",
             serde_json::to_string_pretty(&to_json(&input, &analysis)).unwrap_or_default()
-        );
+        ))?;
     } else {
-        print!("{}", table(&input, &analysis));
+        print(&table(&input, &analysis))?;
     }
     Ok(())
 }

@@ -97,14 +97,14 @@ pub fn run(out: &Path) -> Result<(), Failure> {
     }
     dir.commit().map_err(|e| write_error(out, &e))?;
     bar.finish_and_clear();
-    println!(
-        "wrote {} figures (SVG and CSV), summary.json and index.html to {}",
+    let mut text = format!(
+        "wrote {} figures (SVG and CSV), summary.json and index.html to {}\n",
         plates.len(),
         out.display()
     );
     for w in &findings.wings {
-        println!(
-            "  {}° delta: short period divergent for M in {}; more than one cycle to halve for M in {}; smallest largest-μ₁ {}",
+        text.push_str(&format!(
+            "  {}° delta: short period divergent for M in {}; more than one cycle to halve for M in {}; smallest largest-μ₁ {}\n",
             w.sweep_deg,
             summary::show_intervals(&w.unstable),
             summary::show_intervals(&w.fails),
@@ -113,7 +113,7 @@ pub fn run(out: &Path) -> Result<(), Failure> {
                 sig(v, 3),
                 sig(m, 3)
             ))
-        );
+        ));
     }
-    Ok(())
+    crate::output::print(&text)
 }

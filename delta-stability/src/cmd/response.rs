@@ -8,7 +8,7 @@ use crate::diag::{InputError, num};
 use crate::files::write_error;
 use crate::fmt::sig;
 use crate::input::{self, DerivativeFile, rows};
-use crate::output::atomic_write;
+use crate::output::{atomic_write, print};
 use crate::plot::{Figure, Series};
 use stability_core::response::{Input, ResponseError, Sample, Simplifications, StateSpace, TwoDof};
 use std::fmt::Write;
@@ -39,7 +39,7 @@ struct Response {
 pub fn run(o: &Options) -> Result<(), Failure> {
     let file = input::read(&o.file)?;
     for w in &file.warnings {
-        eprintln!("warning: {w}");
+        crate::output::warn(&format!("warning: {w}"));
     }
     let r = respond(o, &file)?;
     let tau = file.dimensional.map(|d| d.tau());
@@ -56,10 +56,10 @@ pub fn run(o: &Options) -> Result<(), Failure> {
             .map_err(|e| write_error(Path::new(path), &e))?;
     }
     if o.csv.is_none() && o.svg.is_none() {
-        print!("{csv}");
+        print(&csv)?;
     } else if let Some(last) = r.samples.last() {
-        println!(
-            "{} samples from t̂ = 0 to {}{}; final ŵ = {}, θ = {}",
+        let mut text = format!(
+            "{} samples from t̂ = 0 to {}{}; final ŵ = {}, θ = {}\n",
             r.samples.len(),
             sig(last.t, 4),
             tau.map(|t| format!(" ({} s)", sig(o.until * t, 4)))
@@ -68,8 +68,9 @@ pub fn run(o: &Options) -> Result<(), Failure> {
             sig(last.theta, 5),
         );
         for p in [&o.csv, &o.svg].into_iter().flatten() {
-            println!("wrote {p}");
+            text.push_str(&format!("wrote {p}\n"));
         }
+        print(&text)?;
     }
     Ok(())
 }
@@ -95,7 +96,7 @@ fn respond(o: &Options, file: &DerivativeFile) -> Result<Response, InputError> {
         neglect_u: o.neglect_u,
     };
     let ss = StateSpace::new(&file.derivatives, simp).map_err(|e| match e {
-        ResponseError::SingularMass => file.error_at(rows::Z_WDOT, e.to_string()),
+        ResponseError::SingularMass { .. } => file.error_at(rows::Z_WDOT, e.to_string()),
         _ => bad(e.to_string()),
     })?;
     let samples = ss

@@ -465,8 +465,7 @@ pub fn run(o: &Options) -> Result<(), Failure> {
     }
     file.commit().map_err(write_err)?;
     bar.finish_and_clear();
-    println!("wrote {total} design points to {}", o.output);
-    Ok(())
+    crate::output::print(&format!("wrote {total} design points to {}\n", o.output))
 }
 
 /// Evaluates the grid in chunks, writing chunk k while chunk k + 1 is

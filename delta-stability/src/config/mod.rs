@@ -280,7 +280,7 @@ impl Config {
             CaseError::Damping(DampingError::Sweep(_)) => "[planform] sweep",
             CaseError::Damping(DampingError::NonFinite { .. }) => "[flight] cg",
             CaseError::Damping(_) => "[model] damping",
-            CaseError::Input(_) | CaseError::Analysis(_) => "[flight]",
+            _ => "[flight]",
         };
         self.error_at(field, e.to_string())
     }
