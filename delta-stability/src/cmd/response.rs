@@ -96,7 +96,7 @@ fn respond(o: &Options, file: &DerivativeFile) -> Result<Response, InputError> {
         neglect_u: o.neglect_u,
     };
     let ss = StateSpace::new(&file.derivatives, simp).map_err(|e| match e {
-        ResponseError::SingularMass { .. } => file.error_at(rows::Z_WDOT, e.to_string()),
+        ResponseError::SingularMass => file.error_at(rows::Z_WDOT, e.to_string()),
         _ => bad(e.to_string()),
     })?;
     let samples = ss
