@@ -891,3 +891,43 @@ fn sweep_points_are_those_analyze_computes_alone() {
         }
     }
 }
+
+#[test]
+fn closed_choices_are_listed_in_help_from_the_library() {
+    let help = common::stdout(&run_ok(&["analyze", "--help"]));
+    for t in stability_core::damping::Theory::ALL {
+        assert!(
+            help.contains(&format!("- {}:", t.name())),
+            "{}\n{help}",
+            t.name()
+        );
+        assert!(help.contains(t.equations()), "{}", t.equations());
+    }
+    assert!(help.contains("- faired:"), "{help}");
+    let help = common::stdout(&run_ok(&["convert", "--help"]));
+    for n in stability_core::notation::Notation::all() {
+        assert!(help.contains(&format!("- {}:", n.name())), "{}", n.name());
+    }
+    assert!(
+        help.contains("- avl:") && help.contains("read only"),
+        "{help}"
+    );
+    let help = common::stdout(&run_ok(&["response", "--help"]));
+    assert!(
+        help.contains("- step:") && help.contains("- initial:"),
+        "{help}"
+    );
+    // avl is read, never written
+    let out = run_err(
+        &[
+            "convert",
+            "--from",
+            "avl",
+            "--to",
+            "avl",
+            "examples/avl-tailless-delta.toml",
+        ],
+        2,
+    );
+    assert!(stderr(&out).contains("'avl'"), "{}", stderr(&out));
+}

@@ -32,6 +32,11 @@ fn check_target(out: &Path) -> Result<(), Failure> {
         return Ok(());
     };
     let refuse = |why: String| Failure::Io(IoError::new("will not replace", out, why));
+    if meta.file_type().is_symlink() {
+        return Err(refuse(
+            "it is a symbolic link; give the directory it points to".into(),
+        ));
+    }
     if !meta.is_dir() {
         return Err(refuse("it is not a directory".into()));
     }
