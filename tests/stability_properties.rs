@@ -7,6 +7,7 @@ use nalgebra::DMatrix;
 use num_complex::Complex64;
 use proptest::prelude::*;
 use stability_core::analysis::Analysis;
+use stability_core::examples::tailless_delta_45;
 use stability_core::modes::ModeName;
 use stability_core::response::{Simplifications, StateSpace};
 use stability_core::sensitivity::{mode_sensitivities, root_sensitivities};
@@ -114,23 +115,7 @@ fn sensitivities_agree_with_finite_differences() {
 /// x_u and the phugoid-only terms must not.
 #[test]
 fn the_short_period_damping_is_driven_by_m_q_and_z_w() {
-    let d = Derivatives {
-        x_u: -0.03,
-        x_w: 0.25,
-        x_wdot: 0.0,
-        x_q: 0.0,
-        z_u: -0.62,
-        z_w: -3.2,
-        z_wdot: -0.6,
-        z_q: -1.5,
-        m_u: 0.0,
-        m_w: -0.55,
-        m_wdot: -0.25,
-        m_q: -0.6,
-        c_l: 0.3,
-        mu1: 50.0,
-        i_b: 0.08,
-    };
+    let d = tailless_delta_45();
     let a = Analysis::of(&d).expect("analysis");
     let sp = a
         .modes

@@ -10,6 +10,7 @@ use delta_stability::args::{
     DampingArg, NotationArg, ResponseInput, TargetNotation, finite, positive,
 };
 use delta_stability::cmd;
+use stability_core::response::MAX_STEPS;
 
 /// The exit statuses and the limits on input files, after every command's
 /// help.
@@ -94,8 +95,8 @@ enum Command {
         /// End time, in units of τ (positive).
         #[arg(long, value_parser = positive)]
         until: f64,
-        /// Number of intervals (1 to 10⁷).
-        #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=10_000_000))]
+        /// Number of intervals (1 to 10⁶).
+        #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=MAX_STEPS as i64))]
         steps: u32,
         /// Size of the moment step m₀ (eqs 2 units; finite).
         #[arg(long, default_value_t = 1.0, value_parser = finite)]

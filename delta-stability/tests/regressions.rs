@@ -156,6 +156,7 @@ fn response_rejects_values_that_are_not_finite() {
 fn a_response_that_cannot_reach_until_is_an_error_that_says_why() {
     let dir = Scratch::new();
     let csv = dir.path().join("r.csv");
+    // a step far too long for the matrix exponential: refused, with advice
     let args = [
         "response",
         "examples/tailless-delta-45.toml",
@@ -166,11 +167,32 @@ fn a_response_that_cannot_reach_until_is_an_error_that_says_why() {
     ];
     let err = stderr(&run_err(&args, INPUT));
     assert!(
-        err.contains("stops at t̂ = 0") && err.contains("--until"),
+        err.contains("--until 1e308") && err.contains("too long"),
         "{err}"
     );
     assert_short(&err);
     assert!(!csv.exists(), "a one-sample file was written");
+    // a divergent motion that overflows f64 before --until: where it stopped
+    let divergent = dir.write(
+        "div.toml",
+        example("tailless-delta-45.toml").replace("m_w = -0.55", "m_w = 5.0"),
+    );
+    let args = [
+        "response",
+        path(&divergent),
+        "--until",
+        "1000",
+        "--steps",
+        "100000",
+        "--csv",
+        path(&csv),
+    ];
+    let err = stderr(&run_err(&args, INPUT));
+    assert!(
+        err.contains("stops at t̂ = ") && err.contains("diverged"),
+        "{err}"
+    );
+    assert!(!csv.exists(), "a short file was written");
 }
 
 #[test]

@@ -9,6 +9,7 @@
 //! monotone cubic Hermite interpolation) or from a named, documented default
 //! method ([`defaults`]); `docs/models.md` sets out the choices.
 
+use crate::display::Num;
 use crate::geometry::Planform;
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -35,22 +36,29 @@ pub enum AeroError {
     #[error("the table's Mach and value columns have different lengths ({0} and {1})")]
     Lengths(usize, usize),
     #[error(
-        "row {row}: Mach {mach} does not increase on the row before ({previous}); the Mach column must increase strictly"
+        "row {row}: Mach {} does not increase on the row before ({}); the Mach column must increase strictly",
+        Num(*mach), Num(*previous)
     )]
     NotIncreasing {
         row: usize,
         mach: f64,
         previous: f64,
     },
-    #[error("row {row}: {what} {value} is not a finite number")]
+    #[error("row {row}: {what} {} is not a finite number", Num(*value))]
     NonFinite {
         row: usize,
         what: &'static str,
         value: f64,
     },
-    #[error("Mach {mach} is outside the table's range [{lo}, {hi}] (tables are not extrapolated)")]
+    #[error(
+        "Mach {} is outside the table's range [{}, {}] (tables are not extrapolated)",
+        Num(*mach), Num(*lo), Num(*hi)
+    )]
     OutsideTable { mach: f64, lo: f64, hi: f64 },
-    #[error("Mach {0} is outside the default models' range [0, 3]")]
+    #[error(
+        "Mach {} is outside the default models' range [0, {}]",
+        Num(*.0), defaults::MACH_MAX
+    )]
     OutsideDefaults(f64),
 }
 
@@ -186,6 +194,8 @@ pub mod defaults {
     pub const SUBSONIC_LIMIT: f64 = 0.8;
     /// Above this Mach number the supersonic methods apply.
     pub const SUPERSONIC_LIMIT: f64 = 1.2;
+    /// The default models hold for 0 ≤ M ≤ this.
+    pub const MACH_MAX: f64 = 3.0;
     /// Mean weighted thickness-chord ratio of the report's sections, eq (23):
     /// τ² = 0.0036.
     pub const THICKNESS: f64 = 0.06;
@@ -287,7 +297,13 @@ pub mod defaults {
     /// suction); through the transonic range it is exactly §6's rule, the
     /// incompressible value times a_incomp/a.
     pub fn drag_due_to_lift(p: &Planform, m: f64) -> Value {
-        let a = lift_slope(p, m);
+        no_suction(lift_slope(p, m))
+    }
+
+    /// K = 1/a and dK/dM = −(da/dM)/a²: the drag due to lift with no
+    /// leading-edge suction, from a lift slope (the model's own, tables
+    /// included).
+    pub fn no_suction(a: Value) -> Value {
         Value::new(1.0 / a.value, -a.d_mach / (a.value * a.value))
     }
 
@@ -372,7 +388,7 @@ impl AeroModel {
         let get = |s: &Source, f: fn(&Planform, f64) -> Value| match s {
             Source::Table(t) => t.at(m),
             Source::Default => {
-                if (0.0..=3.0).contains(&m) {
+                if (0.0..=defaults::MACH_MAX).contains(&m) {
                     Ok(f(p, m))
                 } else {
                     Err(AeroError::OutsideDefaults(m))
@@ -383,10 +399,7 @@ impl AeroModel {
         let drag_due_to_lift = match &self.drag_due_to_lift {
             Source::Table(t) => t.at(m)?,
             // K = 1/a with the model's own lift slope (tables included)
-            Source::Default => Value::new(
-                1.0 / lift_slope.value,
-                -lift_slope.d_mach / (lift_slope.value * lift_slope.value),
-            ),
+            Source::Default => defaults::no_suction(lift_slope),
         };
         Ok(Coefficients {
             mach: m,

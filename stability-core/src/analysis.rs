@@ -4,6 +4,7 @@
 
 use crate::classical::{first_approximation, refine, relative_errors};
 use crate::criteria::{DampingStandard, FlyingQualities, Routh, ShortPeriodApproximation, Verdict};
+use crate::display::Num;
 use crate::modes::Modes;
 use crate::roots::{RootsError, solve_quartic};
 use crate::{Derivatives, Quartic};
@@ -13,19 +14,77 @@ use serde::Serialize;
 /// Why a derivative set has no analysis.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum AnalysisError {
-    #[error("a derivative or parameter is not a finite number")]
-    NonFiniteInput,
-    #[error("μ₁ and i_B must be positive (μ₁ = {mu1}, i_B = {i_b})")]
-    NonPositiveParameter { mu1: f64, i_b: f64 },
+    #[error("{input} = {} is not a finite number", Num(*value))]
+    NonFinite { input: &'static str, value: f64 },
+    #[error("{input} must be positive, not {}", Num(*value))]
+    NotPositive { input: &'static str, value: f64 },
     #[error(
-        "A = 1 − z_ẇ/μ₁ = 0 (z_ẇ = μ₁ = {0}): the quartic degenerates to a cubic and the equations of motion have no solution for ẇ"
+        "A = 1 − z_ẇ/μ₁ = {} (z_ẇ = {}, μ₁ = {}) is within {} of zero: the quartic degenerates to a cubic and the equations of motion have no solution for ẇ",
+        Num(*a), Num(*z_wdot), Num(*mu1), Num(LEADING_COEFFICIENT_MIN)
     )]
-    LeadingCoefficientZero(f64),
-    #[error("the quartic's coefficients overflow: the derivatives are too large")]
-    Overflow,
+    LeadingCoefficientZero { a: f64, z_wdot: f64, mu1: f64 },
+    #[error(
+        "the quartic's coefficient {coefficient} overflows f64 (its terms exceed {}): the derivatives are too large",
+        Num(f64::MAX)
+    )]
+    Overflow { coefficient: &'static str },
     #[error("the roots could not be computed: {0}")]
     Roots(#[from] RootsError),
+    #[error(
+        "Routh's test ({}) contradicts the roots (largest real part {}): please report this quartic",
+        if *routh_stable { "stable" } else { "unstable" },
+        Num(*largest_re)
+    )]
+    RouthDisagrees { routh_stable: bool, largest_re: f64 },
 }
+
+/// A root with |r| ≤ ON_AXIS·|λ| lies on the imaginary axis to working
+/// precision: the sign of its real part may be beyond what the roots'
+/// accuracy (normwise, ~ε|λ| times the condition) resolves, and Routh's
+/// verdict is not checked against it.
+pub const ON_AXIS: f64 = 1e-9;
+
+/// |A| at or below this is a degenerate quartic ([`AnalysisError::LeadingCoefficientZero`]).
+pub const LEADING_COEFFICIENT_MIN: f64 = 1e-12;
+
+/// Routh's verdict against the roots' real parts: they must agree unless
+/// the quartic is on the stability boundary to working precision (R
+/// marginal, or a root within [`ON_AXIS`] of the axis). A disagreement
+/// otherwise would be a wrong answer: an error, never a result.
+fn agree(routh: &Routh, roots: &[Complex64; 4]) -> Result<(), AnalysisError> {
+    let on_axis = roots.iter().any(|z| z.re.abs() <= ON_AXIS * z.norm());
+    let largest_re = roots.iter().map(|z| z.re).fold(f64::NEG_INFINITY, f64::max);
+    let decaying = largest_re < 0.0;
+    if routh.marginal || on_axis || routh.stable == decaying {
+        Ok(())
+    } else {
+        Err(AnalysisError::RouthDisagrees {
+            routh_stable: routh.stable,
+            largest_re,
+        })
+    }
+}
+
+/// A derivative set's inputs checked: every one finite, μ₁ and i_B
+/// positive.
+pub fn check(d: &Derivatives) -> Result<(), AnalysisError> {
+    let values = d.quartic_input_values();
+    for (input, value) in Derivatives::QUARTIC_INPUTS.into_iter().zip(values) {
+        if !value.is_finite() {
+            return Err(AnalysisError::NonFinite { input, value });
+        }
+    }
+    for (input, value) in [("mu1", d.mu1), ("i_b", d.i_b)] {
+        if value <= 0.0 {
+            return Err(AnalysisError::NotPositive { input, value });
+        }
+    }
+    Ok(())
+}
+
+/// Standard gravity g₀ = 9.806 65 m/s² (exact, by definition: 3rd CGPM,
+/// 1901; ISO 80000-3).
+pub const STANDARD_GRAVITY: f64 = 9.806_65;
 
 /// The flight condition in dimensional form, for times in seconds.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -53,10 +112,10 @@ impl Dimensional {
         self.mass / (0.5 * self.rho * self.s * self.chord)
     }
 
-    /// The lift coefficient of level flight, W/(½ρV²S), eq (24), with g =
-    /// 9.80665 m/s².
+    /// The lift coefficient of level flight, W/(½ρV²S), eq (24), with
+    /// W = m·[`STANDARD_GRAVITY`].
     pub fn c_l(&self) -> f64 {
-        self.mass * 9.806_65 / (0.5 * self.rho * self.v * self.v * self.s)
+        self.mass * STANDARD_GRAVITY / (0.5 * self.rho * self.v * self.v * self.s)
     }
 }
 
@@ -111,23 +170,23 @@ impl Analysis {
     }
 
     fn with(d: &Derivatives, classical: bool) -> Result<Analysis, AnalysisError> {
-        if !d.quartic_input_values().iter().all(|v| v.is_finite()) {
-            return Err(AnalysisError::NonFiniteInput);
-        }
-        if !(d.mu1 > 0.0 && d.i_b > 0.0) {
-            return Err(AnalysisError::NonPositiveParameter {
-                mu1: d.mu1,
-                i_b: d.i_b,
+        check(d)?;
+        let quartic = Quartic::from_derivatives(d);
+        if let Some(k) = quartic.to_array().iter().position(|c| !c.is_finite()) {
+            return Err(AnalysisError::Overflow {
+                coefficient: Derivatives::QUARTIC_COEFFICIENTS[k],
             });
         }
-        let quartic = Quartic::from_derivatives(d);
-        if !quartic.is_finite() {
-            return Err(AnalysisError::Overflow);
-        }
-        if quartic.a.abs() <= 1e-12 {
-            return Err(AnalysisError::LeadingCoefficientZero(d.mu1));
+        if quartic.a.abs() <= LEADING_COEFFICIENT_MIN {
+            return Err(AnalysisError::LeadingCoefficientZero {
+                a: quartic.a,
+                z_wdot: d.z_wdot,
+                mu1: d.mu1,
+            });
         }
         let roots = solve_quartic(quartic.to_array())?;
+        let routh = Routh::of(&quartic);
+        agree(&routh, &roots)?;
         let modes = Modes::identify(&roots, d.mu1);
         let classical = match (modes.short_period(), modes.phugoid()) {
             _ if !classical => None,
@@ -149,7 +208,7 @@ impl Analysis {
         };
         Ok(Analysis {
             quartic,
-            routh: Routh::of(&quartic),
+            routh,
             roots,
             verdict: Verdict::of(&modes),
             modes,

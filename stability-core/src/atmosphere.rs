@@ -38,7 +38,7 @@ use serde::Serialize;
 
 /// Standard acceleration of gravity g₀ = 9.80665 m/s²; also g₀′, the
 /// constant that defines the geopotential metre (m²/(s²·m′)).
-pub const G0: f64 = 9.806_65;
+pub const G0: f64 = crate::analysis::STANDARD_GRAVITY;
 /// Universal gas constant R* = 8.31432 × 10³ N·m/(kmol·K), the standard's
 /// value (not the later CODATA one).
 pub const R_STAR: f64 = 8.314_32e3;

@@ -12,7 +12,11 @@
 use crate::Derivatives;
 use crate::aero::{AeroError, AeroModel, Coefficients, level_flight_lift};
 use crate::analysis::{Analysis, AnalysisError};
-use crate::damping::{Damping, DampingError, Theory, WingInput, damping_derivatives, x_q, x_wdot};
+use crate::damping::{
+    Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,
+    damping_derivatives, x_q, x_wdot,
+};
+use crate::display::Num;
 use crate::geometry::Planform;
 use crate::stiffness::{Stiffness, stiffness};
 use crate::warnings::{Warning, Warnings};
@@ -47,6 +51,12 @@ impl DampingModel {
     /// derivatives of §5–7. So a sweep over them need evaluate the
     /// aerodynamics once per planform, Mach number and c.g.
     pub fn depends_on_mass(self) -> bool {
+        self.uses_frequency()
+    }
+
+    /// Whether the model's derivatives depend on the frequency parameter ω̄
+    /// (Mangler's (39)–(40)).
+    pub fn uses_frequency(self) -> bool {
         matches!(self, DampingModel::Theory(t) if t.uses_frequency())
     }
 
@@ -58,16 +68,19 @@ impl DampingModel {
     }
 
     /// `faired` or a theory's name.
-    pub fn parse(s: &str) -> Result<Self, String> {
+    pub fn parse(s: &str) -> Result<Self, UnknownDampingModel> {
         if s == "faired" {
             Ok(DampingModel::Faired)
         } else {
-            s.parse::<Theory>()
-                .map(DampingModel::Theory)
-                .map_err(|e| format!("{e}, or `faired` (the default)"))
+            Ok(DampingModel::Theory(s.parse::<Theory>()?))
         }
     }
 }
+
+/// A damping model's name that is neither `faired` nor a theory's.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{0}, or `faired` (the default)")]
+pub struct UnknownDampingModel(#[from] pub UnknownTheory);
 
 /// A design point.
 #[derive(Debug, Clone, PartialEq)]
@@ -122,11 +135,48 @@ pub struct CaseResult {
     pub warnings: Warnings,
 }
 
+/// The inputs of a design point that [`evaluate`] checks before use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CaseInput {
+    Mach,
+    Cg,
+    Mu1,
+    IB,
+    ClM2,
+}
+
+impl CaseInput {
+    /// The name of the field in [`Case`] and in configs.
+    pub fn name(self) -> &'static str {
+        match self {
+            CaseInput::Mach => "mach",
+            CaseInput::Cg => "cg",
+            CaseInput::Mu1 => "mu1",
+            CaseInput::IB => "i_b",
+            CaseInput::ClM2 => "cl_m2",
+        }
+    }
+}
+
+impl std::fmt::Display for CaseInput {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            CaseInput::Mach => "the Mach number",
+            CaseInput::Cg => "the c.g. position h",
+            CaseInput::Mu1 => "the relative density μ₁ (mu1)",
+            CaseInput::IB => "the pitching inertia i_B (i_b)",
+            CaseInput::ClM2 => "C_L·M² (cl_m2, eq 24)",
+        })
+    }
+}
+
 /// Why a design point has no result.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CaseError {
-    #[error("{0}")]
-    Input(String),
+    #[error("{quantity} must be a finite number, not {}", Num(*value))]
+    NonFinite { quantity: CaseInput, value: f64 },
+    #[error("{quantity} must be positive, not {}", Num(*value))]
+    NotPositive { quantity: CaseInput, value: f64 },
     #[error("aerodynamic model: {0}")]
     Aero(#[from] AeroError),
     #[error("damping theory: {0}")]
@@ -135,45 +185,76 @@ pub enum CaseError {
     Analysis(#[from] AnalysisError),
 }
 
-fn damping_at(case: &Case, wing: &WingInput, omega_bar: Option<f64>) -> Result<Damping, CaseError> {
-    let (h, m) = (case.h, case.mach);
-    match case.damping {
-        DampingModel::Theory(t) => Ok(damping_derivatives(t, wing, h, m, omega_bar)?),
-        DampingModel::Faired => {
-            let slender = damping_derivatives(Theory::Slender, wing, h, m, None)?;
-            if m <= 1.0 {
-                return Ok(Damping {
-                    theory: Theory::Slender,
-                    ..slender
-                });
+impl Case {
+    /// Check the flight condition: every input finite, and M, μ₁, i_B,
+    /// C_L·M² positive.
+    pub fn check(&self) -> Result<(), CaseError> {
+        let inputs = [
+            (CaseInput::Mach, self.mach),
+            (CaseInput::Cg, self.h),
+            (CaseInput::Mu1, self.mu1),
+            (CaseInput::IB, self.i_b),
+            (CaseInput::ClM2, self.cl_m2),
+        ];
+        for (quantity, value) in inputs {
+            if !value.is_finite() {
+                return Err(CaseError::NonFinite { quantity, value });
             }
-            let cot = 1.0 / wing.sweep_le.tan();
-            let sonic = (1.0 + 1.0 / (cot * cot)).sqrt();
-            let mut warnings = Warnings::default();
-            let m_sup = if m >= sonic {
-                warnings.push(Warning::FairedHeldAtSonicEdge { sonic });
-                sonic * (1.0 - 1e-9)
-            } else {
-                m
-            };
-            let sup = damping_derivatives(Theory::Supersonic, wing, h, m_sup, None)?;
-            let x = ((m - 1.0) / 0.2).clamp(0.0, 1.0);
-            let w = x * x * (3.0 - 2.0 * x);
-            let blend = |a: f64, b: f64| (1.0 - w) * a + w * b;
-            let (a, b) = (slender.derivatives, sup.derivatives);
-            Ok(Damping {
-                theory: Theory::Supersonic,
-                derivatives: crate::damping::DampingDerivatives {
-                    z_q: blend(a.z_q, b.z_q),
-                    z_wdot: blend(a.z_wdot, b.z_wdot),
-                    m_q: blend(a.m_q, b.m_q),
-                    m_wdot: blend(a.m_wdot, b.m_wdot),
-                },
-                fig18: sup.fig18,
-                warnings,
-            })
         }
+        for (quantity, value) in inputs {
+            if quantity != CaseInput::Cg && value <= 0.0 {
+                return Err(CaseError::NotPositive { quantity, value });
+            }
+        }
+        Ok(())
     }
+}
+
+/// The faired model's blend of slender-wing theory (37) into supersonic
+/// theory (36): w = 3x² − 2x³, x = (M − 1)/[`FAIRING_WIDTH`].
+pub const FAIRING_WIDTH: f64 = 0.2;
+
+/// The damping derivatives of the case's model at ω̄ (frequency-dependent
+/// theories only).
+fn damping_at(case: &Case, wing: &WingInput, omega_bar: Option<f64>) -> Result<Damping, CaseError> {
+    match case.damping {
+        DampingModel::Theory(t) => Ok(damping_derivatives(t, wing, case.h, case.mach, omega_bar)?),
+        DampingModel::Faired => faired(wing, case.h, case.mach),
+    }
+}
+
+/// [`DampingModel::Faired`]: (37) to M = 1, blended into (36) over
+/// 1 ≤ M ≤ 1 + [`FAIRING_WIDTH`], (36) beyond — held at its values at the
+/// sonic leading edge past it.
+fn faired(wing: &WingInput, h: f64, m: f64) -> Result<Damping, CaseError> {
+    let slender = damping_derivatives(Theory::Slender, wing, h, m, None)?;
+    if m <= 1.0 {
+        return Ok(slender);
+    }
+    let sonic = crate::geometry::sonic_leading_edge_mach(wing.sweep_le);
+    let mut warnings = Warnings::default();
+    let m_sup = if m >= sonic {
+        warnings.push(Warning::FairedHeldAtSonicEdge { sonic });
+        sonic * (1.0 - 1e-9)
+    } else {
+        m
+    };
+    let sup = damping_derivatives(Theory::Supersonic, wing, h, m_sup, None)?;
+    let x = ((m - 1.0) / FAIRING_WIDTH).clamp(0.0, 1.0);
+    let w = x * x * (3.0 - 2.0 * x);
+    let blend = |a: f64, b: f64| (1.0 - w) * a + w * b;
+    let (a, b) = (slender.derivatives, sup.derivatives);
+    Ok(Damping {
+        theory: Theory::Supersonic,
+        derivatives: DampingDerivatives {
+            z_q: blend(a.z_q, b.z_q),
+            z_wdot: blend(a.z_wdot, b.z_wdot),
+            m_q: blend(a.m_q, b.m_q),
+            m_wdot: blend(a.m_wdot, b.m_wdot),
+        },
+        fig18: sup.fig18,
+        warnings,
+    })
 }
 
 /// Evaluate a design point.
@@ -188,123 +269,15 @@ pub fn evaluate_point(case: &Case) -> Result<CaseResult, CaseError> {
 }
 
 fn evaluate_with(case: &Case, classical: bool) -> Result<CaseResult, CaseError> {
-    let analyse = if classical {
-        Analysis::of
+    case.check()?;
+    let point = Point::new(case, classical)?;
+    let (run, frequency) = if case.damping.uses_frequency() {
+        let (run, f) = point.iterate_frequency()?;
+        (run, Some(f))
     } else {
-        Analysis::without_classical
+        (point.run(case.omega_bar)?, None)
     };
-    for (name, v) in [
-        ("Mach number", case.mach),
-        ("c.g. h", case.h),
-        ("mu1", case.mu1),
-        ("i_b", case.i_b),
-        ("C_L·M²", case.cl_m2),
-    ] {
-        if !v.is_finite() {
-            return Err(CaseError::Input(format!(
-                "{name} must be a finite number, not {v}"
-            )));
-        }
-    }
-    if case.mach <= 0.0 {
-        return Err(CaseError::Input(format!(
-            "the Mach number must be positive, not {}",
-            case.mach
-        )));
-    }
-    if !(case.mu1 > 0.0 && case.i_b > 0.0 && case.cl_m2 > 0.0) {
-        return Err(CaseError::Input(
-            "mu1, i_b and C_L·M² must be positive".into(),
-        ));
-    }
-    let p = &case.planform;
-    let coefficients = case.aero.at(p, case.mach)?;
-    let c_l = level_flight_lift(case.cl_m2, case.mach).value;
-    let st = stiffness(&coefficients, c_l, case.h);
-    let wing = WingInput::from(p);
-    let h0 = coefficients.aerodynamic_centre.value;
-    let assemble = |d: &Damping| Derivatives {
-        x_u: st.x_u,
-        x_w: st.x_w,
-        x_wdot: x_wdot(h0, case.h, st.dcd_dalpha),
-        x_q: x_q(h0, case.h, st.x_w),
-        z_u: st.z_u,
-        z_w: st.z_w,
-        z_wdot: d.derivatives.z_wdot,
-        z_q: d.derivatives.z_q,
-        m_u: st.m_u,
-        m_w: st.m_w,
-        m_wdot: d.derivatives.m_wdot,
-        m_q: d.derivatives.m_q,
-        c_l,
-        mu1: case.mu1,
-        i_b: case.i_b,
-    };
-    let uses_frequency = matches!(case.damping, DampingModel::Theory(t) if t.uses_frequency());
-    let mut frequency = None;
-    let (damping, derivatives, analysis) = if uses_frequency {
-        let start = case.omega_bar.unwrap_or_else(|| {
-            if st.m_w < 0.0 {
-                (-st.m_w / (case.mu1 * case.i_b)).sqrt()
-            } else {
-                0.1
-            }
-        });
-        let run = |w: f64| -> Result<(Damping, Derivatives, Analysis), CaseError> {
-            let d = damping_at(case, &wing, Some(w))?;
-            let der = assemble(&d);
-            let a = analyse(&der)?;
-            Ok((d, der, a))
-        };
-        let first = run(start)?;
-        let cycles = |a: &Analysis| a.modes.short_period().and_then(|m| m.cycles_to_half);
-        let mut w = start;
-        let mut current = first.clone();
-        let mut iterations = 0;
-        let mut ok = !case.iterate_frequency;
-        if case.iterate_frequency {
-            for _ in 0..200 {
-                let Some(sp) = current.2.modes.short_period() else {
-                    break;
-                };
-                let target = sp.im / case.mu1;
-                if !(target > 0.0 && target.is_finite()) {
-                    break;
-                }
-                iterations += 1;
-                // under-relaxed fixed point (the map can overshoot)
-                let next = 0.5 * (w + target);
-                if (next - w).abs() <= 1e-12 * w {
-                    ok = true;
-                    break;
-                }
-                match run(next) {
-                    Ok(r) => {
-                        w = next;
-                        current = r;
-                    }
-                    Err(_) => break,
-                }
-            }
-        }
-        frequency = Some(FrequencyIteration {
-            initial: start,
-            converged: w,
-            iterations,
-            converged_ok: ok,
-            cycles_to_half_initial: cycles(&first.2),
-            cycles_to_half_converged: cycles(&current.2),
-            m_thetadot_initial: first.0.derivatives.m_thetadot(),
-            m_thetadot_converged: current.0.derivatives.m_thetadot(),
-        });
-        current
-    } else {
-        let d = damping_at(case, &wing, case.omega_bar)?;
-        let der = assemble(&d);
-        let a = analyse(&der)?;
-        (d, der, a)
-    };
-    let mut warnings = damping.warnings;
+    let mut warnings = run.damping.warnings.clone();
     if let Some(f) = &frequency
         && !f.converged_ok
     {
@@ -314,13 +287,140 @@ fn evaluate_with(case: &Case, classical: bool) -> Result<CaseResult, CaseError> 
         });
     }
     Ok(CaseResult {
-        coefficients,
-        c_l,
-        stiffness: st,
-        damping,
-        derivatives,
-        analysis,
+        coefficients: point.coefficients,
+        c_l: point.c_l,
+        stiffness: point.stiffness,
+        damping: run.damping,
+        derivatives: run.derivatives,
+        analysis: run.analysis,
         frequency,
         warnings,
     })
+}
+
+/// A design point's aerodynamics (§5–6), which do not depend on the
+/// damping theory or on ω̄.
+struct Point<'a> {
+    case: &'a Case,
+    coefficients: Coefficients,
+    c_l: f64,
+    stiffness: Stiffness,
+    wing: WingInput,
+    classical: bool,
+}
+
+/// The damping derivatives at one ω̄, the derivative set they complete and
+/// its analysis.
+#[derive(Clone)]
+struct Run {
+    damping: Damping,
+    derivatives: Derivatives,
+    analysis: Analysis,
+}
+
+impl<'a> Point<'a> {
+    fn new(case: &'a Case, classical: bool) -> Result<Self, CaseError> {
+        let coefficients = case.aero.at(&case.planform, case.mach)?;
+        let c_l = level_flight_lift(case.cl_m2, case.mach).value;
+        Ok(Point {
+            case,
+            coefficients,
+            c_l,
+            stiffness: stiffness(&coefficients, c_l, case.h),
+            wing: WingInput::from(&case.planform),
+            classical,
+        })
+    }
+
+    /// The derivative set of eqs (9)–(31) with these damping derivatives.
+    fn derivatives(&self, d: &DampingDerivatives) -> Derivatives {
+        let (st, h) = (&self.stiffness, self.case.h);
+        let h0 = self.coefficients.aerodynamic_centre.value;
+        Derivatives {
+            x_u: st.x_u,
+            x_w: st.x_w,
+            x_wdot: x_wdot(h0, h, st.dcd_dalpha),
+            x_q: x_q(h0, h, st.x_w),
+            z_u: st.z_u,
+            z_w: st.z_w,
+            z_wdot: d.z_wdot,
+            z_q: d.z_q,
+            m_u: st.m_u,
+            m_w: st.m_w,
+            m_wdot: d.m_wdot,
+            m_q: d.m_q,
+            c_l: self.c_l,
+            mu1: self.case.mu1,
+            i_b: self.case.i_b,
+        }
+    }
+
+    fn run(&self, omega_bar: Option<f64>) -> Result<Run, CaseError> {
+        let damping = damping_at(self.case, &self.wing, omega_bar)?;
+        let derivatives = self.derivatives(&damping.derivatives);
+        let analysis = if self.classical {
+            Analysis::of(&derivatives)?
+        } else {
+            Analysis::without_classical(&derivatives)?
+        };
+        Ok(Run {
+            damping,
+            derivatives,
+            analysis,
+        })
+    }
+
+    /// ω̄ iterated to the short period it produces, ω̄ = s/μ₁, by an
+    /// under-relaxed fixed point (the map can overshoot), from the case's
+    /// ω̄ or §9's √(−m_w/(μ₁i_B)).
+    fn iterate_frequency(&self) -> Result<(Run, FrequencyIteration), CaseError> {
+        let case = self.case;
+        let start = case.omega_bar.unwrap_or_else(|| {
+            let m_w = self.stiffness.m_w;
+            if m_w < 0.0 {
+                (-m_w / (case.mu1 * case.i_b)).sqrt()
+            } else {
+                0.1
+            }
+        });
+        let first = self.run(Some(start))?;
+        let (mut w, mut current, mut iterations) = (start, first.clone(), 0);
+        let mut ok = !case.iterate_frequency;
+        while case.iterate_frequency && iterations < 200 {
+            let Some(sp) = current.analysis.modes.short_period() else {
+                break;
+            };
+            let target = sp.im / case.mu1;
+            if !(target > 0.0 && target.is_finite()) {
+                break;
+            }
+            iterations += 1;
+            let next = 0.5 * (w + target);
+            if (next - w).abs() <= 1e-12 * w {
+                ok = true;
+                break;
+            }
+            match self.run(Some(next)) {
+                Ok(r) => (w, current) = (next, r),
+                Err(_) => break,
+            }
+        }
+        let cycles = |r: &Run| {
+            r.analysis
+                .modes
+                .short_period()
+                .and_then(|m| m.cycles_to_half)
+        };
+        let f = FrequencyIteration {
+            initial: start,
+            converged: w,
+            iterations,
+            converged_ok: ok,
+            cycles_to_half_initial: cycles(&first),
+            cycles_to_half_converged: cycles(&current),
+            m_thetadot_initial: first.damping.derivatives.m_thetadot(),
+            m_thetadot_converged: current.damping.derivatives.m_thetadot(),
+        };
+        Ok((current, f))
+    }
 }

@@ -241,14 +241,33 @@ mod tests {
     /// A=1, B=2.02, C=26.0501, D=0.5402, E=0.2626 (worked by hand).
     const Q: [f64; 5] = [1.0, 2.02, 26.0501, 0.5402, 0.2626];
 
+    /// The fixture's roots are what the tests below measure against: each
+    /// must make Q vanish, to the rounding of Q's decimal coefficients
+    /// (|Q(λ)| ≤ 4ε·Σ|cₖ||λ|^(4−k)), and a root moved by 1e-9 must not.
     #[test]
-    fn the_product_is_as_worked_by_hand() {
-        // B = 2 + 0.02; C = 26 + 0.0101 + 0.04; D = 2·0.0101 + 26·0.02;
-        // E = 26·0.0101
-        assert!((Q[1] - (2.0 + 0.02)).abs() < 1e-15);
-        assert!((Q[2] - (26.0 + 0.0101 + 2.0 * 0.02)).abs() < 1e-13);
-        assert!((Q[3] - (2.0 * 0.0101 + 26.0 * 0.02)).abs() < 1e-15);
-        assert!((Q[4] - 26.0 * 0.0101).abs() < 1e-15);
+    fn the_fixture_has_the_roots_it_claims() {
+        let q = |z: Complex64| (((z * Q[0] + Q[1]) * z + Q[2]) * z + Q[3]) * z + Q[4];
+        let scale = |z: Complex64| {
+            let n = z.norm();
+            Q.iter().fold(0.0, |acc, c| acc * n + c.abs())
+        };
+        for root in [
+            Complex64::new(-1.0, 5.0),
+            Complex64::new(-1.0, -5.0),
+            Complex64::new(-0.01, 0.1),
+            Complex64::new(-0.01, -0.1),
+        ] {
+            assert!(
+                q(root).norm() <= 4.0 * f64::EPSILON * scale(root),
+                "Q({root}) = {}",
+                q(root)
+            );
+            let moved = root * (1.0 + 1e-9);
+            assert!(
+                q(moved).norm() > 1e3 * f64::EPSILON * scale(moved),
+                "{moved}"
+            );
+        }
     }
 
     #[test]

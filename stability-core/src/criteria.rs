@@ -2,38 +2,88 @@
 //! standard (§8, eq 41), static and manoeuvre margins (§9, eq 42) and the
 //! MIL-F-8785C damping levels.
 
+pub use crate::modes::CYCLES_CONSTANT;
 use crate::modes::{Mode, ModeName, Modes, Origin};
 use crate::{Derivatives, Quartic};
 use serde::Serialize;
-use std::f64::consts::{LN_2, PI};
 
-/// The report's constant of eq (8): cycles to half amplitude = 0.11032·s/(−r);
-/// exactly ln 2/(2π).
-pub const CYCLES_CONSTANT: f64 = LN_2 / (2.0 * PI);
+/// The limit of §8 without the report's s ≈ √C: B = 2√(C/(1 + (2π/ln 2)²))
+/// = 0.21930·√C takes the pair λ² + Bλ + C exactly one cycle to halve
+/// (with k = ln 2/2π, r = −B/2 and s = √(C − B²/4), k·s/(−r) = 1 gives
+/// B = 2k√C/√(1 + k²)).
+fn one_cycle_exact() -> f64 {
+    let k = CYCLES_CONSTANT;
+    2.0 * k / (1.0 + k * k).sqrt()
+}
 
 // ------------------------------------------------------------------ §4 Routh
 
 /// Routh's test of §4.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Routh {
-    /// R = BCD − AD² − B²E.
+    /// R = BCD − AD² − B²E (±inf or 0 where it leaves f64's range; its
+    /// sign is exact even then).
     pub discriminant: f64,
     /// All of A, B, C, D, E and R have the same (strict) sign.
     pub stable: bool,
+    /// |R| is within its rounding error (8ε·(|BCD| + |AD²| + |B²E|)) of
+    /// zero: the motion is on the stability boundary to working precision,
+    /// and `stable` may go either way with the coefficients' last bits.
+    pub marginal: bool,
 }
 
 impl Routh {
     /// §4: "the necessary and sufficient conditions for stability are that
     /// all coefficients of the quartic and in addition Routh's discriminant
     /// R = BCD − AD² − B²E must be of the same sign".
+    ///
+    /// R's three products are formed with an exponent of their own
+    /// (`roots::binary::Wide`), so that neither overflow nor underflow can
+    /// change its sign: R is homogeneous (R(ρ⁴A, ρ³B, ρ²C, ρD, E) = ρ⁶R),
+    /// so its sign is the same at every scale at which the roots are
+    /// found, and the verdict agrees with them.
     pub fn of(q: &Quartic) -> Routh {
-        let r = q.b * q.c * q.d - q.a * q.d * q.d - q.b * q.b * q.e;
-        let all = [q.a, q.b, q.c, q.d, q.e, r];
-        let stable = all.iter().all(|&x| x > 0.0) || all.iter().all(|&x| x < 0.0);
+        let (sum, abs, r) = Routh::discriminant(q);
+        let sign = |x: f64| {
+            if x > 0.0 {
+                1
+            } else if x < 0.0 {
+                -1
+            } else {
+                0
+            }
+        };
+        let s = sign(sum);
+        let all = [q.a, q.b, q.c, q.d, q.e].map(sign);
+        let stable = s != 0 && all.iter().all(|&x| x == s);
         Routh {
             discriminant: r,
             stable,
+            marginal: sum.abs() <= 8.0 * f64::EPSILON * abs,
         }
+    }
+
+    /// R = BCD − AD² − B²E and Σ|terms| on a common scale 2^k, and R
+    /// itself: in plain f64 when every coefficient is zero or within
+    /// 1e±90 (no product of three can leave f64's range, and the result is
+    /// the same to the bit), else with `Wide` numbers.
+    fn discriminant(q: &Quartic) -> (f64, f64, f64) {
+        use crate::roots::binary::{Wide, ldexp};
+        let in_range = |x: f64| x == 0.0 || (1e-90..1e90).contains(&x.abs());
+        if q.to_array().iter().all(|&x| in_range(x)) {
+            let t = [q.b * q.c * q.d, -q.a * q.d * q.d, -q.b * q.b * q.e];
+            let r = t[0] + t[1] + t[2];
+            return (r, t[0].abs() + t[1].abs() + t[2].abs(), r);
+        }
+        let [a, b, c, d, e] = q.to_array().map(Wide::new);
+        let minus = Wide::new(-1.0);
+        let terms = [
+            b.mul(c).mul(d),
+            minus.mul(a).mul(d).mul(d),
+            minus.mul(b).mul(b).mul(e),
+        ];
+        let (sum, abs, exp) = Wide::sum(&terms);
+        (sum, abs, ldexp(sum, exp))
     }
 }
 
@@ -122,10 +172,9 @@ impl DampingStandard {
         let m_thetadot = d.m_q + d.m_wdot;
         let g = d.i_b * (d.m_q * d.z_w - d.mu1 * d.m_w);
         let (max, max_exact) = if g >= 0.0 {
-            let k_exact = 2.0 / (1.0 + (2.0 * PI / LN_2).powi(2)).sqrt();
             (
                 Some(-d.z_w * d.i_b - 2.0 * CYCLES_CONSTANT * g.sqrt()),
-                Some(-d.z_w * d.i_b - k_exact * g.sqrt()),
+                Some(-d.z_w * d.i_b - one_cycle_exact() * g.sqrt()),
             )
         } else {
             (None, None)
@@ -405,23 +454,7 @@ mod tests {
     use super::*;
 
     fn delta() -> Derivatives {
-        Derivatives {
-            x_u: -0.03,
-            x_w: 0.25,
-            x_wdot: 0.0,
-            x_q: 0.0,
-            z_u: -0.62,
-            z_w: -3.2,
-            z_wdot: -0.6,
-            z_q: -1.5,
-            m_u: 0.0,
-            m_w: -0.55,
-            m_wdot: -0.25,
-            m_q: -0.6,
-            c_l: 0.3,
-            mu1: 50.0,
-            i_b: 0.08,
-        }
+        crate::examples::tailless_delta_45()
     }
 
     #[test]

@@ -14,85 +14,13 @@
 //! | `transonic` | (38) | K.W. Mangler's low-frequency theory at M = 1, steady |
 //! | `transonic-frequency` | (39)–(40) | the same, with the frequency-dependent terms |
 
-use crate::geometry::Planform;
-pub use crate::warnings::{Warning, Warnings};
+pub use crate::theory::{Theory, UnknownTheory};
+
+use crate::display::{Num, OptNum};
+use crate::geometry::{self, Planform};
+use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
 use std::f64::consts::PI;
-use std::fmt;
-use std::str::FromStr;
-
-/// A theory of the damping derivatives; serializes as its name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Theory {
-    Garrick,
-    GarnerTaper,
-    Slender,
-    Supersonic,
-    Transonic,
-    TransonicFrequency,
-}
-
-impl Theory {
-    pub const ALL: [Theory; 6] = [
-        Theory::Garrick,
-        Theory::GarnerTaper,
-        Theory::Slender,
-        Theory::Supersonic,
-        Theory::Transonic,
-        Theory::TransonicFrequency,
-    ];
-
-    /// The theory's name in configs and on the command line.
-    pub fn name(self) -> &'static str {
-        match self {
-            Theory::Garrick => "garrick",
-            Theory::GarnerTaper => "garner-taper",
-            Theory::Slender => "slender",
-            Theory::Supersonic => "supersonic",
-            Theory::Transonic => "transonic",
-            Theory::TransonicFrequency => "transonic-frequency",
-        }
-    }
-
-    /// The report's equations.
-    pub fn equations(self) -> &'static str {
-        match self {
-            Theory::Garrick => "(32)–(33)",
-            Theory::GarnerTaper => "(34)–(35)",
-            Theory::Slender => "(37)",
-            Theory::Supersonic => "(36)",
-            Theory::Transonic => "(38)",
-            Theory::TransonicFrequency => "(39)–(40)",
-        }
-    }
-
-    /// Whether the derivatives depend on the frequency parameter ω̄.
-    pub fn uses_frequency(self) -> bool {
-        self == Theory::TransonicFrequency
-    }
-}
-
-impl fmt::Display for Theory {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for Theory {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        Theory::ALL
-            .into_iter()
-            .find(|t| t.name() == s)
-            .ok_or_else(|| {
-                format!(
-                    "unknown damping theory `{s}`; the theories are {}",
-                    Theory::ALL.map(|t| format!("`{}`", t.name())).join(", ")
-                )
-            })
-    }
-}
 
 /// The planform quantities the theories use.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -114,7 +42,7 @@ impl From<&Planform> for WingInput {
 }
 
 /// z_q, z_ẇ, m_q, m_ẇ in the report's notation.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct DampingDerivatives {
     pub z_q: f64,
     pub z_wdot: f64,
@@ -189,18 +117,19 @@ impl Fig18 {
 /// Why a theory cannot be applied.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DampingError {
-    #[error("{theory}: h = {h} and Mach {mach} must be finite")]
+    #[error("{theory}: {quantity} must be a finite number, not {}", Num(*value))]
     NonFinite {
-        theory: &'static str,
-        h: f64,
-        mach: f64,
+        theory: Theory,
+        quantity: &'static str,
+        value: f64,
     },
-    #[error("the leading-edge sweep must lie strictly between 0° and 90°, not {0}°")]
-    Sweep(f64),
-    #[error("supersonic theory (36) needs M > 1, not M = {0}")]
-    SubsonicMach(f64),
+    #[error("the leading-edge sweep must lie strictly between 0° and 90°, not {}°", Num(*degrees))]
+    Sweep { degrees: f64 },
+    #[error("supersonic theory (36) needs M > 1, not M = {}", Num(*mach))]
+    SubsonicMach { mach: f64 },
     #[error(
-        "supersonic theory (36) needs subsonic leading edges, β cot Λ < 1; at M = {mach} β cot Λ = {beta_cot:.4} (the leading edge is sonic at M = {sonic:.4})"
+        "supersonic theory (36) needs subsonic leading edges, β cot Λ < 1; at M = {} β cot Λ = {beta_cot:.4} (the leading edge is sonic at M = {sonic:.4})",
+        Num(*mach)
     )]
     SupersonicLeadingEdge {
         mach: f64,
@@ -208,11 +137,15 @@ pub enum DampingError {
         sonic: f64,
     },
     #[error(
-        "garner-taper (34)–(35) is Garner's result for taper 1/7 only; this wing has taper {0}"
+        "garner-taper (34)–(35) is Garner's result for taper 1/7 only; this wing has taper {}",
+        Num(*taper)
     )]
-    Taper(f64),
-    #[error("transonic-frequency (39)–(40) needs a frequency parameter ω̄ > 0 (got {0:?})")]
-    Frequency(Option<f64>),
+    Taper { taper: f64 },
+    #[error(
+        "transonic-frequency (39)–(40) needs a frequency parameter ω̄ > 0, not {}",
+        OptNum(*omega_bar)
+    )]
+    Frequency { omega_bar: Option<f64> },
 }
 
 /// The derivatives of one theory, and what is worth a warning.
@@ -236,130 +169,171 @@ pub fn damping_derivatives(
     mach: f64,
     omega_bar: Option<f64>,
 ) -> Result<Damping, DampingError> {
-    if !(h.is_finite() && mach.is_finite()) {
-        return Err(DampingError::NonFinite {
-            theory: theory.name(),
-            h,
+    for (quantity, value) in [("the c.g. position h", h), ("the Mach number", mach)] {
+        if !value.is_finite() {
+            return Err(DampingError::NonFinite {
+                theory,
+                quantity,
+                value,
+            });
+        }
+    }
+    if !(wing.sweep_le > 0.0 && wing.sweep_le < PI / 2.0) {
+        return Err(DampingError::Sweep {
+            degrees: wing.sweep_le.to_degrees(),
+        });
+    }
+    let mut out = Damping {
+        theory,
+        derivatives: DampingDerivatives::default(),
+        fig18: None,
+        warnings: Warnings::default(),
+    };
+    out.derivatives = match theory {
+        Theory::Slender | Theory::Transonic => slender(wing, h, mach, &mut out),
+        Theory::Garrick => garrick(wing, h, mach, &mut out),
+        Theory::GarnerTaper => garner_taper(wing, h, mach, &mut out)?,
+        Theory::Supersonic => supersonic(wing, h, mach, &mut out)?,
+        Theory::TransonicFrequency => transonic_frequency(wing, h, mach, omega_bar, &mut out)?,
+    };
+    if wing.taper > 0.0 && theory != Theory::GarnerTaper {
+        out.warnings.push(Warning::TrueDeltaOnly {
+            theory,
+            taper: wing.taper,
+        });
+    }
+    Ok(out)
+}
+
+/// (37), and (38) for z_q and m_q (its acceleration derivatives are the
+/// frequency-dependent ones of (39): in the steady limit, (37)'s).
+fn slender(wing: &WingInput, h: f64, mach: f64, out: &mut Damping) -> DampingDerivatives {
+    let a = wing.aspect_ratio;
+    if out.theory == Theory::Transonic && (mach - 1.0).abs() > TRANSONIC_RANGE {
+        out.warnings.push(Warning::AwayFromSonic {
+            theory: out.theory,
             mach,
         });
     }
-    if !(wing.sweep_le > 0.0 && wing.sweep_le < PI / 2.0) {
-        return Err(DampingError::Sweep(wing.sweep_le.to_degrees()));
+    let beta_a = a * (1.0 - mach * mach).abs().sqrt();
+    if out.theory == Theory::Slender && beta_a > 1.0 {
+        out.warnings.push(Warning::NotSlender { beta_a });
+    }
+    let z_wdot = -PI * a / 4.0;
+    DampingDerivatives {
+        z_q: -PI * a / 2.0 * (1.0 - h),
+        z_wdot,
+        m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
+        m_wdot: z_wdot * (5.0 / 8.0 - h),
+    }
+}
+
+/// (32) z_θ̇ = −(πA/4)(3 − 2h), (33) m_θ̇ = −(πA/2)(h − 1)².
+fn garrick(wing: &WingInput, h: f64, mach: f64, out: &mut Damping) -> DampingDerivatives {
+    let a = wing.aspect_ratio;
+    incompressible(mach, out);
+    DampingDerivatives::split(
+        -PI * a / 4.0 * (3.0 - 2.0 * h),
+        -PI * a / 2.0 * (h - 1.0).powi(2),
+        a,
+        h,
+    )
+}
+
+/// Garner, λ = 1/7: −½∂C_L/∂(φ̇c̄ₛ/V) = −πA(5/8 − x₀/(4c̄ₛ)),
+/// −½∂C_m/∂(φ̇c̄ₛ/V) = −πA[49/64 − (7/8)x₀/c̄ₛ + ¼(x₀/c̄ₛ)²], with
+/// x₀/c̄ₛ = (57/48)h + 9/16 and the report's factors 3/2 and 9/8:
+/// z_θ̇ = −πA(0.7265625 − 0.4453125h), m_θ̇ = −(9/8)(0.3525390625)πA(h − 1)²
+/// — the report's (34)–(35) print them rounded, 0.728 − 0.446h and 0.4.
+fn garner_taper(
+    wing: &WingInput,
+    h: f64,
+    mach: f64,
+    out: &mut Damping,
+) -> Result<DampingDerivatives, DampingError> {
+    if (wing.taper - 1.0 / 7.0).abs() > 1e-3 {
+        return Err(DampingError::Taper { taper: wing.taper });
+    }
+    let a = wing.aspect_ratio;
+    incompressible(mach, out);
+    let z = -PI * a * (0.726_562_5 - 0.445_312_5 * h);
+    let m = -9.0 / 8.0 * 0.352_539_062_5 * PI * a * (h - 1.0).powi(2);
+    Ok(DampingDerivatives::split(z, m, a, h))
+}
+
+/// The incompressible theories (32)–(35) warn above M = 0.7.
+fn incompressible(mach: f64, out: &mut Damping) {
+    if mach > 0.7 {
+        out.warnings.push(Warning::Incompressible {
+            theory: out.theory,
+            mach,
+        });
+    }
+}
+
+/// (36) with subsonic leading edges, E and H from Fig 18.
+fn supersonic(
+    wing: &WingInput,
+    h: f64,
+    mach: f64,
+    out: &mut Damping,
+) -> Result<DampingDerivatives, DampingError> {
+    if mach <= 1.0 {
+        return Err(DampingError::SubsonicMach { mach });
+    }
+    let beta_cot = geometry::beta_cot(wing.sweep_le, mach);
+    if beta_cot >= 1.0 {
+        return Err(DampingError::SupersonicLeadingEdge {
+            mach,
+            beta_cot,
+            sonic: geometry::sonic_leading_edge_mach(wing.sweep_le),
+        });
+    }
+    if mach < 1.1 {
+        out.warnings.push(Warning::NearlyTransonic { mach });
+    }
+    if beta_cot > 0.95 {
+        out.warnings.push(Warning::NearlySonicEdge { beta_cot });
+    }
+    let f = Fig18::at(beta_cot);
+    out.fig18 = Some(f);
+    Ok(eq36(wing.aspect_ratio, h, mach, f.e, f.h))
+}
+
+/// (39)–(40): (37) with Mangler's frequency functions in the acceleration
+/// derivatives.
+fn transonic_frequency(
+    wing: &WingInput,
+    h: f64,
+    mach: f64,
+    omega_bar: Option<f64>,
+    out: &mut Damping,
+) -> Result<DampingDerivatives, DampingError> {
+    let w = match omega_bar {
+        Some(w) if w.is_finite() && w > 0.0 => w,
+        omega_bar => return Err(DampingError::Frequency { omega_bar }),
+    };
+    if (mach - 1.0).abs() > TRANSONIC_RANGE {
+        out.warnings.push(Warning::AwayFromSonic {
+            theory: out.theory,
+            mach,
+        });
     }
     let a = wing.aspect_ratio;
     let cot = 1.0 / wing.sweep_le.tan();
-    let mut warnings = Warnings::default();
-    let mut fig18 = None;
-    let true_delta_only = |w: &mut Warnings| {
-        if wing.taper > 0.0 {
-            w.push(Warning::TrueDeltaOnly {
-                theory,
-                taper: wing.taper,
-            });
-        }
-    };
-    let derivatives = match theory {
-        Theory::Slender | Theory::Transonic => {
-            // (37); (38) gives the same z_q and m_q (its acceleration
-            // derivatives are the frequency-dependent ones of (39): in the
-            // steady limit they are taken from (37)).
-            if theory == Theory::Transonic && (mach - 1.0).abs() > 0.2 {
-                warnings.push(Warning::AwayFromSonic { theory, mach });
-            }
-            if theory == Theory::Slender && a * (1.0 - mach * mach).abs().sqrt() > 1.0 {
-                warnings.push(Warning::NotSlender {
-                    beta_a: a * (1.0 - mach * mach).abs().sqrt(),
-                });
-            }
-            true_delta_only(&mut warnings);
-            let z_wdot = -PI * a / 4.0;
-            DampingDerivatives {
-                z_q: -PI * a / 2.0 * (1.0 - h),
-                z_wdot,
-                m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
-                m_wdot: z_wdot * (5.0 / 8.0 - h),
-            }
-        }
-        Theory::Garrick => {
-            // (32) z_θ̇ = −(πA/4)(3 − 2h), (33) m_θ̇ = −(πA/2)(h − 1)²
-            if mach > 0.7 {
-                warnings.push(Warning::Incompressible { theory, mach });
-            }
-            true_delta_only(&mut warnings);
-            DampingDerivatives::split(
-                -PI * a / 4.0 * (3.0 - 2.0 * h),
-                -PI * a / 2.0 * (h - 1.0).powi(2),
-                a,
-                h,
-            )
-        }
-        Theory::GarnerTaper => {
-            // Garner, λ = 1/7: −½∂C_L/∂(φ̇c̄ₛ/V) = −πA(5/8 − x₀/(4c̄ₛ)),
-            // −½∂C_m/∂(φ̇c̄ₛ/V) = −πA[49/64 − (7/8)x₀/c̄ₛ + ¼(x₀/c̄ₛ)²], with
-            // x₀/c̄ₛ = (57/48)h + 9/16 and the report's factors 3/2 and 9/8:
-            // z_θ̇ = −πA(0.7265625 − 0.4453125h), m_θ̇ = −(9/8)(0.3525390625)πA(h − 1)²
-            // — the report's (34)–(35) print them rounded, 0.728 − 0.446h and 0.4.
-            if (wing.taper - 1.0 / 7.0).abs() > 1e-3 {
-                return Err(DampingError::Taper(wing.taper));
-            }
-            if mach > 0.7 {
-                warnings.push(Warning::Incompressible { theory, mach });
-            }
-            let z = -PI * a * (0.726_562_5 - 0.445_312_5 * h);
-            let m = -9.0 / 8.0 * 0.352_539_062_5 * PI * a * (h - 1.0).powi(2);
-            DampingDerivatives::split(z, m, a, h)
-        }
-        Theory::Supersonic => {
-            if mach <= 1.0 {
-                return Err(DampingError::SubsonicMach(mach));
-            }
-            let beta = (mach * mach - 1.0).sqrt();
-            let beta_cot = beta * cot;
-            if beta_cot >= 1.0 {
-                return Err(DampingError::SupersonicLeadingEdge {
-                    mach,
-                    beta_cot,
-                    sonic: (1.0 + 1.0 / (cot * cot)).sqrt(),
-                });
-            }
-            if mach < 1.1 {
-                warnings.push(Warning::NearlyTransonic { mach });
-            }
-            if beta_cot > 0.95 {
-                warnings.push(Warning::NearlySonicEdge { beta_cot });
-            }
-            true_delta_only(&mut warnings);
-            let f = Fig18::at(beta_cot);
-            fig18 = Some(f);
-            eq36(a, h, mach, f.e, f.h)
-        }
-        Theory::TransonicFrequency => {
-            let w = match omega_bar {
-                Some(w) if w.is_finite() && w > 0.0 => w,
-                other => return Err(DampingError::Frequency(other)),
-            };
-            if (mach - 1.0).abs() > 0.2 {
-                warnings.push(Warning::AwayFromSonic { theory, mach });
-            }
-            true_delta_only(&mut warnings);
-            let (k, _) = mangler_k(w, wing.sweep_le);
-            let z_wdot = -PI * a / 4.0 * k;
-            let extra = 9.0 / 64.0 * PI * cot.powi(3);
-            DampingDerivatives {
-                z_q: -PI * a / 2.0 * (1.0 - h),
-                z_wdot,
-                m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
-                m_wdot: z_wdot * (5.0 / 8.0 - h) - extra,
-            }
-        }
-    };
-    Ok(Damping {
-        theory,
-        derivatives,
-        fig18,
-        warnings,
+    let (k, _) = mangler_k(w, wing.sweep_le);
+    let z_wdot = -PI * a / 4.0 * k;
+    let extra = 9.0 / 64.0 * PI * cot.powi(3);
+    Ok(DampingDerivatives {
+        z_q: -PI * a / 2.0 * (1.0 - h),
+        z_wdot,
+        m_q: -PI * a / 4.0 * (2.0 * h * h - 3.0 * h + 11.0 / 8.0),
+        m_wdot: z_wdot * (5.0 / 8.0 - h) - extra,
     })
 }
+
+/// The transonic theories (38)–(40) warn further than this from M = 1.
+pub const TRANSONIC_RANGE: f64 = 0.2;
 
 /// Eq (36), recovered (Mangler; Ribner & Malvestuto, NACA Rep. 908), in
 /// the report's notation, for given E and H (Fig 18):
@@ -421,6 +395,7 @@ mod tests {
             "mangler"
                 .parse::<Theory>()
                 .unwrap_err()
+                .to_string()
                 .contains("`transonic-frequency`")
         );
     }

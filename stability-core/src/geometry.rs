@@ -33,17 +33,34 @@
 //! takes the M.A.C. as the reference chord ([`Planform::reference_chord`]),
 //! as §3 says, and reproduces (34)–(35) as printed.
 
+use crate::display::Num;
 use serde::Serialize;
 use std::f64::consts::PI;
+
+/// β cot Λ, β = √(M² − 1), at a supersonic Mach number: the leading edge
+/// swept by Λ lies inside the Mach cone (is subsonic) while β cot Λ < 1.
+pub fn beta_cot(sweep_le: f64, mach: f64) -> f64 {
+    (mach * mach - 1.0).sqrt() / sweep_le.tan()
+}
+
+/// The Mach number at which a leading edge swept by Λ turns sonic,
+/// β cot Λ = 1: M = √(1 + tan²Λ) = sec Λ (√2 for 45°, 2 for 60°).
+pub fn sonic_leading_edge_mach(sweep_le: f64) -> f64 {
+    let t = sweep_le.tan();
+    (1.0 + t * t).sqrt()
+}
 
 /// Why a planform is not a straight-tapered delta.
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
 pub enum GeometryError {
-    #[error("the leading-edge sweep must lie strictly between 0° and 90°, not {0}°")]
+    #[error(
+        "the leading-edge sweep must lie strictly between 0° and 90°, not {}°",
+        Num(*.0)
+    )]
     Sweep(f64),
-    #[error("the taper ratio must lie in [0, 1) (0: a true delta), not {0}")]
+    #[error("the taper ratio must lie in [0, 1) (0: a true delta), not {}", Num(*.0))]
     Taper(f64),
-    #[error("the size ({0}) must be a positive finite number, not {1}")]
+    #[error("the size ({name}) must be a positive finite number, not {value}", name = .0, value = Num(*.1))]
     Size(&'static str, f64),
 }
 

@@ -4,6 +4,27 @@
 //! speeds*, College of Aeronautics, Cranfield, 1953 ("the report").
 //!
 //! Equation numbers in this crate's documentation are the report's.
+//!
+//! The modules follow the report's method, planform to response:
+//!
+//! | the report | module |
+//! | --- | --- |
+//! | §2.2 the planform | [`geometry`] |
+//! | §5–6 aerodynamic coefficients, stiffness derivatives | [`aero`], [`stiffness`] |
+//! | §7 the damping derivatives and their theories | [`theory`], [`damping`], [`supersonic`] (supersonic leading edges) |
+//! | §3 the derivative set | [`derivatives`] |
+//! | §3–4, eqs (4)–(6) the stability quartic; its roots | [`quartic`], [`roots`] |
+//! | §4, eqs (7)–(8) the modes; the report's own method | [`modes`], [`classical`] |
+//! | §4 Routh, §8 the damping standard, §9 margins | [`criteria`] |
+//! | a derivative set's analysis; a design point; the study | [`analysis`], [`case`], [`study`] |
+//! | §10 which derivative drives the damping | [`sensitivity`] |
+//! | §11 responses | [`response`] |
+//! | the appendix's notations | [`notation`] |
+//! | the flight condition | [`atmosphere`] (U.S. Standard Atmosphere, 1976) |
+//!
+//! Around them: [`warnings`] (validity limits approached), [`json`] (the
+//! results as the command line prints them), [`display`] (numbers and
+//! quotes in messages), [`examples`] (the example aircraft).
 
 pub mod aero;
 pub mod analysis;
@@ -13,6 +34,7 @@ pub mod classical;
 pub mod criteria;
 pub mod damping;
 pub mod derivatives;
+pub mod display;
 pub mod examples;
 pub mod geometry;
 pub mod json;
@@ -25,6 +47,7 @@ pub mod sensitivity;
 pub mod stiffness;
 pub mod study;
 pub mod supersonic;
+pub mod theory;
 pub mod warnings;
 
 pub use derivatives::Derivatives;

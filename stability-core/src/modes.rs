@@ -13,9 +13,15 @@
 //! - frequency parameter `ω̄ = 2πf·c̄/V = s/μ₁` (§9), since f = s/(2πτ)
 //!   and τ·V/c̄ = μ₁.
 
+use arrayvec::ArrayVec;
 use num_complex::Complex64;
 use serde::Serialize;
 use std::f64::consts::{LN_2, PI};
+
+/// The report's constant of eq (8): cycles to half amplitude =
+/// 0.11032·s/(−r); exactly ln 2/(2π), the ratio of the time to half
+/// amplitude ln 2/(−r) to the period 2π/s per unit s/(−r).
+pub const CYCLES_CONSTANT: f64 = LN_2 / (2.0 * PI);
 
 /// Which motion a root (or pair) is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -101,12 +107,12 @@ impl Mode {
             time_to_half: if r < 0.0 { positive(LN_2 / -r) } else { None },
             time_to_double: if r > 0.0 { positive(LN_2 / r) } else { None },
             cycles_to_half: if oscillatory && r < 0.0 {
-                positive(LN_2 / (2.0 * PI) * s / -r)
+                positive(CYCLES_CONSTANT * s / -r)
             } else {
                 None
             },
             cycles_to_double: if oscillatory && r > 0.0 {
-                positive(LN_2 / (2.0 * PI) * s / r)
+                positive(CYCLES_CONSTANT * s / r)
             } else {
                 None
             },
@@ -162,40 +168,27 @@ fn modulus(z: Complex64) -> f64 {
 
 /// The modes of a quartic, fastest first: two to four (a complex pair
 /// counts once), held inline — identifying them allocates nothing.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Modes {
-    list: [Mode; 4],
-    len: usize,
-}
+#[derive(Debug, Clone, PartialEq)]
+pub struct Modes(ArrayVec<Mode, 4>);
 
 impl Serialize for Modes {
+    /// As the list of modes.
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        use serde::ser::SerializeStruct;
-        let mut st = s.serialize_struct("Modes", 1)?;
-        st.serialize_field("modes", self.as_slice())?;
-        st.end()
+        s.collect_seq(self.iter())
     }
 }
 
 impl std::ops::Deref for Modes {
     type Target = [Mode];
     fn deref(&self) -> &[Mode] {
-        self.as_slice()
+        &self.0
     }
 }
 
 impl Modes {
     /// The modes, fastest first.
     pub fn as_slice(&self) -> &[Mode] {
-        &self.list[..self.len]
-    }
-
-    fn push(&mut self, m: Mode) {
-        // at most four roots, so at most four modes
-        if let Some(slot) = self.list.get_mut(self.len) {
-            *slot = m;
-            self.len += 1;
-        }
+        &self.0
     }
 
     /// Identify the modes of the four roots (any order; complex roots come in
@@ -221,11 +214,8 @@ impl Modes {
         let (pairs, reals) = (&mut pairs[..np], &mut reals[..nr]);
         pairs.sort_unstable_by(|a, b| modulus(*b).total_cmp(&modulus(*a)));
         reals.sort_unstable_by(|a, b| b.abs().total_cmp(&a.abs()));
-        let placeholder = Mode::of_root(zero, ModeName::Aperiodic, None, 1.0);
-        let mut modes = Modes {
-            list: [placeholder; 4],
-            len: 0,
-        };
+        // at most four roots, so at most four modes: pushes cannot fail
+        let mut modes = ArrayVec::<Mode, 4>::new();
         let aperiodic = |r: f64, origin| {
             Mode::of_root(
                 Complex64::new(r, 0.0),
@@ -263,7 +253,7 @@ impl Modes {
                 }
             }
         }
-        modes
+        Modes(modes)
     }
 
     /// The short-period mode, if the short period is oscillatory.
@@ -290,10 +280,55 @@ mod tests {
         Complex64::new(re, im)
     }
 
+    /// The cycles to half amplitude of a decaying oscillation, counted on
+    /// a numerical solution of ẍ + 2ζωẋ + ω²x = 0 (classical Runge–Kutta,
+    /// not the closed form): the amplitude ratio of successive maxima gives
+    /// the decay per cycle, δ = ln(aₙ/aₙ₊₁), and ln 2/δ cycles halve it.
+    fn cycles_counted(zeta: f64, omega: f64) -> f64 {
+        let f = |x: f64, v: f64| (v, -2.0 * zeta * omega * v - omega * omega * x);
+        let h = 1e-4 / omega;
+        let (mut x, mut v) = (1.0, 0.0);
+        let mut peaks = Vec::new();
+        let mut prev = (x, v);
+        while peaks.len() < 8 {
+            let (k1x, k1v) = f(x, v);
+            let (k2x, k2v) = f(x + h / 2.0 * k1x, v + h / 2.0 * k1v);
+            let (k3x, k3v) = f(x + h / 2.0 * k2x, v + h / 2.0 * k2v);
+            let (k4x, k4v) = f(x + h * k3x, v + h * k3v);
+            x += h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
+            v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+            // a maximum: v crosses zero downwards (x there by linear
+            // interpolation, error O(h²))
+            if prev.1 > 0.0 && v <= 0.0 {
+                let s = prev.1 / (prev.1 - v);
+                peaks.push(prev.0 + s * (x - prev.0));
+            }
+            prev = (x, v);
+        }
+        let delta = (peaks[0] / peaks[7]).ln() / 7.0;
+        LN_2 / delta
+    }
+
     #[test]
-    fn eq8_constant_is_ln2_over_2pi() {
+    fn the_eq8_constant_is_the_reports_and_counts_cycles() {
         // The report prints 0.11032.
-        assert!((LN_2 / (2.0 * PI) - 0.11032).abs() < 5e-6);
+        assert!(
+            (CYCLES_CONSTANT - 0.11032).abs() < 5e-6,
+            "{CYCLES_CONSTANT}"
+        );
+        // The modes' cycles to half amplitude, which use it, against cycles
+        // counted on simulated oscillations.
+        for (zeta, omega) in [(0.05f64, 3.0f64), (0.12, 17.5), (0.3, 1.0)] {
+            let r = -zeta * omega;
+            let s = omega * (1.0 - zeta * zeta).sqrt();
+            let m = Mode::of_root(c(r, s), ModeName::ShortPeriod, None, 50.0);
+            let counted = cycles_counted(zeta, omega);
+            let got = m.cycles_to_half.unwrap();
+            assert!(
+                (got - counted).abs() <= 1e-6 * counted,
+                "ζ = {zeta}: {got} vs counted {counted}"
+            );
+        }
     }
 
     #[test]

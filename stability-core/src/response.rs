@@ -28,6 +28,8 @@
 //! and squaring), not a fixed-step integrator.
 
 use crate::Derivatives;
+use crate::analysis::{AnalysisError, LEADING_COEFFICIENT_MIN};
+use crate::display::Num;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
@@ -121,22 +123,113 @@ pub enum Input {
     Initial { u: f64, w: f64, q: f64, theta: f64 },
 }
 
+/// A state of the longitudinal motion, eqs (2), in units of τ.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum State {
+    /// û = u/V.
+    U,
+    /// ŵ = w/V (the incidence change, rad).
+    W,
+    /// q̂ = dθ/dt̂.
+    Q,
+    /// θ (rad).
+    Theta,
+}
+
+impl State {
+    /// The four states, in the order of eqs (2).
+    pub const ALL: [State; 4] = [State::U, State::W, State::Q, State::Theta];
+
+    /// `u`, `w`, `q`, `theta` (the CSV's `u_hat`, … without the hat).
+    pub fn name(self) -> &'static str {
+        match self {
+            State::U => "u",
+            State::W => "w",
+            State::Q => "q",
+            State::Theta => "theta",
+        }
+    }
+
+    /// `û`, `ŵ`, `q̂`, `θ`.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            State::U => "û",
+            State::W => "ŵ",
+            State::Q => "q̂",
+            State::Theta => "θ",
+        }
+    }
+}
+
+/// The most steps [`StateSpace::simulate`] takes (10⁶ samples of 40
+/// bytes).
+pub const MAX_STEPS: usize = 1_000_000;
+
+/// The largest ‖M·h‖₁ of a step: beyond it the matrix exponential's
+/// scaling and squaring loses accuracy (about ε‖M·h‖ relative; nalgebra's
+/// does not return at all past ~1e35).
+pub const MAX_STEP_NORM: f64 = 1e6;
+
 /// Why a response cannot be computed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ResponseError {
-    #[error("A = 1 − z_ẇ/μ₁ = 0 (z_ẇ = μ₁): the equations of motion have no state-space form")]
-    SingularMass,
-    #[error("non-finite derivative set")]
-    NonFinite,
-    #[error("the time span must be positive and finite, and the step count between 1 and 10⁷")]
-    BadTimes,
+    #[error(
+        "A = 1 − z_ẇ/μ₁ = {} (z_ẇ = {}, μ₁ = {}): the equations of motion have no state-space form",
+        Num(*a), Num(*z_wdot), Num(*mu1)
+    )]
+    SingularMass { a: f64, z_wdot: f64, mu1: f64 },
+    #[error("{0}")]
+    Derivatives(#[from] AnalysisError),
+    #[error(
+        "the state matrix overflows f64 (terms such as μ₁m_w/i_B exceed {}): the derivatives are too large",
+        Num(f64::MAX)
+    )]
+    MatrixOverflow,
+    #[error("the input {quantity} must be a finite number, not {}", Num(*value))]
+    NonFiniteInput { quantity: &'static str, value: f64 },
+    #[error("the time span must be positive and finite, not {}", Num(*until))]
+    Until { until: f64 },
+    #[error("the step count must lie between 1 and {MAX_STEPS}, not {steps}")]
+    Steps { steps: usize },
+    #[error(
+        "the step t̂ = {} is too long for this system (its fastest rate ‖M‖₁ = {} per τ unit): ‖M‖·h = {} exceeds {}, beyond which the matrix exponential loses accuracy; {}",
+        Num(*step), Num(*rate), Num(rate * step), Num(MAX_STEP_NORM),
+        StiffAdvice(*min_steps)
+    )]
+    TooStiff {
+        /// ‖M‖₁ (1/τ).
+        rate: f64,
+        /// The step h = until/steps (τ).
+        step: f64,
+        /// The fewest steps over the span that would do.
+        min_steps: f64,
+    },
+}
+
+struct StiffAdvice(f64);
+
+impl std::fmt::Display for StiffAdvice {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.0 <= MAX_STEPS as f64 {
+            write!(f, "take at least {} steps", self.0)
+        } else if self.0.is_finite() {
+            write!(
+                f,
+                "it would take {:.3e} steps, more than the {MAX_STEPS} allowed: shorten the time span",
+                self.0
+            )
+        } else {
+            write!(f, "no step count would do: shorten the time span")
+        }
+    }
 }
 
 /// The state-space form of eqs (2), in units of τ.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StateSpace {
-    /// The state names, in order.
-    pub states: Vec<&'static str>,
+    /// The states, in order (û is left out when neglected).
+    pub states: Vec<State>,
     /// ẋ = A x + B (x₀, z₀, m₀).
     pub a: DMatrix<f64>,
     pub b: DMatrix<f64>,
@@ -147,7 +240,7 @@ pub struct StateSpace {
 pub struct Sample {
     /// t̂ (units of τ).
     pub t: f64,
-    /// û = u/V.
+    /// û = u/V (0 when û is neglected).
     pub u: f64,
     /// ŵ = w/V (= the incidence change, rad).
     pub w: f64,
@@ -157,119 +250,208 @@ pub struct Sample {
     pub theta: f64,
 }
 
+impl Sample {
+    /// The value of state `s`.
+    pub fn get(&self, s: State) -> f64 {
+        match s {
+            State::U => self.u,
+            State::W => self.w,
+            State::Q => self.q,
+            State::Theta => self.theta,
+        }
+    }
+
+    fn new(t: f64, states: &[State], x: &DVector<f64>) -> Sample {
+        let mut full = [0.0; 4];
+        for (i, s) in states.iter().enumerate() {
+            full[*s as usize] = x[i];
+        }
+        let [u, w, q, theta] = full;
+        Sample { t, u, w, q, theta }
+    }
+}
+
+/// Why a response stopped before `until`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, thiserror::Error)]
+#[serde(rename_all = "snake_case")]
+pub enum Stop {
+    /// The next sample would not be finite: a divergent motion grew past
+    /// f64's range after the last sample, at t̂.
+    #[error("the motion diverged past f64's range after t̂ = {}", Num(*t))]
+    Overflow { t: f64 },
+}
+
+/// A response: its samples, and why it stopped early, if it did.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Response {
+    pub samples: Vec<Sample>,
+    /// `None`: every one of the `steps + 1` samples was computed.
+    pub stopped: Option<Stop>,
+}
+
+/// The rows of eqs (2) solved for the derivatives of (û, ŵ, q̂, θ): the
+/// matrix A and the input matrix B of ẋ = A x + B (x₀, z₀, m₀).
+fn state_rows(d: &Derivatives, a_mass: f64) -> ([[f64; 4]; 4], [[f64; 3]; 4]) {
+    // Dŵ = (z_u û + z_w ŵ + (z_q/μ₁ + 1) q̂ + z₀)/A
+    let wdot = [d.z_u, d.z_w, d.z_q / d.mu1 + 1.0, 0.0].map(|c| c / a_mass);
+    let wdot_in = [0.0, 1.0 / a_mass, 0.0];
+    let xw = d.x_wdot / d.mu1;
+    let mw = d.m_wdot / d.i_b;
+    let rows = [
+        [
+            d.x_u + xw * wdot[0],
+            d.x_w + xw * wdot[1],
+            d.x_q / d.mu1 + xw * wdot[2],
+            -d.c_l,
+        ],
+        wdot,
+        [
+            d.mu1 / d.i_b * d.m_u + mw * wdot[0],
+            d.mu1 / d.i_b * d.m_w + mw * wdot[1],
+            d.m_q / d.i_b + mw * wdot[2],
+            0.0,
+        ],
+        [0.0, 0.0, 1.0, 0.0],
+    ];
+    let inputs = [
+        [1.0, xw * wdot_in[1], 0.0],
+        wdot_in,
+        [0.0, mw * wdot_in[1], 1.0],
+        [0.0, 0.0, 0.0],
+    ];
+    (rows, inputs)
+}
+
+impl Input {
+    /// Every value finite.
+    fn check(&self) -> Result<(), ResponseError> {
+        let finite = |quantity, value: f64| {
+            if value.is_finite() {
+                Ok(())
+            } else {
+                Err(ResponseError::NonFiniteInput { quantity, value })
+            }
+        };
+        match *self {
+            Input::Step { x0, z0, m0 } => {
+                finite("x0", x0)?;
+                finite("z0", z0)?;
+                finite("m0", m0)
+            }
+            Input::Initial { u, w, q, theta } => {
+                finite("u", u)?;
+                finite("w", w)?;
+                finite("q", q)?;
+                finite("theta", theta)
+            }
+        }
+    }
+}
+
 impl StateSpace {
     pub fn new(d: &Derivatives, simp: Simplifications) -> Result<StateSpace, ResponseError> {
-        if !d.quartic_input_values().iter().all(|v| v.is_finite()) {
-            return Err(ResponseError::NonFinite);
-        }
+        crate::analysis::check(d)?;
         let mut d = *d;
         if simp.neglect_zq_zwdot {
             d.z_q = 0.0;
             d.z_wdot = 0.0;
         }
         let a_mass = 1.0 - d.z_wdot / d.mu1;
-        if a_mass.abs() < 1e-12 {
-            return Err(ResponseError::SingularMass);
+        if a_mass.abs() < LEADING_COEFFICIENT_MIN {
+            return Err(ResponseError::SingularMass {
+                a: a_mass,
+                z_wdot: d.z_wdot,
+                mu1: d.mu1,
+            });
         }
-        // Dŵ = (z_u û + z_w ŵ + (z_q/μ₁ + 1) q̂ + z₀)/A
-        let wdot = [d.z_u, d.z_w, d.z_q / d.mu1 + 1.0, 0.0].map(|c| c / a_mass);
-        let wdot_in = [0.0, 1.0 / a_mass, 0.0];
-        let xw = d.x_wdot / d.mu1;
-        let mw = d.m_wdot / d.i_b;
-        let rows = [
-            [
-                d.x_u + xw * wdot[0],
-                d.x_w + xw * wdot[1],
-                d.x_q / d.mu1 + xw * wdot[2],
-                -d.c_l,
-            ],
-            wdot,
-            [
-                d.mu1 / d.i_b * d.m_u + mw * wdot[0],
-                d.mu1 / d.i_b * d.m_w + mw * wdot[1],
-                d.m_q / d.i_b + mw * wdot[2],
-                0.0,
-            ],
-            [0.0, 0.0, 1.0, 0.0],
-        ];
-        let inputs = [
-            [1.0, xw * wdot_in[1], 0.0],
-            wdot_in,
-            [0.0, mw * wdot_in[1], 1.0],
-            [0.0, 0.0, 0.0],
-        ];
-        let keep: Vec<usize> = if simp.neglect_u {
-            vec![1, 2, 3]
-        } else {
-            vec![0, 1, 2, 3]
-        };
-        let names = ["u", "w", "q", "theta"];
-        let n = keep.len();
-        let a = DMatrix::from_fn(n, n, |i, j| rows[keep[i]][keep[j]]);
-        let b = DMatrix::from_fn(n, 3, |i, j| inputs[keep[i]][j]);
-        Ok(StateSpace {
-            states: keep.iter().map(|&i| names[i]).collect(),
-            a,
-            b,
-        })
+        let (rows, inputs) = state_rows(&d, a_mass);
+        let states: Vec<State> = State::ALL
+            .into_iter()
+            .filter(|s| !(simp.neglect_u && *s == State::U))
+            .collect();
+        let n = states.len();
+        let k = |i: usize| states[i] as usize;
+        let a = DMatrix::from_fn(n, n, |i, j| rows[k(i)][k(j)]);
+        let b = DMatrix::from_fn(n, 3, |i, j| inputs[k(i)][j]);
+        if !(a.iter().chain(b.iter()).all(|v| v.is_finite())) {
+            return Err(ResponseError::MatrixOverflow);
+        }
+        Ok(StateSpace { states, a, b })
+    }
+
+    /// The position of state `s` in the state vector, if it is kept.
+    pub fn index_of(&self, s: State) -> Option<usize> {
+        self.states.iter().position(|x| *x == s)
     }
 
     /// The exact response at `steps + 1` equally spaced times from 0 to
-    /// `until` (τ units). Stops early, before any non-finite value, if a
-    /// divergent motion overflows.
+    /// `until` (τ units), through exp(M·h) of the augmented system (see
+    /// the module documentation). Refuses a step too long for the matrix
+    /// exponential ([`MAX_STEP_NORM`]) and more than [`MAX_STEPS`] steps;
+    /// stops early, before any non-finite value, if a divergent motion
+    /// overflows, and says so in [`Response::stopped`].
     pub fn simulate(
         &self,
         input: Input,
         until: f64,
         steps: usize,
-    ) -> Result<Vec<Sample>, ResponseError> {
-        if !(until > 0.0 && until.is_finite()) || steps == 0 || steps > 10_000_000 {
-            return Err(ResponseError::BadTimes);
+    ) -> Result<Response, ResponseError> {
+        if !(until > 0.0 && until.is_finite()) {
+            return Err(ResponseError::Until { until });
         }
-        let n = self.a.nrows();
-        let has_u = self.states[0] == "u";
-        // Augmented state (x, 1): d/dt (x, 1) = [[A, B·v], [0, 0]] (x, 1).
-        let (v, x0) = match input {
-            Input::Step { x0, z0, m0 } => (DVector::from_vec(vec![x0, z0, m0]), DVector::zeros(n)),
-            Input::Initial { u, w, q, theta } => {
-                let full = [u, w, q, theta];
-                let start = if has_u { 0 } else { 1 };
-                (
-                    DVector::zeros(3),
-                    DVector::from_fn(n, |i, _| full[start + i]),
-                )
+        if steps == 0 || steps > MAX_STEPS {
+            return Err(ResponseError::Steps { steps });
+        }
+        input.check()?;
+        let (m, x0) = self.augmented(input);
+        let h = until / steps as f64;
+        let rate = m.column_iter().map(|c| c.lp_norm(1)).fold(0.0, f64::max);
+        if rate * h > MAX_STEP_NORM || (rate * h).is_nan() {
+            return Err(ResponseError::TooStiff {
+                rate,
+                step: h,
+                min_steps: (rate * until / MAX_STEP_NORM).ceil(),
+            });
+        }
+        let phi = (m * h).exp();
+        let mut x = x0;
+        let mut samples = Vec::with_capacity(steps + 1);
+        for i in 0..=steps {
+            let t = i as f64 * h;
+            if !x.iter().all(|v| v.is_finite()) {
+                let last = samples.last().map_or(0.0, |s: &Sample| s.t);
+                return Ok(Response {
+                    samples,
+                    stopped: Some(Stop::Overflow { t: last }),
+                });
             }
+            samples.push(Sample::new(t, &self.states, &x));
+            x = &phi * x;
+        }
+        Ok(Response {
+            samples,
+            stopped: None,
+        })
+    }
+
+    /// The augmented system d/dt (x, 1) = [[A, B·v], [0, 0]] (x, 1) of a
+    /// step input v (or of none), and its initial state.
+    fn augmented(&self, input: Input) -> (DMatrix<f64>, DVector<f64>) {
+        let n = self.a.nrows();
+        let (v, start) = match input {
+            Input::Step { x0, z0, m0 } => ([x0, z0, m0], [0.0; 4]),
+            Input::Initial { u, w, q, theta } => ([0.0; 3], [u, w, q, theta]),
         };
-        let forcing = &self.b * v;
+        let forcing = &self.b * DVector::from_row_slice(&v);
         let mut m = DMatrix::zeros(n + 1, n + 1);
         m.view_mut((0, 0), (n, n)).copy_from(&self.a);
         m.view_mut((0, n), (n, 1)).copy_from(&forcing);
-        let h = until / steps as f64;
-        let phi = (m * h).exp();
         let mut x = DVector::zeros(n + 1);
-        x.rows_mut(0, n).copy_from(&x0);
-        x[n] = 1.0;
-        let mut out = Vec::with_capacity(steps + 1);
-        for i in 0..=steps {
-            if !x.iter().all(|v| v.is_finite()) {
-                break;
-            }
-            let get = |name: &str| {
-                self.states
-                    .iter()
-                    .position(|s| *s == name)
-                    .map_or(0.0, |j| x[j])
-            };
-            out.push(Sample {
-                t: i as f64 * h,
-                u: get("u"),
-                w: get("w"),
-                q: get("q"),
-                theta: get("theta"),
-            });
-            x = &phi * x;
+        for (i, s) in self.states.iter().enumerate() {
+            x[i] = start[*s as usize];
         }
-        Ok(out)
+        x[n] = 1.0;
+        (m, x)
     }
 }
 

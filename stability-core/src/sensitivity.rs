@@ -7,11 +7,10 @@
 //! `dλ/dp = −(Σₖ ∂cₖ/∂p · λ^(4−k)) / P′(λ)`, with the ∂cₖ/∂p exact from the
 //! generated gradient (`Derivatives::quartic_gradient`).
 
-use crate::modes::Mode;
+use crate::modes::{CYCLES_CONSTANT, Mode};
 use crate::{Derivatives, Quartic, QuarticGradient};
 use num_complex::Complex64;
 use serde::Serialize;
-use std::f64::consts::{LN_2, PI};
 
 /// dλ/dp for every input p of [`Derivatives::QUARTIC_INPUTS`], at a simple
 /// root `lam`. `None` when P′(λ) vanishes (a multiple root, where λ is not
@@ -74,7 +73,7 @@ pub fn mode_sensitivities(d: &Derivatives, mode: &Mode) -> Option<Vec<ModeSensit
     let values = d.quartic_input_values();
     let (r, s) = (lam.re, lam.im);
     let n = lam.norm();
-    let k = LN_2 / (2.0 * PI);
+    let k = CYCLES_CONSTANT;
     let mut out: Vec<ModeSensitivity> = (0..15)
         .map(|i| {
             let (dr, ds) = (dl[i].re, dl[i].im);

@@ -2,7 +2,9 @@
 //! a result. Held inline (a design point's evaluation allocates nothing) and
 //! written out only when displayed.
 
-use crate::damping::Theory;
+use crate::display::Num;
+use crate::theory::Theory;
+use arrayvec::ArrayVec;
 use serde::Serialize;
 use std::fmt;
 
@@ -33,37 +35,29 @@ impl fmt::Display for Warning {
         match *self {
             Warning::TrueDeltaOnly { theory, taper } => write!(
                 f,
-                "{theory}: the theory is for a true delta; taper {taper} is treated with the true delta's formulas at this aspect ratio"
+                "{theory}: the theory is for a true delta; taper {} is treated with the true delta's formulas at this aspect ratio",
+                Num(taper)
             ),
-            Warning::AwayFromSonic { theory, mach } => {
-                let eq = if theory == Theory::Transonic {
-                    "(38)"
-                } else {
-                    "(39)–(40)"
-                };
-                write!(
-                    f,
-                    "{theory} {eq}: a theory for M ≈ 1, applied at M = {mach}"
-                )
-            }
+            Warning::AwayFromSonic { theory, mach } => write!(
+                f,
+                "{theory} {}: a theory for M ≈ 1, applied at M = {}",
+                theory.equations(),
+                Num(mach)
+            ),
             Warning::NotSlender { beta_a } => write!(
                 f,
                 "slender (37): slender-wing theory assumes βA ≪ 1; here βA = {beta_a:.2}"
             ),
-            Warning::Incompressible { theory, mach } => {
-                let eq = if theory == Theory::Garrick {
-                    "(32)–(33)"
-                } else {
-                    "(34)–(35)"
-                };
-                write!(
-                    f,
-                    "{theory} {eq}: an incompressible theory, applied at M = {mach}"
-                )
-            }
+            Warning::Incompressible { theory, mach } => write!(
+                f,
+                "{theory} {}: an incompressible theory, applied at M = {}",
+                theory.equations(),
+                Num(mach)
+            ),
             Warning::NearlyTransonic { mach } => write!(
                 f,
-                "supersonic (36): linear theory needs ω̄/(M² − 1) ≪ 1; at M = {mach} M² − 1 = {:.3}",
+                "supersonic (36): linear theory needs ω̄/(M² − 1) ≪ 1; at M = {} M² − 1 = {:.3}",
+                Num(mach),
                 mach * mach - 1.0
             ),
             Warning::NearlySonicEdge { beta_cot } => write!(
@@ -90,18 +84,13 @@ impl Serialize for Warning {
 
 /// Up to eight warnings, in the order they arose; a ninth is dropped (no
 /// evaluation raises more than five).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Warnings {
-    list: [Option<Warning>; 8],
-    len: usize,
-}
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Warnings(ArrayVec<Warning, 8>);
 
 impl Warnings {
     pub fn push(&mut self, w: Warning) {
-        if let Some(slot) = self.list.get_mut(self.len) {
-            *slot = Some(w);
-            self.len += 1;
-        }
+        // full: dropped (see the type's documentation)
+        let _ = self.0.try_push(w);
     }
 
     pub fn extend(&mut self, other: &Warnings) {
@@ -111,23 +100,23 @@ impl Warnings {
     }
 
     pub fn len(&self) -> usize {
-        self.len
+        self.0.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.len == 0
+        self.0.is_empty()
     }
 
-    pub fn iter(&self) -> impl Iterator<Item = &Warning> {
-        self.list[..self.len].iter().flatten()
+    pub fn iter(&self) -> std::slice::Iter<'_, Warning> {
+        self.0.iter()
     }
 }
 
 impl<'a> IntoIterator for &'a Warnings {
     type Item = &'a Warning;
-    type IntoIter = std::iter::Flatten<std::slice::Iter<'a, Option<Warning>>>;
+    type IntoIter = std::slice::Iter<'a, Warning>;
     fn into_iter(self) -> Self::IntoIter {
-        self.list[..self.len].iter().flatten()
+        self.0.iter()
     }
 }
 

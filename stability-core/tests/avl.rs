@@ -78,6 +78,35 @@ fn truncated_and_foreign_files_are_errors_with_line_numbers() {
     ));
 }
 
+/// Fuzzing found `Sref = 0` reported as an overflow (μ₁ = m/(½ρSc̄)
+/// divided by zero downstream): the reader names the real cause, with its
+/// line.
+#[test]
+fn a_zero_or_negative_reference_quantity_is_named() {
+    let line = ST.lines().position(|l| l.contains("Sref")).unwrap() + 1;
+    for (name, what, printed) in [
+        ("Sref", "area", "Sref =  60.000"),
+        ("Cref", "chord", "Cref =  7.0000"),
+        ("Bref", "span", "Bref =  11.547"),
+    ] {
+        for bad in ["0.0", "-7.0"] {
+            let text = ST.replace(printed, &format!("{name} = {bad}"));
+            let e = parse_st(&text).unwrap_err();
+            assert!(
+                matches!(e, AvlError::NotPositive { name: n, .. } if n == name),
+                "{name} = {bad}: {e}"
+            );
+            assert_eq!(e.line(), line, "{e}");
+            let m = e.to_string();
+            assert!(
+                m.contains(name) && m.contains(what) && m.contains("positive"),
+                "{m}"
+            );
+            assert!(!m.contains("overflow"), "{m}");
+        }
+    }
+}
+
 #[test]
 fn glued_negative_numbers_are_read() {
     let text = ST.replace("Cmq =  -2.401193", "Cmq =-12.401193");

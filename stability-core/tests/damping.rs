@@ -95,7 +95,7 @@ fn garner_taper_reproduces_the_printed_34_and_35() {
     }
     assert_eq!(
         damping_derivatives(Theory::GarnerTaper, &wing(45.0, 0.0), 0.25, 0.3, None).unwrap_err(),
-        DampingError::Taper(0.0)
+        DampingError::Taper { taper: 0.0 }
     );
 }
 
@@ -273,7 +273,7 @@ fn theories_outside_their_validity_are_errors_not_nan() {
     let w = wing(45.0, 0.0);
     assert_eq!(
         damping_derivatives(Theory::Supersonic, &w, 0.25, 0.9, None).unwrap_err(),
-        DampingError::SubsonicMach(0.9)
+        DampingError::SubsonicMach { mach: 0.9 }
     );
     // 45°: the leading edge is sonic at M = √2
     match damping_derivatives(Theory::Supersonic, &w, 0.25, 1.6, None).unwrap_err() {
@@ -284,16 +284,16 @@ fn theories_outside_their_validity_are_errors_not_nan() {
     }
     assert!(matches!(
         damping_derivatives(Theory::TransonicFrequency, &w, 0.25, 1.0, None),
-        Err(DampingError::Frequency(None))
+        Err(DampingError::Frequency { omega_bar: None })
     ));
     assert!(matches!(
         damping_derivatives(Theory::TransonicFrequency, &w, 0.25, 1.0, Some(-1.0)),
-        Err(DampingError::Frequency(Some(_)))
+        Err(DampingError::Frequency { omega_bar: Some(_) })
     ));
     let bad = WingInput { sweep_le: 0.0, ..w };
     assert!(matches!(
         damping_derivatives(Theory::Slender, &bad, 0.25, 0.5, None),
-        Err(DampingError::Sweep(_))
+        Err(DampingError::Sweep { .. })
     ));
     // near-sonic warnings
     let d = damping_derivatives(Theory::Supersonic, &w, 0.25, 1.05, None).unwrap();

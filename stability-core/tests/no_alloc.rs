@@ -1,12 +1,12 @@
 //! The hot path allocates nothing: the generated coefficient and gradient
 //! functions, the quartic's roots and a derivative set's whole analysis
-//! (roots, modes, Routh, §8 criteria, eq 7 check), and a design point's
-//! evaluation from its planform (coefficients, derivatives of every theory,
-//! the frequency iteration, warnings). A counting global
-//! allocator sees no allocation while they run. (One test, so that no other
-//! test's allocations run beside it.)
+//! (roots at any scale, modes, Routh, §8 criteria, eq 7 check), and a
+//! design point's evaluation from its planform (coefficients, derivatives
+//! of every theory, the frequency iteration, warnings). A counting global
+//! allocator sees no allocation while they run. (One test, so that no
+//! other test's allocations run beside it.)
 
-use stability_core::{Derivatives, Quartic, QuarticGradient};
+use stability_core::{Quartic, QuarticGradient};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::hint::black_box;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -34,23 +34,7 @@ static GLOBAL: Counting = Counting;
 
 #[test]
 fn the_hot_path_does_not_allocate() {
-    let d = Derivatives {
-        x_u: -0.03,
-        x_w: 0.25,
-        x_wdot: 0.01,
-        x_q: 0.02,
-        z_u: -0.62,
-        z_w: -3.2,
-        z_wdot: -0.6,
-        z_q: -1.5,
-        m_u: 0.01,
-        m_w: -0.55,
-        m_wdot: -0.25,
-        m_q: -0.6,
-        c_l: 0.3,
-        mu1: 50.0,
-        i_b: 0.08,
-    };
+    let d = stability_core::examples::tailless_delta_45_coupled();
     let before = ALLOCATIONS.load(Ordering::SeqCst);
     let mut acc = 0.0;
     for i in 0..1000 {
@@ -64,6 +48,12 @@ fn the_hot_path_does_not_allocate() {
         let lean = stability_core::analysis::Analysis::without_classical(black_box(&di))
             .expect("analysis");
         acc += r[0].re + a.modes.len() as f64 + lean.routh.discriminant;
+    }
+    // the badly scaled, whose roots take the Newton-polygon path
+    for i_b in [1e-160, 1e308] {
+        let di = stability_core::Derivatives { i_b, ..d };
+        let a = stability_core::analysis::Analysis::of(black_box(&di)).expect("analysis");
+        acc += a.roots[0].re;
     }
     use stability_core::case::{DampingModel, evaluate};
     use stability_core::damping::Theory;

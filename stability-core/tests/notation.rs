@@ -26,8 +26,8 @@ proptest! {
         let r = report_values(seed);
         let p = [lt];
         for n in Notation::all() {
-            let theirs = n.from_report(&r, &p);
-            let back = n.to_report(&theirs, &p);
+            let theirs = n.from_report(&r, &p).unwrap();
+            let back = n.to_report(&theirs, &p).unwrap();
             for i in 0..N_ROWS {
                 if n.names()[i].is_some() {
                     let (a, b) = (r[i].unwrap(), back[i].expect("defined row comes back"));
@@ -45,10 +45,10 @@ proptest! {
         let r = report_values(seed);
         let p = [lt];
         for x in Notation::all() {
-            let vx = x.from_report(&r, &p);
+            let vx = x.from_report(&r, &p).unwrap();
             for y in Notation::all() {
-                let vy = x.convert(y, &vx, &p);
-                let vx2 = y.convert(x, &vy, &p);
+                let vy = x.convert(y, &vx, &p).unwrap();
+                let vx2 = y.convert(x, &vy, &p).unwrap();
                 for i in 0..N_ROWS {
                     if let (Some(a), Some(b)) = (vx[i], vx2[i]) {
                         prop_assert!((a - b).abs() <= 1e-14 * (1.0 + a.abs()), "{} → {} → {}: row {}", x.name(), y.name(), x.name(), tables::ROWS[i]);
@@ -74,7 +74,7 @@ fn factors_by_hand() {
     g[at("z_w")] = Some(-1.5); // ρ instead of ½ρ: report z_w = 2·(−1.5)
     g[at("m_q")] = Some(-0.8); // and c̄ₛ = ¾c̄: report m_q = 2·(9/16)·(−0.8) = −0.9
     g[at("mu")] = Some(40.0); // report μ₁ = 2·¾·40 = 60
-    let r = garner.to_report(&g, &[1.0]);
+    let r = garner.to_report(&g, &[1.0]).unwrap();
     assert_eq!(r[at("z_w")], Some(-3.0));
     assert_eq!(r[at("m_q")], Some(-0.9));
     assert_eq!(r[at("mu")], Some(60.0));
@@ -83,7 +83,7 @@ fn factors_by_hand() {
     a[at("z_u")] = Some(-0.1);
     a[at("c_l")] = Some(0.5);
     a[at("z_q")] = Some(-6.0);
-    let r = american.to_report(&a, &[1.0]);
+    let r = american.to_report(&a, &[1.0]).unwrap();
     assert_eq!(r[at("z_u")], Some(-1.1));
     assert_eq!(r[at("z_q")], Some(-3.0));
 }
@@ -119,7 +119,7 @@ fn the_boeing_747_of_etkin_and_reid() {
     ] {
         a[at(name)] = Some(x);
     }
-    let mut r = american.to_report(&a, &[1.0]);
+    let mut r = american.to_report(&a, &[1.0]).unwrap();
     r[at("mu")] = Some(mass / (0.5 * rho * s * c));
     r[at("i_b")] = Some(iy / (mass * c * c));
     let d = derivatives_from_report(&r).unwrap();
@@ -134,4 +134,49 @@ fn the_boeing_747_of_etkin_and_reid() {
     close(sp.im / tau, 0.8875, 0.002);
     close(ph.re / tau, -0.003289, 0.002);
     close(ph.im / tau, 0.06723, 0.002);
+}
+
+/// Fuzzing found `convert` writing `C_Lq = -inf` with exit 0: a conversion
+/// whose result is not finite is an error naming the quantity, in the
+/// target notation; so is a non-finite input.
+#[test]
+fn a_conversion_never_returns_a_non_finite_value() {
+    use stability_core::examples::tailless_delta_45;
+    use stability_core::notation::{NotationError, report_values};
+    let ribner = Notation::named("ribner").unwrap();
+    let mut d = tailless_delta_45();
+    d.z_q = 1e308; // C_Lq = −2z_q overflows
+    let e = ribner.from_report(&report_values(&d), &[1.0]).unwrap_err();
+    assert_eq!(
+        e,
+        NotationError::Overflow {
+            notation: "ribner",
+            quantity: "C_Lq",
+            value: f64::NEG_INFINITY
+        }
+    );
+    let m = e.to_string();
+    assert!(
+        m.contains("C_Lq") && m.contains("ribner") && m.contains("-inf"),
+        "{m}"
+    );
+    // the same derivative set converts where the factors allow it
+    assert!(
+        ribner
+            .from_report(&report_values(&tailless_delta_45()), &[1.0])
+            .is_ok()
+    );
+    // non-finite inputs are named in the notation they are given in
+    let mut v = report_values(&tailless_delta_45());
+    v[row("m_q").unwrap()] = Some(f64::NAN);
+    let e = Notation::REPORT.convert(ribner, &v, &[1.0]).unwrap_err();
+    assert!(
+        matches!(e, NotationError::NonFiniteInput { notation: "report", quantity, .. } if quantity == Notation::REPORT.name_of(row("m_q").unwrap())),
+        "{e}"
+    );
+    let e = ribner.to_report(&report_values(&tailless_delta_45()), &[f64::INFINITY]);
+    assert!(
+        matches!(e, Err(NotationError::NonFiniteInput { .. })),
+        "{e:?}"
+    );
 }

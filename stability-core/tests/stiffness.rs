@@ -1,14 +1,49 @@
-//! The stiffness derivatives against an independent route: C_L, C_D, C_m as
-//! functions of (α, M) built from the same coefficient model, differentiated
-//! by central differences in the test, then eqs (9)–(14) applied directly —
-//! i.e. the definitions, not the report's chain of eqs (21)–(29).
+//! The stiffness derivatives against an independent route: the forces and
+//! moment on the aircraft built from the coefficient model and resolved
+//! into the stability axes of the undisturbed flight, then differentiated
+//! numerically with respect to the disturbance velocities û = u/V and
+//! ŵ = w/V — the definitions of §3, not the report's chain of eqs (9)–(29).
+//!
+//! With the disturbed velocity V(1 + û, ŵ): the dynamic pressure grows by
+//! q̂ = (1 + û)² + ŵ², the incidence by Δα = atan(ŵ/(1 + û)) and the Mach
+//! number to M₀√q̂; lift and drag act normal and along the disturbed
+//! velocity, so in the fixed axes (X forward, Z down)
+//! X/(½ρV²S) = q̂(C_L sin Δα − C_D cos Δα) and
+//! Z/(½ρV²S) = −q̂(C_L cos Δα + C_D sin Δα), with C_L = a(M)·α,
+//! C_D = C_D0(M) + K(M)C_L²; the pitching moment is that of the normal
+//! force C_N = C_L cos Δα + C_D sin Δα about the c.g., (h − H₀(M))·C_N,
+//! plus the elevon's trim moment, which cancels it in the undisturbed
+//! flight (the report's trimmed aircraft, eq 13). Then x_u = ∂(X/½ρV²S)/∂û,
+//! x_w = ∂(X/½ρV²S)/∂ŵ, and so on (the report's ½ρSV normalisation).
 
-use stability_core::aero::{AeroModel, level_flight_lift};
+use stability_core::aero::{AeroModel, Coefficients, level_flight_lift};
 use stability_core::geometry::{Planform, Size};
 use stability_core::stiffness::stiffness;
 
+/// (X, Z, M) on ½ρV²S (M also on c̄) at the disturbance (û, ŵ).
+fn forces(
+    model: &AeroModel,
+    p: &Planform,
+    (mach, alpha, h): (f64, f64, f64),
+    trim: f64,
+    (u, w): (f64, f64),
+) -> [f64; 3] {
+    let q = (1.0 + u).powi(2) + w * w;
+    let d_alpha = (w / (1.0 + u)).atan();
+    let c: Coefficients = model.at(p, mach * q.sqrt()).unwrap();
+    let cl = c.lift_slope.value * (alpha + d_alpha);
+    let cd = c.zero_lift_drag.value + c.drag_due_to_lift.value * cl * cl;
+    let (s, co) = d_alpha.sin_cos();
+    let cn = cl * co + cd * s;
+    [
+        q * (cl * s - cd * co),
+        -q * (cl * co + cd * s),
+        q * ((h - c.aerodynamic_centre.value) * cn + trim),
+    ]
+}
+
 #[test]
-fn eqs_9_to_14_against_finite_differences_of_the_coefficients() {
+fn the_six_stiffness_derivatives_from_the_forces_on_the_aircraft() {
     let model = AeroModel::default();
     for deg in [45.0f64, 60.0] {
         let p = Planform::new(deg.to_radians(), 0.0, Size::RootChord(10.0)).unwrap();
@@ -17,44 +52,43 @@ fn eqs_9_to_14_against_finite_differences_of_the_coefficients() {
             let cl = level_flight_lift(0.05, mach).value;
             let c = model.at(&p, mach).unwrap();
             let s = stiffness(&c, cl, h);
-            // Coefficients at incidence α (C_L = aα) and Mach M:
-            let coefs = |alpha: f64, m: f64| {
-                let c = model.at(&p, m).unwrap();
-                let cl = c.lift_slope.value * alpha;
-                let cd = c.zero_lift_drag.value + c.drag_due_to_lift.value * cl * cl;
-                let cm = cl * (h - c.aerodynamic_centre.value);
-                (cl, cd, cm)
-            };
             let alpha = cl / c.lift_slope.value;
-            let (dm, da) = (1e-6, 1e-7);
-            let (clp, cdp, cmp) = coefs(alpha, mach + dm);
-            let (clm, cdm, cmm) = coefs(alpha, mach - dm);
-            let (_, cdap, _) = coefs(alpha + da, mach);
-            let (_, cdam, _) = coefs(alpha - da, mach);
-            let (cl0, cd0, _) = coefs(alpha, mach);
-            let dcl_dm = (clp - clm) / (2.0 * dm);
-            let dcd_dm = (cdp - cdm) / (2.0 * dm);
-            let dcm_dm = (cmp - cmm) / (2.0 * dm);
-            let dcd_da = (cdap - cdam) / (2.0 * da);
-            let tol = 1e-6;
-            let near = |a: f64, b: f64, what: &str| {
+            let trim = -(h - c.aerodynamic_centre.value) * cl;
+            let at = |u: f64, w: f64| forces(&model, &p, (mach, alpha, h), trim, (u, w));
+            let d = 1e-6;
+            let (up, um) = (at(d, 0.0), at(-d, 0.0));
+            let (wp, wm) = (at(0.0, d), at(0.0, -d));
+            let by_u: [f64; 3] = std::array::from_fn(|k| (up[k] - um[k]) / (2.0 * d));
+            let by_w: [f64; 3] = std::array::from_fn(|k| (wp[k] - wm[k]) / (2.0 * d));
+            let near = |got: f64, want: f64, what: &str| {
                 assert!(
-                    (a - b).abs() <= tol * (1.0 + b.abs()),
-                    "{deg}° M {mach} {what}: {a} vs {b}"
+                    (got - want).abs() <= 1e-6 * (1.0 + want.abs()),
+                    "{deg}° M {mach} {what}: {got} vs {want} from the forces"
                 )
             };
-            near(s.x_u, -mach * dcd_dm - 2.0 * cd0, "x_u (eq 9)");
-            near(s.z_u, -mach * dcl_dm - 2.0 * cl0, "z_u (eq 10)");
-            near(s.x_w, cl0 - dcd_da, "x_w (eq 11)");
-            near(s.z_w, -cd0 - c.lift_slope.value, "z_w (eq 12)");
-            near(s.m_u, mach * dcm_dm, "m_u (eq 13, trimmed)");
-            near(
-                s.m_w,
-                (h - c.aerodynamic_centre.value) * (c.lift_slope.value + cd0),
-                "m_w (eq 25)",
-            );
+            near(s.x_u, by_u[0], "x_u (eq 9)");
+            near(s.z_u, by_u[1], "z_u (eq 10)");
+            near(s.m_u, by_u[2], "m_u (eq 13, trimmed)");
+            near(s.x_w, by_w[0], "x_w (eq 11)");
+            near(s.z_w, by_w[1], "z_w (eq 12)");
+            near(s.m_w, by_w[2], "m_w (eqs 14, 25)");
         }
     }
+}
+
+/// A hand value: the 45° delta at M = 0.5 with the default models,
+/// a = 2πA/(2 + √(A²(β² + tan²Λ½) + 4)) = 8π/(2 + √20) = 3.8832 (A = 4,
+/// tan Λ½ = ½, β² = 0.75), C_L = 0.05/0.25 = 0.2, K = 1/a,
+/// C_D = 0.01 + 0.04/a: z_w = −C_D − a = −3.9035.
+#[test]
+fn z_w_by_hand() {
+    let p = Planform::new(45f64.to_radians(), 0.0, Size::RootChord(10.0)).unwrap();
+    let c = AeroModel::default().at(&p, 0.5).unwrap();
+    let a = 2.0 * std::f64::consts::PI * 4.0 / (2.0 + (16.0 * (0.75 + 0.25) + 4.0f64).sqrt());
+    assert!((a - 3.883_2).abs() < 1e-4, "{a}");
+    let s = stiffness(&c, level_flight_lift(0.05, 0.5).value, 0.25);
+    assert!((s.z_w - (-0.01 - 0.04 / a - a)).abs() < 1e-12, "{}", s.z_w);
+    assert!((s.z_w + 3.903_5).abs() < 1e-4, "{}", s.z_w);
 }
 
 #[test]

@@ -2,16 +2,16 @@
 //! condition → derivatives (§5–7) → quartic (§4) → modes → criteria (§8–9).
 
 use crate::Failure;
-use crate::cmd::quartic::analysis_json;
 use crate::config::{self, limits};
 use crate::diag::{InputError, num};
 use crate::fmt::sig;
 use crate::output::print;
 use crate::page::analysis_page;
-use serde_json::{Value, json};
+use serde::Serialize;
 use stability_core::Derivatives;
 use stability_core::case::{CaseResult, DampingModel, FrequencyIteration, evaluate};
 use stability_core::criteria::Margins;
+use stability_core::json::CaseView;
 use std::fmt::Write;
 
 /// Overrides of the config from the command line.
@@ -68,62 +68,20 @@ pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
     Ok(())
 }
 
-/// The 15 report-notation inputs as a JSON object.
-pub fn derivatives_json(d: &Derivatives) -> Value {
-    let mut map = serde_json::Map::new();
-    for (name, v) in Derivatives::QUARTIC_INPUTS
-        .iter()
-        .zip(d.quartic_input_values())
-    {
-        map.insert((*name).to_string(), json!(v));
-    }
-    Value::Object(map)
+/// The `analyze --json` object: the config's path and the design point as
+/// the library serializes it.
+#[derive(Serialize)]
+pub struct AnalyzeJson<'a> {
+    file: &'a str,
+    #[serde(flatten)]
+    point: CaseView<'a>,
 }
 
-pub fn to_json(cfg: &config::Config, r: &CaseResult) -> Value {
-    let c = &cfg.case;
-    let p = &c.planform;
-    let margins = Margins::of(
-        &r.analysis.quartic,
-        &r.derivatives,
-        r.coefficients.lift_slope.value,
-    );
-    let mut map = serde_json::Map::new();
-    map.insert("file".into(), json!(cfg.path));
-    map.insert(
-        "case".into(),
-        json!({
-            "sweep_deg": p.sweep_le.to_degrees(), "taper": p.taper, "aspect_ratio": p.aspect_ratio(),
-            "mac": p.mac(), "smc": p.smc(), "area": p.area(), "span": p.span(),
-            "mach": c.mach, "cg": c.h, "mu1": c.mu1, "i_b": c.i_b, "cl_m2": c.cl_m2, "c_l": r.c_l,
-            "damping": c.damping.name(),
-        }),
-    );
-    map.insert(
-        "aerodynamics".into(),
-        serde_json::to_value(r.coefficients).unwrap_or(Value::Null),
-    );
-    map.insert("derivatives".into(), derivatives_json(&r.derivatives));
-    map.insert(
-        "damping".into(),
-        json!({
-            "theory": r.damping.theory.name(),
-            "equations": r.damping.theory.equations(),
-            "z_thetadot": r.damping.derivatives.z_thetadot(),
-            "m_thetadot": r.damping.derivatives.m_thetadot(),
-            "fig18": r.damping.fig18,
-            "frequency": r.frequency,
-        }),
-    );
-    map.extend(analysis_json(&r.analysis, None));
-    if let Some(Value::Object(criteria)) = map.get_mut("criteria") {
-        criteria.insert(
-            "margins".into(),
-            json!({ "static_margin": margins.static_margin, "manoeuvre_margin": margins.manoeuvre_margin }),
-        );
+pub fn to_json<'a>(cfg: &'a config::Config, r: &'a CaseResult) -> AnalyzeJson<'a> {
+    AnalyzeJson {
+        file: &cfg.path,
+        point: r.view(&cfg.case),
     }
-    map.insert("warnings".into(), json!(r.warnings));
-    Value::Object(map)
 }
 
 pub fn page(cfg: &config::Config, r: &CaseResult) -> String {

@@ -11,8 +11,9 @@ use crate::input::rows::{DERIVATIVES, FLIGHT, QUARTIC};
 use crate::input::tabled::uses_parameter;
 use crate::input::{self, DerivativeFile};
 use crate::output::print;
-use serde_json::{Value, json};
-use stability_core::notation::{Notation, Values, tables};
+use serde::Serialize;
+use stability_core::notation::{Notation, NotationError, Values, tables};
+use std::collections::BTreeMap;
 use std::fmt::Write;
 
 pub fn run(from: NotationArg, to: Notation, file: &str, json_out: bool) -> Result<(), Failure> {
@@ -44,49 +45,68 @@ pub fn run(from: NotationArg, to: Notation, file: &str, json_out: bool) -> Resul
     Ok(())
 }
 
-/// The values in notation `to`, every one finite.
+/// The values in notation `to`, every one finite (the library refuses a
+/// conversion that overflows; the error is placed at the value it came
+/// from).
 fn converted(input: &DerivativeFile, to: Notation) -> Result<Values, InputError> {
-    let values = to.from_report(&input.report, &input.parameters);
-    for (i, v) in values.iter().enumerate() {
-        let Some(v) = v.filter(|v| !v.is_finite()) else {
-            continue;
-        };
-        let theirs = to.names()[i].unwrap_or(tables::ROWS[i]);
-        let ours = Notation::REPORT.names()[i].unwrap_or(tables::ROWS[i]);
-        let message = format!(
-            "in notation `{}`, {theirs} would be {}: the conversion overflows ({ours} = {} in the report's notation); nothing written",
-            to.name(),
-            num(v),
-            input.report[i].map_or("—".into(), num)
-        );
-        return Err(input.error_at(i, message));
-    }
-    Ok(values)
+    to.from_report(&input.report, &input.parameters)
+        .map_err(|e| {
+            let (notation, quantity) = match &e {
+                NotationError::Overflow { quantity, .. } => (to, *quantity),
+                NotationError::NonFiniteInput { quantity, .. } => (Notation::REPORT, *quantity),
+            };
+            let row = notation
+                .row_of(quantity)
+                .or_else(|| tables::ROWS.iter().position(|r| *r == quantity));
+            let source = row
+                .and_then(|i| input.report[i].map(|v| (i, v)))
+                .map(|(i, v)| {
+                    format!(
+                        " ({} = {} in the report's notation)",
+                        Notation::REPORT.name_of(i),
+                        num(v)
+                    )
+                })
+                .unwrap_or_default();
+            let message = format!("{e}{source}; nothing written");
+            match row {
+                Some(i) => input.error_at(i, message),
+                None => InputError::file(&input.path, message),
+            }
+        })
 }
 
-fn to_json(input: &DerivativeFile, from: &str, to: Notation, values: &Values) -> Value {
-    let mut theirs = serde_json::Map::new();
-    for (i, n) in to.names().iter().enumerate() {
-        if let Some(n) = n {
-            theirs.insert(
-                (*n).to_string(),
-                values[i].map_or(Value::Null, |v| json!(v)),
-            );
-        }
+/// The `convert --json` object: the notations, the values in the target
+/// notation by its names (null where the input does not determine one),
+/// the report's values, and the parameters.
+#[derive(Serialize)]
+struct ConvertJson<'a> {
+    from: &'a str,
+    to: &'a str,
+    values: BTreeMap<&'static str, Option<f64>>,
+    report: BTreeMap<&'static str, f64>,
+    parameters: BTreeMap<&'static str, f64>,
+}
+
+fn to_json<'a>(
+    input: &DerivativeFile,
+    from: &'a str,
+    to: Notation,
+    values: &Values,
+) -> ConvertJson<'a> {
+    let theirs = to.names().iter().zip(values);
+    let ours = Notation::REPORT.names().iter().zip(&input.report);
+    ConvertJson {
+        from,
+        to: to.name(),
+        values: theirs.filter_map(|(n, v)| n.map(|n| (n, *v))).collect(),
+        report: ours.filter_map(|(n, v)| Some(((*n)?, (*v)?))).collect(),
+        parameters: tables::PARAMETERS
+            .iter()
+            .copied()
+            .zip(input.parameters)
+            .collect(),
     }
-    let mut report = serde_json::Map::new();
-    for (i, n) in Notation::REPORT.names().iter().enumerate() {
-        if let (Some(n), Some(v)) = (n, input.report[i]) {
-            report.insert((*n).to_string(), json!(v));
-        }
-    }
-    json!({
-        "from": from,
-        "to": to.name(),
-        "values": theirs,
-        "report": report,
-        "parameters": { "lt": input.parameters[0] },
-    })
 }
 
 /// One table of the TOML output: the notation's names for `rows`.

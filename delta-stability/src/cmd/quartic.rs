@@ -6,10 +6,10 @@ use crate::Failure;
 use crate::input::{self, DerivativeFile, rows};
 use crate::output::print;
 use crate::page::analysis_page;
-use serde_json::{Value, json};
+use serde::Serialize;
+use stability_core::Derivatives;
 use stability_core::analysis::{Analysis, AnalysisError};
-use stability_core::criteria::{Category, phugoid_level, short_period_level};
-use stability_core::modes::Mode;
+use stability_core::json::Timed;
 
 pub fn run(file: &str, json: bool) -> Result<(), Failure> {
     let input = input::read(file)?;
@@ -62,124 +62,41 @@ fn largest_input(input: &DerivativeFile) -> usize {
 
 /// The row an analysis error is about.
 fn blame(input: &DerivativeFile, e: &AnalysisError) -> usize {
+    let named = |name: &str| {
+        Derivatives::QUARTIC_INPUTS
+            .iter()
+            .position(|n| *n == name)
+            .map(|k| rows::QUARTIC[k])
+    };
     match e {
-        AnalysisError::LeadingCoefficientZero(_) => rows::Z_WDOT,
-        AnalysisError::NonPositiveParameter { mu1, .. } if *mu1 <= 0.0 => rows::MU,
-        AnalysisError::NonPositiveParameter { .. } => rows::I_B,
+        AnalysisError::LeadingCoefficientZero { .. } => rows::Z_WDOT,
+        AnalysisError::NonFinite { input: name, .. }
+        | AnalysisError::NotPositive { input: name, .. } => {
+            named(name).unwrap_or_else(|| largest_input(input))
+        }
         _ => largest_input(input),
     }
 }
 
-fn opt(v: Option<f64>) -> Value {
-    match v {
-        Some(x) if x.is_finite() => json!(x),
-        _ => Value::Null,
+/// The `quartic --json` object: the file and its notation, the analysis as
+/// the library serializes it (with times in seconds where τ is known), and
+/// the reader's warnings.
+#[derive(Serialize)]
+pub struct QuarticJson<'a> {
+    file: &'a str,
+    notation: &'a str,
+    #[serde(flatten)]
+    analysis: Timed<'a>,
+    warnings: &'a [String],
+}
+
+pub fn to_json<'a>(input: &'a DerivativeFile, a: &'a Analysis) -> QuarticJson<'a> {
+    QuarticJson {
+        file: &input.path,
+        notation: &input.notation,
+        analysis: a.timed(input.dimensional.map(|d| d.tau())),
+        warnings: &input.warnings,
     }
-}
-
-/// One mode as JSON (units of τ; seconds too when τ is known).
-pub fn mode_json(m: &Mode, tau: Option<f64>) -> Value {
-    let mut v = json!({
-        "name": m.name.as_str(),
-        "origin": m.origin,
-        "re": m.re,
-        "im": m.im,
-        "period": opt(m.period),
-        "time_to_half": opt(m.time_to_half),
-        "time_to_double": opt(m.time_to_double),
-        "cycles_to_half": opt(m.cycles_to_half),
-        "cycles_to_double": opt(m.cycles_to_double),
-        "damping_ratio": opt(m.damping_ratio),
-        "natural_frequency": m.natural_frequency,
-        "frequency_parameter": opt(m.frequency_parameter),
-    });
-    if let (Some(tau), Value::Object(map)) = (tau, &mut v) {
-        let s = m.in_seconds(tau);
-        map.insert("period_s".into(), opt(s.period));
-        map.insert("time_to_half_s".into(), opt(s.time_to_half));
-        map.insert("time_to_double_s".into(), opt(s.time_to_double));
-        map.insert("re_s".into(), json!(s.re));
-        map.insert("im_s".into(), json!(s.im));
-    }
-    v
-}
-
-fn levels_json(a: &Analysis, tau: Option<f64>) -> Value {
-    let sp = a.modes.short_period().and_then(|m| m.damping_ratio);
-    let short = sp.map(|z| {
-        json!({
-            "damping_ratio": z,
-            "A": short_period_level(z, Category::A).as_str(),
-            "B": short_period_level(z, Category::B).as_str(),
-            "C": short_period_level(z, Category::C).as_str(),
-        })
-    });
-    let ph = a.modes.phugoid().and_then(|m| {
-        let t2 = tau.and_then(|t| m.time_to_double.map(|x| x * t));
-        m.damping_ratio
-            .map(|z| json!({ "damping_ratio": z, "level": phugoid_level(z, t2).as_str() }))
-    });
-    json!({ "short_period": short, "phugoid": ph })
-}
-
-/// The analysis as JSON: the keys `coefficients`, `routh_discriminant`,
-/// `stable`, `roots`, `modes`, `criteria` (and `tau_s`).
-pub fn analysis_json(a: &Analysis, tau: Option<f64>) -> serde_json::Map<String, Value> {
-    let q = &a.quartic;
-    let roots: Vec<Value> = a
-        .roots
-        .iter()
-        .map(|z| {
-            let mut v = json!({ "re": z.re, "im": z.im });
-            if let (Some(t), Value::Object(map)) = (tau, &mut v) {
-                map.insert("re_s".into(), json!(z.re / t));
-                map.insert("im_s".into(), json!(z.im / t));
-            }
-            v
-        })
-        .collect();
-    let sp = &a.short_period_approximation;
-    let ds = &a.damping_standard;
-    let v = json!({
-        "coefficients": { "A": q.a, "B": q.b, "C": q.c, "D": q.d, "E": q.e },
-        "routh_discriminant": a.routh.discriminant,
-        "stable": a.routh.stable,
-        "roots": roots,
-        "modes": a.modes.iter().map(|m| mode_json(m, tau)).collect::<Vec<_>>(),
-        "tau_s": opt(tau),
-        "criteria": {
-            "one_cycle_standard_met": a.verdict.is_met(),
-            "verdict": a.verdict,
-            "short_period_approximation": {
-                "B": sp.b, "C": sp.c, "re": sp.re, "im": sp.im,
-                "cycles_to_half_report": opt(sp.cycles_to_half_report),
-                "cycles_to_half": opt(sp.cycles_to_half),
-                "frequency_parameter": opt(sp.frequency_parameter),
-            },
-            "damping_standard": {
-                "m_thetadot": ds.m_thetadot,
-                "m_thetadot_max": opt(ds.m_thetadot_max),
-                "margin": opt(ds.margin),
-                "m_thetadot_max_exact": opt(ds.m_thetadot_max_exact),
-                "margin_exact": opt(ds.margin_exact),
-            },
-            "mil_f_8785c": levels_json(a, tau),
-        },
-        "classical_eq7": a.classical,
-    });
-    match v {
-        Value::Object(map) => map,
-        _ => serde_json::Map::new(),
-    }
-}
-
-pub fn to_json(input: &DerivativeFile, a: &Analysis) -> Value {
-    let mut map = serde_json::Map::new();
-    map.insert("file".into(), json!(input.path));
-    map.insert("notation".into(), json!(input.notation));
-    map.extend(analysis_json(a, input.dimensional.map(|d| d.tau())));
-    map.insert("warnings".into(), json!(input.warnings));
-    Value::Object(map)
 }
 
 pub fn table(input: &DerivativeFile, a: &Analysis) -> String {

@@ -10,12 +10,15 @@ use crate::fmt::sig;
 use crate::input::{self, DerivativeFile, rows};
 use crate::output::{atomic_write, print};
 use crate::plot::{Figure, Series};
-use stability_core::response::{Input, ResponseError, Sample, Simplifications, StateSpace, TwoDof};
+use stability_core::response::{
+    Input, ResponseError, Sample, Simplifications, StateSpace, Stop, TwoDof,
+};
 use std::fmt::Write;
 use std::path::Path;
 
 /// The options of the command (validated by clap: `until` positive and
-/// finite, `steps` from 1 to 10⁷, `m0` and `w0` finite).
+/// finite, `steps` from 1 to the library's `MAX_STEPS`, `m0` and `w0`
+/// finite).
 pub struct Options {
     pub file: String,
     pub input: ResponseInput,
@@ -30,7 +33,7 @@ pub struct Options {
 }
 
 /// A computed response with the report's closed form beside it.
-struct Response {
+struct Computed {
     samples: Vec<Sample>,
     /// Eq (45)'s ŵ at each sample, for a step.
     eq45: Option<Vec<f64>>,
@@ -76,7 +79,7 @@ pub fn run(o: &Options) -> Result<(), Failure> {
 }
 
 /// The response over the whole span asked for, or why it cannot be had.
-fn respond(o: &Options, file: &DerivativeFile) -> Result<Response, InputError> {
+fn respond(o: &Options, file: &DerivativeFile) -> Result<Computed, InputError> {
     let bad = |m: String| InputError::file(&o.file, m);
     let input = match o.input {
         ResponseInput::Step => Input::Step {
@@ -96,15 +99,16 @@ fn respond(o: &Options, file: &DerivativeFile) -> Result<Response, InputError> {
         neglect_u: o.neglect_u,
     };
     let ss = StateSpace::new(&file.derivatives, simp).map_err(|e| match e {
-        ResponseError::SingularMass => file.error_at(rows::Z_WDOT, e.to_string()),
+        ResponseError::SingularMass { .. } => file.error_at(rows::Z_WDOT, e.to_string()),
         _ => bad(e.to_string()),
     })?;
-    let samples = ss
+    let r = ss
         .simulate(input, o.until, o.steps)
-        .map_err(|e| bad(e.to_string()))?;
-    if samples.len() < o.steps + 1 {
-        return Err(bad(stopped_early(o, &samples)));
+        .map_err(|e| bad(format!("--until {} --steps {}: {e}", num(o.until), o.steps)))?;
+    if let Some(stop) = &r.stopped {
+        return Err(bad(stopped_early(o, &r.samples, stop)));
     }
+    let samples = r.samples;
     // the report's closed form, eq (45), for the step (from the 2-DOF
     // equation as printed, with the same simplifications applied)
     let mut d = file.derivatives;
@@ -125,29 +129,20 @@ fn respond(o: &Options, file: &DerivativeFile) -> Result<Response, InputError> {
             num(o.until)
         )));
     }
-    Ok(Response { samples, eq45 })
+    Ok(Computed { samples, eq45 })
 }
 
-/// Why a response stopped before `--until`.
-fn stopped_early(o: &Options, samples: &[Sample]) -> String {
-    let h = o.until / o.steps as f64;
+/// Why a response stopped before `--until`: the library's reason.
+fn stopped_early(o: &Options, samples: &[Sample], stop: &Stop) -> String {
     let reached = samples.last().map_or(0.0, |s| s.t);
-    let why = if samples.len() <= 1 {
-        format!(
-            "one step of t̂ = {} already overflows f64 (the matrix exponential of A·h); ask for a shorter --until or more --steps",
-            num(h)
-        )
-    } else {
-        "the motion grows past f64 (it diverges); ask for a shorter --until".to_string()
-    };
     format!(
-        "the response stops at t̂ = {} of the {} asked for (--until): {why}",
+        "the response stops at t̂ = {} of the {} asked for (--until): {stop}; ask for a shorter --until",
         num(reached),
         num(o.until)
     )
 }
 
-fn csv_text(r: &Response, tau: Option<f64>) -> String {
+fn csv_text(r: &Computed, tau: Option<f64>) -> String {
     let mut csv = String::new();
     let _ = write!(csv, "t_hat");
     if tau.is_some() {
@@ -173,7 +168,7 @@ fn csv_text(r: &Response, tau: Option<f64>) -> String {
     csv
 }
 
-fn figure(o: &Options, r: &Response) -> Figure {
+fn figure(o: &Options, r: &Computed) -> Figure {
     let mut fig = Figure::new(
         "response",
         format!(

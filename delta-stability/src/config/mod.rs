@@ -134,6 +134,42 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
     })
 }
 
+/// The one size given (root chord, span or area), its field and value.
+fn size<'p>(
+    r: &mut Reader<'_>,
+    p: &'p RawPlanform,
+    whole: Range<usize>,
+) -> Result<(Size, String, &'p Spanned<f64>), InputError> {
+    let sizes: Vec<(&str, &Spanned<f64>)> = [
+        ("root_chord", &p.root_chord),
+        ("span", &p.span),
+        ("area", &p.area),
+    ]
+    .into_iter()
+    .filter_map(|(n, v)| v.as_ref().map(|v| (n, v)))
+    .collect();
+    let (name, v) = match sizes.as_slice() {
+        [one] => *one,
+        [] => {
+            let m = "give one size: root_chord, span or area";
+            return Err(r.err(whole, "[planform]", m.into()));
+        }
+        [_, second, ..] => {
+            let field = format!("[planform] {}", second.0);
+            let m = "give only one size: root_chord, span or area";
+            return Err(r.err(second.1.span(), &field, m.into()));
+        }
+    };
+    let field = format!("[planform] {name}");
+    let x = r.value(v, &field, &limits::SIZE)?;
+    let size = match name {
+        "root_chord" => Size::RootChord(x),
+        "span" => Size::Span(x),
+        _ => Size::Area(x),
+    };
+    Ok((size, field, v))
+}
+
 fn planform(r: &mut Reader<'_>, p: &Spanned<RawPlanform>) -> Result<Planform, InputError> {
     let whole = p.span();
     let p = p.get_ref();
@@ -148,40 +184,8 @@ fn planform(r: &mut Reader<'_>, p: &Spanned<RawPlanform>) -> Result<Planform, In
         Some(t) => r.value(t, "[planform] taper", &any)?,
         None => 0.0,
     };
-    let sizes: Vec<(&str, &Spanned<f64>)> = [
-        ("root_chord", &p.root_chord),
-        ("span", &p.span),
-        ("area", &p.area),
-    ]
-    .into_iter()
-    .filter_map(|(n, v)| v.as_ref().map(|v| (n, v)))
-    .collect();
-    let (size_name, size_v) = match sizes.as_slice() {
-        [one] => *one,
-        [] => {
-            return Err(r.err(
-                whole,
-                "[planform]",
-                "give one size: root_chord, span or area".into(),
-            ));
-        }
-        [_, second, ..] => {
-            let field = format!("[planform] {}", second.0);
-            return Err(r.err(
-                second.1.span(),
-                &field,
-                "give only one size: root_chord, span or area".into(),
-            ));
-        }
-    };
-    let size_field = format!("[planform] {size_name}");
-    let x = r.value(size_v, &size_field, &limits::SIZE)?;
-    let size = match size_name {
-        "root_chord" => Size::RootChord(x),
-        "span" => Size::Span(x),
-        _ => Size::Area(x),
-    };
-    Planform::new(sweep.to_radians(), taper, size).map_err(|e| {
+    let (size, size_field, size_v) = size(r, p, whole.clone())?;
+    let planform = Planform::new(sweep.to_radians(), taper, size).map_err(|e| {
         let (span, field) = match e {
             GeometryError::Sweep(_) => (p.sweep.span(), "[planform] sweep".to_string()),
             GeometryError::Taper(_) => (
@@ -191,7 +195,25 @@ fn planform(r: &mut Reader<'_>, p: &Spanned<RawPlanform>) -> Result<Planform, In
             GeometryError::Size(..) => (size_v.span(), size_field),
         };
         r.err(span, &field, e.to_string())
-    })
+    })?;
+    // a sweep a hair above 0° is valid, but its span is not finite
+    let derived = [
+        planform.span(),
+        planform.area(),
+        planform.mac(),
+        planform.aspect_ratio(),
+    ];
+    if !derived.iter().all(|v| v.is_finite() && *v > 0.0) {
+        return Err(r.err(
+            p.sweep.span(),
+            "[planform] sweep",
+            format!(
+                "at a sweep of {}° the planform's span, area or aspect ratio is not a finite positive number",
+                crate::diag::num(sweep)
+            ),
+        ));
+    }
+    Ok(planform)
 }
 
 fn model(r: &mut Reader<'_>, m: &RawModel, case: &mut Case) -> Result<(), Failure> {
@@ -276,8 +298,8 @@ impl Config {
                 "[flight] mach"
             }
             CaseError::Aero(_) => "[model.tables]",
-            CaseError::Damping(DampingError::Taper(_)) => "[planform] taper",
-            CaseError::Damping(DampingError::Sweep(_)) => "[planform] sweep",
+            CaseError::Damping(DampingError::Taper { .. }) => "[planform] taper",
+            CaseError::Damping(DampingError::Sweep { .. }) => "[planform] sweep",
             CaseError::Damping(DampingError::NonFinite { .. }) => "[flight] cg",
             CaseError::Damping(_) => "[model] damping",
             _ => "[flight]",

@@ -76,13 +76,8 @@ fn no_stray_tables(cx: &Ctx<'_>, raw: &RawFile) -> Result<(), InputError> {
 
 /// AVL's error, at its line of the `.st` file.
 fn st_error(shown: &str, text: &str, e: &AvlError) -> InputError {
-    let line = match e {
-        AvlError::NotStFile { line, .. }
-        | AvlError::BadNumber { line, .. }
-        | AvlError::NoStabilityAxes { line, .. } => *line,
-        AvlError::Missing { last_line, .. } => *last_line,
-        AvlError::Empty => 1,
-    };
+    // an empty file's error is at its first line
+    let line = e.line().max(1);
     let message = e.to_string();
     let message = message
         .strip_prefix(&format!("line {line}: "))

@@ -12,7 +12,7 @@ use super::rows::{DERIVATIVES, FLIGHT, I_B, MU, QUARTIC, X_Q, X_WDOT};
 use super::suggest::did_you_mean;
 use super::{Origin, Reading, notations};
 use crate::diag::{InputError, num, quote};
-use stability_core::notation::{N_ROWS, Notation, Parameters, Values, tables};
+use stability_core::notation::{N_ROWS, Notation, NotationError, Parameters, Values, tables};
 
 /// Rows a notation may leave out, taken as 0, with the reason given in the
 /// warning that says so.
@@ -54,7 +54,9 @@ pub fn read(cx: &Ctx<'_>, raw: &RawFile, dims: &Dims) -> Result<Reading, InputEr
     let mut warnings = Vec::new();
     required(cx, raw, notation, &mut own, &mut warnings)?;
     let extra = report_table(cx, &raw.report, notation, &own)?;
-    let mut report = notation.to_report(&own.values, &parameters);
+    let mut report = notation
+        .to_report(&own.values, &parameters)
+        .map_err(|e| conversion_error(cx, raw, notation, &own, &e))?;
     let mut origins = own.origins;
     for i in 0..N_ROWS {
         if report[i].is_none() && extra.values[i].is_some() {
@@ -77,9 +79,34 @@ pub fn read(cx: &Ctx<'_>, raw: &RawFile, dims: &Dims) -> Result<Reading, InputEr
 pub fn uses_parameter(notation: Notation, k: usize) -> bool {
     let ones: Values = [Some(1.0); N_ROWS];
     let mut p: Parameters = [1.0; tables::PARAMETERS.len()];
-    let a = notation.to_report(&ones, &p);
+    let a = notation.to_report(&ones, &p).ok();
     p[k] = 2.0;
-    a != notation.to_report(&ones, &p)
+    a != notation.to_report(&ones, &p).ok()
+}
+
+/// A conversion's error at the value it arose from: an overflow is named
+/// by its report quantity, a value that is not finite by the notation's.
+fn conversion_error(
+    cx: &Ctx<'_>,
+    raw: &RawFile,
+    notation: Notation,
+    own: &Own,
+    e: &NotationError,
+) -> InputError {
+    let row = match e {
+        NotationError::Overflow { quantity, .. } => Notation::REPORT.row_of(quantity),
+        NotationError::NonFiniteInput { quantity, .. } => notation.row_of(quantity),
+    }
+    .or_else(|| match e {
+        NotationError::Overflow { quantity, .. }
+        | NotationError::NonFiniteInput { quantity, .. } => {
+            tables::ROWS.iter().position(|r| r == quantity)
+        }
+    });
+    match row.and_then(|i| own.origins[i].as_ref()) {
+        Some(o) => cx.err(o.span.clone(), o.field.clone(), e.to_string()),
+        None => cx.err(raw.notation.span(), "notation", e.to_string()),
+    }
 }
 
 fn parameters(cx: &Ctx<'_>, raw: &RawFile, notation: Notation) -> Result<Parameters, InputError> {

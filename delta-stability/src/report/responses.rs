@@ -56,7 +56,10 @@ fn fig38() -> Plate {
             if let Ok(ss) = StateSpace::new(&r.derivatives, simp)
                 && let Ok(s) = ss.simulate(step, 2.0, 400)
             {
-                f = f.with(Series::new(name, s.iter().map(|x| (x.t, x.w)).collect()));
+                f = f.with(Series::new(
+                    name,
+                    s.samples.iter().map(|x| (x.t, x.w)).collect(),
+                ));
             }
         }
     }

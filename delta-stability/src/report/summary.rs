@@ -8,11 +8,12 @@ use super::quartic::cycles;
 use super::standard::margin;
 use super::study::{WINGS, across};
 use rayon::prelude::*;
-use serde_json::json;
+use serde::Serialize;
 use stability_core::case::{Case, CaseResult};
 use stability_core::criteria::Verdict;
 use stability_core::damping::{Theory, WingInput, damping_derivatives};
 use stability_core::study::{grid, intervals, max_mu1_one_cycle, report_wing};
+use std::collections::BTreeMap;
 
 /// One wing's findings.
 #[derive(Debug, Clone, PartialEq)]
@@ -164,26 +165,37 @@ pub fn findings(study: &Study) -> Findings {
     }
 }
 
+/// One wing in `summary.json` (its keys in the file's order).
+#[derive(Serialize)]
+pub struct WingJson<'a> {
+    cg: f64,
+    fails_one_cycle_mach: &'a [[f64; 2]],
+    /// (Mach, largest μ₁ or null), as pairs.
+    max_mu1_one_cycle: &'a [(f64, Option<f64>)],
+    mu1: f64,
+    sweep_deg: f64,
+    unstable_mach: &'a [[f64; 2]],
+}
+
 /// `summary.json`: for each wing (`delta_45`, `delta_60`) its sweep, c.g.,
 /// μ₁, the Mach intervals where it diverges and fails the standard, and the
 /// largest μ₁ meeting it by Mach number.
-pub fn summary_json(f: &Findings) -> serde_json::Value {
-    let mut summary = serde_json::Map::new();
-    for w in &f.wings {
-        let case = report_wing(w.sweep_deg, 1.0);
-        summary.insert(
-            format!("delta_{}", w.sweep_deg),
-            json!({
-                "sweep_deg": w.sweep_deg,
-                "cg": case.h,
-                "mu1": case.mu1,
-                "unstable_mach": w.unstable,
-                "fails_one_cycle_mach": w.fails,
-                "max_mu1_one_cycle": w.max_mu1.iter().map(|(m, v)| json!([m, v])).collect::<Vec<_>>(),
-            }),
-        );
-    }
-    serde_json::Value::Object(summary)
+pub fn summary_json(f: &Findings) -> BTreeMap<String, WingJson<'_>> {
+    f.wings
+        .iter()
+        .map(|w| {
+            let case = report_wing(w.sweep_deg, 1.0);
+            let json = WingJson {
+                cg: case.h,
+                fails_one_cycle_mach: &w.fails,
+                max_mu1_one_cycle: &w.max_mu1,
+                mu1: case.mu1,
+                sweep_deg: w.sweep_deg,
+                unstable_mach: &w.unstable,
+            };
+            (format!("delta_{}", w.sweep_deg), json)
+        })
+        .collect()
 }
 
 /// Mach intervals in words: `1.16–2.00, 2.10` or `none`.

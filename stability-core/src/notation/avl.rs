@@ -11,6 +11,7 @@
 //! coefficients on ½ρV²Sref, moments also on Cref. AVL is quasi-steady:
 //! there are no α̇ derivatives, and no speed derivatives.
 
+use crate::display::{Excerpt, Num, excerpt};
 use serde::Serialize;
 
 /// Why a `.st` file cannot be read.
@@ -29,16 +30,44 @@ pub enum AvlError {
         name: &'static str,
         last_line: usize,
     },
-    #[error("line {line}: `{name} = {text}`: the value is not a number")]
+    #[error(
+        "line {line}: `{} = {}`: the value is not a number",
+        Excerpt(name),
+        Excerpt(text)
+    )]
     BadNumber {
         name: String,
         line: usize,
         text: String,
     },
     #[error(
+        "line {line}: `{name} = {}`: the reference {what} must be positive (the coefficients are made non-dimensional on it)",
+        Num(*value)
+    )]
+    NotPositive {
+        name: &'static str,
+        what: &'static str,
+        value: f64,
+        line: usize,
+    },
+    #[error(
         "line {line}: the section \"Stability-axis derivatives...\" is missing; found \"{found}\" (an AVL version or output this reader does not know)"
     )]
     NoStabilityAxes { line: usize, found: String },
+}
+
+impl AvlError {
+    /// The 1-based line the error is on (0: the file as a whole).
+    pub fn line(&self) -> usize {
+        match self {
+            AvlError::NotStFile { line, .. }
+            | AvlError::BadNumber { line, .. }
+            | AvlError::NotPositive { line, .. }
+            | AvlError::NoStabilityAxes { line, .. } => *line,
+            AvlError::Missing { last_line, .. } => *last_line,
+            AvlError::Empty => 0,
+        }
+    }
 }
 
 /// The quantities of a `.st` file this program uses.
@@ -99,99 +128,144 @@ pub fn parse_st(text: &str) -> Result<StFile, AvlError> {
     if text.trim().is_empty() {
         return Err(AvlError::Empty);
     }
-    let mut header = false;
-    let mut stability = false;
-    let mut values: Vec<(String, f64, usize)> = Vec::new();
-    let mut last_line = 0;
-    for (i, line) in text.lines().enumerate() {
-        let n = i + 1;
-        last_line = n;
-        if line.contains("Vortex Lattice Output") && line.contains("Total Forces") {
-            header = true;
-            continue;
-        }
-        if line.contains("Stability-axis derivatives") {
-            stability = true;
-            continue;
-        }
-        if line.contains("Geometry-axis derivatives") && !stability {
-            return Err(AvlError::NoStabilityAxes {
-                line: n,
-                found: line.trim().to_string(),
-            });
-        }
-        let ps = pairs(line);
-        if ps.is_empty() {
-            continue;
-        }
-        if !header {
-            return Err(AvlError::NotStFile {
-                line: n,
-                found: line.trim().chars().take(40).collect(),
-            });
-        }
-        for (name, v) in ps {
-            match v.parse::<f64>() {
-                Ok(x) if x.is_finite() => values.push((name, x, n)),
-                _ => {
-                    // Tolerate text after '=' that is not one of ours
-                    // (e.g. "Configuration: …"); complain only for ours.
-                    if REQUIRED.contains(&name.as_str()) || OPTIONAL.contains(&name.as_str()) {
-                        return Err(AvlError::BadNumber {
-                            name,
-                            line: n,
-                            text: v,
-                        });
-                    }
-                }
-            }
-        }
-    }
-    if !header {
-        return Err(AvlError::NotStFile {
-            line: 1,
-            found: text
-                .lines()
-                .next()
-                .unwrap_or("")
-                .trim()
-                .chars()
-                .take(40)
-                .collect(),
-        });
-    }
-    let get = |name: &'static str| {
-        values
-            .iter()
-            .find(|(k, _, _)| k == name)
-            .map(|(_, v, _)| *v)
-    };
-    let need = |name: &'static str| get(name).ok_or(AvlError::Missing { name, last_line });
-    let st = StFile {
-        sref: need("Sref")?,
-        cref: need("Cref")?,
-        bref: need("Bref")?,
-        xref: get("Xref").unwrap_or(0.0),
-        alpha_deg: need("Alpha")?,
-        mach: need("Mach")?,
-        cl: need("CLtot")?,
-        cd: need("CDtot")?,
-        cm: need("Cmtot")?,
-        cd_ind: get("CDind"),
-        e: get("e"),
-        cl_a: need("CLa")?,
-        cm_a: need("Cma")?,
-        cl_q: need("CLq")?,
-        cm_q: need("Cmq")?,
-        xnp: get("Xnp"),
-    };
-    if !stability {
+    let scan = Scan::of(text)?;
+    let st = scan.st_file()?;
+    if !scan.stability {
         return Err(AvlError::NoStabilityAxes {
-            line: last_line,
+            line: scan.last_line,
             found: "end of file".into(),
         });
     }
+    scan.check_references(&st)?;
     Ok(st)
+}
+
+/// The `name = value` pairs of a `.st` file, with their lines.
+struct Scan {
+    values: Vec<(String, f64, usize)>,
+    /// Whether the "Stability-axis derivatives" section was seen.
+    stability: bool,
+    last_line: usize,
+}
+
+impl Scan {
+    fn of(text: &str) -> Result<Scan, AvlError> {
+        let mut scan = Scan {
+            values: Vec::new(),
+            stability: false,
+            last_line: 0,
+        };
+        let mut header = false;
+        for (i, line) in text.lines().enumerate() {
+            let n = i + 1;
+            scan.last_line = n;
+            if line.contains("Vortex Lattice Output") && line.contains("Total Forces") {
+                header = true;
+                continue;
+            }
+            if line.contains("Stability-axis derivatives") {
+                scan.stability = true;
+                continue;
+            }
+            if line.contains("Geometry-axis derivatives") && !scan.stability {
+                return Err(AvlError::NoStabilityAxes {
+                    line: n,
+                    found: excerpt(line.trim()),
+                });
+            }
+            let ps = pairs(line);
+            if ps.is_empty() {
+                continue;
+            }
+            if !header {
+                return Err(not_st_file(n, line));
+            }
+            scan.line(n, ps)?;
+        }
+        if !header {
+            return Err(not_st_file(1, text.lines().next().unwrap_or("")));
+        }
+        Ok(scan)
+    }
+
+    /// A line's pairs: the numbers kept, text after '=' that is not one of
+    /// ours tolerated (e.g. "Configuration: …"), ours required to be
+    /// finite numbers.
+    fn line(&mut self, n: usize, pairs: Vec<(String, String)>) -> Result<(), AvlError> {
+        for (name, v) in pairs {
+            match v.parse::<f64>() {
+                Ok(x) if x.is_finite() => self.values.push((name, x, n)),
+                _ if REQUIRED.contains(&name.as_str()) || OPTIONAL.contains(&name.as_str()) => {
+                    return Err(AvlError::BadNumber {
+                        name,
+                        line: n,
+                        text: v,
+                    });
+                }
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
+    fn get(&self, name: &str) -> Option<(f64, usize)> {
+        self.values
+            .iter()
+            .find(|(k, _, _)| k == name)
+            .map(|(_, v, line)| (*v, *line))
+    }
+
+    fn st_file(&self) -> Result<StFile, AvlError> {
+        let get = |name: &'static str| self.get(name).map(|(v, _)| v);
+        let last_line = self.last_line;
+        let need = |name: &'static str| get(name).ok_or(AvlError::Missing { name, last_line });
+        Ok(StFile {
+            sref: need("Sref")?,
+            cref: need("Cref")?,
+            bref: need("Bref")?,
+            xref: get("Xref").unwrap_or(0.0),
+            alpha_deg: need("Alpha")?,
+            mach: need("Mach")?,
+            cl: need("CLtot")?,
+            cd: need("CDtot")?,
+            cm: need("Cmtot")?,
+            cd_ind: get("CDind"),
+            e: get("e"),
+            cl_a: need("CLa")?,
+            cm_a: need("Cma")?,
+            cl_q: need("CLq")?,
+            cm_q: need("Cmq")?,
+            xnp: get("Xnp"),
+        })
+    }
+
+    /// Sref, Cref and Bref positive: the coefficients are made
+    /// non-dimensional on them (μ₁ = m/(½ρ·Sref·Cref) downstream).
+    fn check_references(&self, st: &StFile) -> Result<(), AvlError> {
+        for (name, what, value) in [
+            ("Sref", "area", st.sref),
+            ("Cref", "chord", st.cref),
+            ("Bref", "span", st.bref),
+        ] {
+            if value <= 0.0 {
+                let line = self.get(name).map_or(self.last_line, |(_, l)| l);
+                return Err(AvlError::NotPositive {
+                    name,
+                    what,
+                    value,
+                    line,
+                });
+            }
+        }
+        Ok(())
+    }
+}
+
+fn not_st_file(line: usize, text: &str) -> AvlError {
+    AvlError::NotStFile {
+        line,
+        found: text.trim().chars().take(40).collect(),
+    }
 }
 
 const REQUIRED: [&str; 12] = [

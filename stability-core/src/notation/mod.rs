@@ -8,6 +8,7 @@
 //! notation: `to_report` then `from_report`.
 
 use crate::Derivatives;
+use crate::display::Num;
 
 pub mod avl;
 
@@ -65,19 +66,101 @@ impl Notation {
     }
 
     /// The report's values from this notation's.
-    pub fn to_report(self, values: &Values, parameters: &Parameters) -> Values {
-        tables::to_report(self.0, values, parameters)
+    pub fn to_report(
+        self,
+        values: &Values,
+        parameters: &Parameters,
+    ) -> Result<Values, NotationError> {
+        self.check_inputs(values, parameters)?;
+        Notation::REPORT.finite(tables::to_report(self.0, values, parameters))
     }
 
     /// This notation's values from the report's.
-    pub fn from_report(self, report: &Values, parameters: &Parameters) -> Values {
-        tables::from_report(self.0, report, parameters)
+    pub fn from_report(
+        self,
+        report: &Values,
+        parameters: &Parameters,
+    ) -> Result<Values, NotationError> {
+        Notation::REPORT.check_inputs(report, parameters)?;
+        self.finite(tables::from_report(self.0, report, parameters))
     }
 
     /// Convert values from this notation to `to`.
-    pub fn convert(self, to: Notation, values: &Values, parameters: &Parameters) -> Values {
-        to.from_report(&self.to_report(values, parameters), parameters)
+    pub fn convert(
+        self,
+        to: Notation,
+        values: &Values,
+        parameters: &Parameters,
+    ) -> Result<Values, NotationError> {
+        to.from_report(&self.to_report(values, parameters)?, parameters)
     }
+
+    /// The name of `row` in this notation (its report name where it has
+    /// none).
+    pub fn name_of(self, row: usize) -> &'static str {
+        self.names()[row].unwrap_or(tables::ROWS[row])
+    }
+
+    fn check_inputs(self, values: &Values, parameters: &Parameters) -> Result<(), NotationError> {
+        for (row, v) in values.iter().enumerate() {
+            if let Some(value) = *v
+                && !value.is_finite()
+            {
+                return Err(NotationError::NonFiniteInput {
+                    notation: self.name(),
+                    quantity: self.name_of(row),
+                    value,
+                });
+            }
+        }
+        for (k, &value) in parameters.iter().enumerate() {
+            if !value.is_finite() {
+                return Err(NotationError::NonFiniteInput {
+                    notation: self.name(),
+                    quantity: tables::PARAMETERS[k],
+                    value,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// `values` (of this notation) if every one is finite.
+    fn finite(self, values: Values) -> Result<Values, NotationError> {
+        match values
+            .iter()
+            .enumerate()
+            .find_map(|(row, v)| v.filter(|x| !x.is_finite()).map(|x| (row, x)))
+        {
+            None => Ok(values),
+            Some((row, value)) => Err(NotationError::Overflow {
+                notation: self.name(),
+                quantity: self.name_of(row),
+                value,
+            }),
+        }
+    }
+}
+
+/// Why values cannot be converted: a conversion never returns a value that
+/// is not a finite number.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum NotationError {
+    #[error("{quantity} = {} (notation `{notation}`) is not a finite number", Num(*value))]
+    NonFiniteInput {
+        notation: &'static str,
+        quantity: &'static str,
+        value: f64,
+    },
+    #[error(
+        "{quantity} in notation `{notation}` comes out as {}: the conversion overflows f64 (the values are too large for its factors)",
+        Num(*value)
+    )]
+    Overflow {
+        notation: &'static str,
+        quantity: &'static str,
+        value: f64,
+    },
 }
 
 /// The row index of a report quantity by its row name.

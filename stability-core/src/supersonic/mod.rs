@@ -154,12 +154,12 @@ impl Wing {
 
     /// The edge parameter β cot Λ at Mach `mach`.
     pub fn beta_cot(&self, mach: f64) -> f64 {
-        (mach * mach - 1.0).sqrt() * self.cot()
+        crate::geometry::beta_cot(self.sweep_le, mach)
     }
 
     /// The Mach number at which the leading edge is sonic, √(1 + tan²Λ).
     pub fn sonic_mach(&self) -> f64 {
-        (1.0 + self.sweep_le.tan().powi(2)).sqrt()
+        crate::geometry::sonic_leading_edge_mach(self.sweep_le)
     }
 }
 
