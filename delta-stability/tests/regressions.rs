@@ -504,3 +504,27 @@ fn a_reader_that_stops_early_is_not_a_panic_and_a_full_disk_is_an_io_failure() {
         );
     }
 }
+
+#[test]
+fn an_analysis_that_overflows_is_an_error_at_the_value_behind_it() {
+    let dir = Scratch::new();
+    let ex = example("tailless-delta-45.toml");
+    for (from, to, at) in [
+        ("mu1 = 50.0", "mu1 = 1e300", "[flight] mu1"),
+        ("mu1 = 50.0", "mu1 = 1e-300", "[flight] mu1"),
+        ("i_b = 0.08", "i_b = 1e-300", "[flight] i_b"),
+    ] {
+        let f = dir.write("x.toml", ex.replace(from, to));
+        let out = run_err(&["quartic", path(&f), "--json"], INPUT);
+        let err = stderr(&out);
+        assert!(
+            err.contains(&format!(
+                "x.toml:{}:7: {at}",
+                if at.contains("i_b") { 24 } else { 23 }
+            )),
+            "{to}: {err}"
+        );
+        assert!(stdout(&out).is_empty(), "{to}: printed {}", stdout(&out));
+        assert_short(&err);
+    }
+}

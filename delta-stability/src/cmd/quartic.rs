@@ -19,7 +19,7 @@ pub fn run(file: &str, json: bool) -> Result<(), Failure> {
     let analysis = Analysis::of(&input.derivatives)
         .map_err(|e| input.error_at(blame(&input, &e), e.to_string()))?;
     if !is_finite(&analysis) {
-        let largest = largest_input(&input);
+        let largest = most_extreme_input(&input);
         return Err(input
             .error_at(
                 largest,
@@ -47,14 +47,15 @@ pub fn is_finite(a: &Analysis) -> bool {
         && a.modes.iter().all(|m| m.re.is_finite() && m.im.is_finite())
 }
 
-/// The quartic input of largest magnitude (the likeliest cause of an
-/// overflow).
-fn largest_input(input: &DerivativeFile) -> usize {
+/// The quartic input most extreme in magnitude, largest or smallest (the
+/// likeliest cause of an overflow: μ₁ = 1e-300 as much as 1e300).
+fn most_extreme_input(input: &DerivativeFile) -> usize {
     let mut best = (0.0, rows::QUARTIC[0]);
     for i in rows::QUARTIC {
         let v = input.report[i].map_or(0.0, f64::abs);
-        if v > best.0 {
-            best = (v, i);
+        let extreme = if v > 0.0 { v.log10().abs() } else { 0.0 };
+        if extreme > best.0 {
+            best = (extreme, i);
         }
     }
     best.1
@@ -72,9 +73,9 @@ fn blame(input: &DerivativeFile, e: &AnalysisError) -> usize {
         AnalysisError::LeadingCoefficientZero { .. } => rows::Z_WDOT,
         AnalysisError::NonFinite { input: name, .. }
         | AnalysisError::NotPositive { input: name, .. } => {
-            named(name).unwrap_or_else(|| largest_input(input))
+            named(name).unwrap_or_else(|| most_extreme_input(input))
         }
-        _ => largest_input(input),
+        _ => most_extreme_input(input),
     }
 }
 
