@@ -6,7 +6,25 @@
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
-use delta_stability::{Failure, cmd};
+use delta_stability::args::{
+    DampingArg, NotationArg, ResponseInput, TargetNotation, finite, positive,
+};
+use delta_stability::cmd;
+use stability_core::response::MAX_STEPS;
+
+/// The exit statuses and the limits on input files, after every command's
+/// help.
+const AFTER_HELP: &str = "\
+Exit status:
+  0  success
+  2  bad input: a file's content or a command-line value (the message names
+     the file, line and field, or the option)
+  3  a file could not be read or written: missing, not a regular file, no
+     permission, a full disk, or a path through a file (the message names
+     the path)
+
+Input files (derivative files, configs, AVL .st files, CSV tables) are read
+only from regular files (not a FIFO or a device) of at most 16 MiB.";
 
 /// Longitudinal dynamic stability of aircraft, after McCarter (1953).
 ///
@@ -16,6 +34,7 @@ use delta_stability::{Failure, cmd};
 /// pitching inertia i_B = B/(mc̄²).
 #[derive(Parser)]
 #[command(name = "delta-stability", version, about, long_about = None, propagate_version = true)]
+#[command(after_help = AFTER_HELP)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -70,20 +89,20 @@ enum Command {
     Response {
         /// The derivative file (TOML), as for `quartic`.
         file: String,
-        /// `step`: an elevon applied instantaneously (a step of m₀); `initial`: a disturbance ŵ(0) = w0.
-        #[arg(long, default_value = "step")]
-        input: String,
-        /// End time, in units of τ.
-        #[arg(long)]
+        /// What disturbs the aircraft.
+        #[arg(long, value_enum, default_value = "step")]
+        input: ResponseInput,
+        /// End time, in units of τ (positive).
+        #[arg(long, value_parser = positive)]
         until: f64,
-        /// Number of intervals.
-        #[arg(long, default_value_t = 400)]
-        steps: usize,
-        /// Size of the moment step m₀ (eqs 2 units).
-        #[arg(long, default_value_t = 1.0)]
+        /// Number of intervals (1 to 10⁶).
+        #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=MAX_STEPS as i64))]
+        steps: u32,
+        /// Size of the moment step m₀ (eqs 2 units; finite).
+        #[arg(long, default_value_t = 1.0, value_parser = finite)]
         m0: f64,
-        /// Initial ŵ = w/V for `--input initial`.
-        #[arg(long, default_value_t = 0.01)]
+        /// Initial ŵ = w/V for `--input initial` (finite).
+        #[arg(long, default_value_t = 0.01, value_parser = finite)]
         w0: f64,
         /// Set z_q = z_ẇ = 0 (the report's Fig 38).
         #[arg(long)]
@@ -105,23 +124,19 @@ enum Command {
     /// documented defaults or your tables), the stiffness derivatives
     /// (eqs 9–14, 25–29), the damping derivatives of a §7 theory, then the
     /// quartic, its modes and the criteria. See examples/delta-45.toml and
-    /// examples/delta-60.toml, commented.
-    ///
-    /// Damping theories: faired (default: slender-wing theory through M = 1,
-    /// blended into the supersonic theory (36) by M = 1.2), garrick,
-    /// garner-taper, slender, supersonic, transonic, transonic-frequency
-    /// (which iterates ω̄ to the short period's own frequency).
+    /// examples/delta-60.toml, commented. The damping theories are listed
+    /// under --damping.
     Analyze {
         /// The design-point config (TOML).
         config: String,
-        /// Override the damping theory.
-        #[arg(long)]
-        damping: Option<String>,
+        /// Override the damping model.
+        #[arg(long, value_enum)]
+        damping: Option<DampingArg>,
         /// Override the Mach number.
-        #[arg(long)]
+        #[arg(long, value_parser = finite)]
         mach: Option<f64>,
         /// Override the c.g. position h (fraction of the M.A.C.).
-        #[arg(long)]
+        #[arg(long, value_parser = finite)]
         cg: Option<f64>,
         /// Print one JSON object (keys derivatives, coefficients, modes, criteria, …).
         #[arg(long)]
@@ -144,11 +159,11 @@ enum Command {
     #[command(verbatim_doc_comment)]
     Convert {
         /// The file's notation.
-        #[arg(long)]
-        from: String,
+        #[arg(long, value_enum)]
+        from: NotationArg,
         /// The notation to write.
-        #[arg(long)]
-        to: String,
+        #[arg(long, value_enum)]
+        to: TargetNotation,
         /// The derivative file (TOML).
         file: String,
         /// Print one JSON object instead of TOML.
@@ -163,7 +178,12 @@ enum Command {
     /// Writes into DIR: figNN.svg and figNN.csv under the note's figure
     /// numbers, summary.json (intervals of Mach where each wing's short
     /// period diverges or takes more than one cycle to halve, and the largest
-    /// μ₁ meeting the standard at each Mach number) and index.html.
+    /// μ₁ meeting the standard at each Mach number) and index.html (the
+    /// note's conclusions judged against ours, with the numbers; its links
+    /// work wherever DIR is). The files are written into a temporary
+    /// directory beside DIR that replaces DIR only when complete, so a killed
+    /// run leaves the previous report whole; DIR, if it exists, must be an
+    /// earlier report or empty.
     Report {
         /// The output directory.
         #[arg(long, default_value = "report")]
@@ -174,7 +194,8 @@ enum Command {
     /// Each range is A:B:STEP (inclusive) or a single value; those not given
     /// come from CONFIG (see `analyze --help`). Points are evaluated in
     /// parallel; OUT (.csv or .json) is written atomically — a killed run
-    /// leaves no half-written file. Columns: the grid values, stable (Routh),
+    /// leaves no half-written file (its temporary file beside OUT,
+    /// .delta-stability-PID-XXXXXX, is removed by a later run once stale). Columns: the grid values, stable (Routh),
     /// verdict (the one-cycle standard: meets, fails, divergent), the short
     /// period's root, cycles to half amplitude, damping ratio and ω̄, the
     /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
@@ -198,7 +219,7 @@ fn main() -> ExitCode {
             to,
             file,
             json,
-        } => cmd::convert::run(&from, &to, &file, json),
+        } => cmd::convert::run(from, to.0, &file, json),
         Command::Analyze {
             config,
             damping,
@@ -207,7 +228,11 @@ fn main() -> ExitCode {
             json,
         } => cmd::analyze::run(
             &config,
-            &cmd::analyze::Overrides { damping, mach, cg },
+            &cmd::analyze::Overrides {
+                damping: damping.map(|d| d.0),
+                mach,
+                cg,
+            },
             json,
         ),
         Command::Response {
@@ -225,7 +250,7 @@ fn main() -> ExitCode {
             file,
             input,
             until,
-            steps,
+            steps: steps as usize,
             m0,
             w0,
             neglect_zq_zwdot,
@@ -236,9 +261,9 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(Failure::Input(e)) => {
-            eprintln!("error: {e}");
-            ExitCode::from(2)
+        Err(e) => {
+            delta_stability::output::warn(&format!("error: {e}"));
+            ExitCode::from(e.status())
         }
     }
 }

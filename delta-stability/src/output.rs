@@ -1,8 +1,148 @@
-//! Writing results: atomically, so that a killed run leaves no half-written
-//! file.
+//! Writing results atomically: a file ([`AtomicFile`]) or a directory
+//! ([`AtomicDir`]) is written under a temporary name beside its target and
+//! renamed into place when complete, so that a killed run leaves the
+//! previous result whole, never a half-written file or a mix of old and new.
+//!
+//! A run killed before it finishes leaves its temporary file or directory
+//! behind. Those are named `.delta-stability-<pid>-<random>`, and a later
+//! run that writes into the same directory removes them ([`remove_stale`])
+//! once it can tell they are stale: their process no longer runs and they
+//! have not changed for [`STALE_AFTER`]. Nothing else is touched.
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, SystemTime};
+
+/// The prefix of every temporary file and directory the program makes.
+pub const TEMP_PREFIX: &str = ".delta-stability-";
+
+/// How long a dead run's temporary file must have been unchanged before a
+/// later run removes it (a live run writes into its file continuously).
+pub const STALE_AFTER: Duration = Duration::from_secs(10 * 60);
+
+/// Temporary files of versions before the pid was in the name
+/// (`.delta-stability-XXXXXX`) are removed after this long unchanged.
+const LEGACY_STALE_AFTER: Duration = Duration::from_secs(60 * 60);
+
+/// Where the process cannot be checked, a temporary file is removed only
+/// after this long unchanged.
+const UNCHECKED_STALE_AFTER: Duration = Duration::from_secs(24 * 60 * 60);
+
+/// The directory a target path is written in.
+fn parent_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    }
+}
+
+fn temp_builder(prefix: &str) -> tempfile::Builder<'_, 'static> {
+    let mut b = tempfile::Builder::new();
+    b.prefix(prefix).rand_bytes(6);
+    b
+}
+
+fn our_prefix() -> String {
+    format!("{TEMP_PREFIX}{}-", std::process::id())
+}
+
+/// Whether process `pid` runs; `None` where that cannot be checked.
+fn process_runs(pid: u32) -> Option<bool> {
+    #[cfg(unix)]
+    {
+        let pid = libc::pid_t::try_from(pid).ok()?;
+        // SAFETY: signal 0 sends nothing; kill only checks that the process
+        // exists (ESRCH if not, EPERM if it is another user's).
+        let r = unsafe { libc::kill(pid, 0) };
+        let errno = std::io::Error::last_os_error().raw_os_error();
+        Some(r == 0 || errno != Some(libc::ESRCH))
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = pid;
+        None
+    }
+}
+
+/// How long an entry of `name` must have been unchanged to be stale, or
+/// `None` if it is not a stale temporary of this program.
+fn stale_after(name: &str) -> Option<Duration> {
+    let rest = name.strip_prefix(TEMP_PREFIX)?;
+    let alnum = |s: &str| s.len() == 6 && s.bytes().all(|b| b.is_ascii_alphanumeric());
+    if alnum(rest) {
+        return Some(LEGACY_STALE_AFTER);
+    }
+    let (pid, random) = rest.split_once('-')?;
+    if !alnum(random) || pid.is_empty() || !pid.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let pid: u32 = pid.parse().ok()?;
+    if pid == std::process::id() {
+        return None;
+    }
+    match process_runs(pid) {
+        Some(true) => None,
+        Some(false) => Some(STALE_AFTER),
+        None => Some(UNCHECKED_STALE_AFTER),
+    }
+}
+
+/// Removes from `dir` the temporary files and directories that killed runs
+/// of this program left (see the module's documentation); returns how many.
+/// Errors are ignored: this is housekeeping.
+pub fn remove_stale(dir: &Path) -> usize {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return 0;
+    };
+    let now = SystemTime::now();
+    let mut removed = 0;
+    for e in entries.flatten() {
+        let name = e.file_name();
+        let Some(after) = name.to_str().and_then(stale_after) else {
+            continue;
+        };
+        let Ok(meta) = e.path().symlink_metadata() else {
+            continue;
+        };
+        let unchanged = meta
+            .modified()
+            .ok()
+            .and_then(|m| now.duration_since(m).ok());
+        if unchanged.is_none_or(|d| d < after) {
+            continue;
+        }
+        let gone = if meta.is_dir() {
+            std::fs::remove_dir_all(e.path())
+        } else {
+            std::fs::remove_file(e.path())
+        };
+        removed += usize::from(gone.is_ok());
+    }
+    removed
+}
+
+/// Prints `text` on standard output. A reader that stops reading (`| head`)
+/// ends the output quietly, not with a panic; any other failure (a full
+/// disk) is an I/O failure naming standard output.
+pub fn print(text: &str) -> Result<(), crate::Failure> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(crate::Failure::Io(crate::diag::IoError::new(
+                "cannot write",
+                Path::new("standard output"),
+                crate::files::reason(&e),
+            )))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Prints a warning (or an error) on standard error; where standard error
+/// cannot be written, there is no one to tell, and nothing else is done.
+pub fn warn(text: &str) {
+    let _ = writeln!(std::io::stderr().lock(), "{text}");
+}
 
 /// Write `bytes` to `path` through a temporary file in the same directory,
 /// renamed into place when complete.
@@ -12,31 +152,33 @@ pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     f.commit()
 }
 
+/// Makes a private (0700/0600) temporary readable by others, as a result
+/// should be.
+fn make_public(path: &Path, mode: u32) -> std::io::Result<()> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(path, std::fs::Permissions::from_mode(mode))?;
+    }
+    let _ = (path, mode);
+    Ok(())
+}
+
 /// A file written in pieces that appears at its path, whole, only on
-/// [`AtomicFile::commit`]; dropped uncommitted (or killed), it leaves nothing
-/// behind but, at worst, a temporary file beside the target.
+/// [`AtomicFile::commit`]; dropped uncommitted it leaves nothing behind,
+/// and killed it leaves a temporary file that a later run removes.
 pub struct AtomicFile {
     tmp: tempfile::NamedTempFile,
-    path: std::path::PathBuf,
+    path: PathBuf,
 }
 
 impl AtomicFile {
     pub fn create(path: &Path) -> std::io::Result<AtomicFile> {
-        let dir = match path.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d,
-            _ => Path::new("."),
-        };
+        let dir = parent_of(path);
         std::fs::create_dir_all(dir)?;
-        let tmp = tempfile::Builder::new()
-            .prefix(".delta-stability-")
-            .tempfile_in(dir)?;
-        // a temporary file is private (0600); the result should not be
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::PermissionsExt;
-            tmp.as_file()
-                .set_permissions(std::fs::Permissions::from_mode(0o644))?;
-        }
+        remove_stale(dir);
+        let tmp = temp_builder(&our_prefix()).tempfile_in(dir)?;
+        make_public(tmp.path(), 0o644)?;
         Ok(AtomicFile {
             tmp,
             path: path.to_path_buf(),
@@ -60,6 +202,94 @@ impl Write for AtomicFile {
     fn flush(&mut self) -> std::io::Result<()> {
         self.tmp.flush()
     }
+}
+
+/// A directory filled file by file that replaces its target, whole, only on
+/// [`AtomicDir::commit`].
+pub struct AtomicDir {
+    tmp: tempfile::TempDir,
+    target: PathBuf,
+}
+
+impl AtomicDir {
+    /// A new, empty temporary directory beside `target`.
+    pub fn create(target: &Path) -> std::io::Result<AtomicDir> {
+        let dir = parent_of(target);
+        std::fs::create_dir_all(dir)?;
+        remove_stale(dir);
+        let tmp = temp_builder(&our_prefix()).tempdir_in(dir)?;
+        make_public(tmp.path(), 0o755)?;
+        Ok(AtomicDir {
+            tmp,
+            target: target.to_path_buf(),
+        })
+    }
+
+    /// The temporary directory being filled.
+    pub fn path(&self) -> &Path {
+        self.tmp.path()
+    }
+
+    /// Writes the file `name` (a relative path) into the directory.
+    pub fn write(&self, name: &str, bytes: &[u8]) -> std::io::Result<()> {
+        let path = self.tmp.path().join(name);
+        if let Some(d) = path.parent() {
+            std::fs::create_dir_all(d)?;
+        }
+        std::fs::write(path, bytes)
+    }
+
+    /// Puts the directory in the target's place; a previous target (a
+    /// directory) is removed.
+    pub fn commit(self) -> std::io::Result<()> {
+        let AtomicDir { tmp, target } = self;
+        if target.symlink_metadata().is_err() {
+            std::fs::rename(tmp.path(), &target)?;
+            let _ = tmp.keep();
+            return Ok(());
+        }
+        // the previous result ends up at the temporary path, removed with it
+        exchange(tmp.path(), &target)?;
+        drop(tmp);
+        Ok(())
+    }
+}
+
+/// Swaps two directories: atomically where the system can (Linux), else
+/// by two renames through a third name (a run killed between them leaves
+/// the target missing, both versions whole under temporary names).
+fn exchange(a: &Path, b: &Path) -> std::io::Result<()> {
+    #[cfg(target_os = "linux")]
+    {
+        use std::ffi::CString;
+        use std::os::unix::ffi::OsStrExt;
+        let c = |p: &Path| CString::new(p.as_os_str().as_bytes()).map_err(std::io::Error::other);
+        let (ca, cb) = (c(a)?, c(b)?);
+        // SAFETY: two valid NUL-terminated paths, relative to the working
+        // directory; renameat2 reads them and touches no memory of ours.
+        let r = unsafe {
+            libc::renameat2(
+                libc::AT_FDCWD,
+                ca.as_ptr(),
+                libc::AT_FDCWD,
+                cb.as_ptr(),
+                libc::RENAME_EXCHANGE,
+            )
+        };
+        if r == 0 {
+            return Ok(());
+        }
+        let e = std::io::Error::last_os_error();
+        // a file system without RENAME_EXCHANGE: fall through
+        if !matches!(e.raw_os_error(), Some(libc::EINVAL) | Some(libc::ENOSYS)) {
+            return Err(e);
+        }
+    }
+    let via = temp_builder(&our_prefix()).tempdir_in(parent_of(b))?.keep();
+    std::fs::remove_dir(&via)?;
+    std::fs::rename(b, &via)?;
+    std::fs::rename(a, b)?;
+    std::fs::rename(&via, a)
 }
 
 #[cfg(test)]
@@ -92,5 +322,45 @@ mod tests {
         }
         assert!(!p.exists());
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+    }
+
+    #[test]
+    fn a_directory_replaces_its_target_whole() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("report");
+        for (k, names) in [["a", "b"], ["b", "c"]].iter().enumerate() {
+            let d = AtomicDir::create(&target).unwrap();
+            for n in names {
+                d.write(n, format!("{k}").as_bytes()).unwrap();
+            }
+            d.commit().unwrap();
+        }
+        let mut now: Vec<String> = std::fs::read_dir(&target)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .collect();
+        now.sort();
+        assert_eq!(now, ["b", "c"]);
+        assert_eq!(std::fs::read_to_string(target.join("b")).unwrap(), "1");
+        // nothing left beside it
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn only_stale_temporaries_of_dead_runs_are_stale() {
+        assert_eq!(
+            stale_after(".delta-stability-AbC123"),
+            Some(LEGACY_STALE_AFTER)
+        );
+        let me = format!(".delta-stability-{}-AbC123", std::process::id());
+        assert_eq!(stale_after(&me), None);
+        for other in [
+            ".delta-stability-notes",
+            ".delta-stability-12-abc",
+            "delta-stability-AbC123",
+            ".delta-stability-x1-AbC123",
+        ] {
+            assert_eq!(stale_after(other), None, "{other}");
+        }
     }
 }

@@ -128,19 +128,23 @@ impl Figure {
         ))
     }
 
+    /// The title as drawn: "Fig. 33 — …" for a figure of the note.
+    fn caption(&self) -> String {
+        if self.id.chars().all(|c| c.is_ascii_digit()) {
+            format!("Fig. {} — {}", self.id, self.title)
+        } else {
+            self.title.clone()
+        }
+    }
+
     fn draw(&self, buf: &mut String) -> Result<(), Box<dyn std::error::Error + '_>> {
         let k = SCALE;
         let root = SVGBackend::with_string(buf, (WIDTH * k, HEIGHT * k)).into_drawing_area();
         let font = |size: u32| ("sans-serif", size * k);
         root.fill(&WHITE)?;
         let ((x0, x1), (y0, y1)) = self.ranges();
-        let caption = if self.id.chars().all(|c| c.is_ascii_digit()) {
-            format!("Fig. {} — {}", self.id, self.title)
-        } else {
-            self.title.clone()
-        };
         let mut chart = ChartBuilder::on(&root)
-            .caption(caption, font(18))
+            .caption(self.caption(), font(18))
             .margin(14 * k)
             .x_label_area_size(44 * k)
             .y_label_area_size(70 * k)
@@ -173,19 +177,8 @@ impl Figure {
         }
         for (i, s) in self.series.iter().enumerate() {
             let color = Palette99::pick(i).to_rgba();
-            // Split at non-finite points.
-            let mut segments: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
-            for &(x, y) in &s.points {
-                if x.is_finite() && y.is_finite() && y >= y0 - (y1 - y0) && y <= y1 + (y1 - y0) {
-                    if let Some(seg) = segments.last_mut() {
-                        seg.push((x, y));
-                    }
-                } else if segments.last().is_some_and(|seg| !seg.is_empty()) {
-                    segments.push(Vec::new());
-                }
-            }
             let mut first = true;
-            for seg in segments.into_iter().filter(|s| !s.is_empty()) {
+            for seg in segments(&s.points, y0, y1) {
                 let drawn = chart.draw_series(LineSeries::new(seg, color.stroke_width(2 * k)))?;
                 if first {
                     drawn.label(s.label.as_str()).legend(move |(x, y)| {
@@ -257,6 +250,23 @@ impl Figure {
         }
         s
     }
+}
+
+/// The drawable runs of a curve: split at non-finite points and at points
+/// far outside the y range [y0, y1].
+fn segments(points: &[(f64, f64)], y0: f64, y1: f64) -> Vec<Vec<(f64, f64)>> {
+    let mut out: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+    for &(x, y) in points {
+        if x.is_finite() && y.is_finite() && y >= y0 - (y1 - y0) && y <= y1 + (y1 - y0) {
+            if let Some(seg) = out.last_mut() {
+                seg.push((x, y));
+            }
+        } else if out.last().is_some_and(|seg| !seg.is_empty()) {
+            out.push(Vec::new());
+        }
+    }
+    out.retain(|s| !s.is_empty());
+    out
 }
 
 /// A CSV number: empty for a non-finite value (never NaN in the output).

@@ -1,29 +1,17 @@
 //! The program as a user runs it: output, exit status and messages.
 
+mod common;
+
+use common::{Scratch, bin, json, path, root, run_err, run_ok, stderr};
 use stability_core::quartic::reference::eq6_by_hand;
-use std::process::Command;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_delta-stability"))
-}
-
-fn root() -> std::path::PathBuf {
-    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
-}
 
 #[test]
 fn quartic_json_has_the_coefficients_of_eq6() {
-    let out = bin()
-        .current_dir(root())
-        .args(["quartic", "examples/tailless-delta-45.toml", "--json"])
-        .output()
-        .expect("run");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    let v = json(&run_ok(&[
+        "quartic",
+        "examples/tailless-delta-45.toml",
+        "--json",
+    ]));
     // The example's values, through eq (6) typed by hand (corrected).
     let inputs = [
         -0.03, 0.25, 0.0, 0.0, -0.62, -3.2, -0.6, -1.5, 0.0, -0.55, -0.25, -0.6, 0.3, 50.0, 0.08,
@@ -43,29 +31,21 @@ fn quartic_json_has_the_coefficients_of_eq6() {
 
 #[test]
 fn quartic_table_is_readable() {
-    let out = bin()
-        .current_dir(root())
-        .args(["quartic", "examples/tailless-delta-45.toml"])
-        .output()
-        .expect("run");
-    let text = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success());
+    let out = run_ok(&["quartic", "examples/tailless-delta-45.toml"]);
+    let text = common::stdout(&out);
     assert!(text.contains("A =       1.012000"), "{text}");
 }
 
+/// `quartic` on a file with `contents`: its exit status and standard error.
 fn run_on(contents: &str) -> (i32, String) {
-    let dir = tempfile::tempdir().expect("temp dir");
-    let path = dir.path().join("case.toml");
-    std::fs::write(&path, contents).expect("write");
+    let dir = Scratch::new();
+    let path = dir.write("case.toml", contents);
     let out = bin().arg("quartic").arg(&path).output().expect("run");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    (out.status.code().unwrap_or(-1), stderr(&out))
 }
 
 fn example() -> String {
-    std::fs::read_to_string(root().join("examples/tailless-delta-45.toml")).expect("example")
+    common::example("tailless-delta-45.toml")
 }
 
 #[test]
@@ -111,29 +91,19 @@ fn bad_input_is_exit_status_2_with_file_line_and_field() {
 
 #[test]
 fn help_teaches_the_file_format() {
-    let out = bin().args(["quartic", "--help"]).output().expect("run");
-    let text = String::from_utf8_lossy(&out.stdout);
+    let text = common::stdout(&run_ok(&["quartic", "--help"]));
     assert!(text.contains("notation = \"report\""), "{text}");
     assert!(text.contains("docs/errata.md"), "{text}");
 }
 
 #[test]
 fn quartic_json_has_roots_modes_and_routh() {
-    let out = bin()
-        .current_dir(root())
-        .args([
-            "quartic",
-            "examples/tailless-delta-60-dimensional.toml",
-            "--json",
-        ])
-        .output()
-        .expect("run");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8_lossy(&out.stdout);
+    let out = run_ok(&[
+        "quartic",
+        "examples/tailless-delta-60-dimensional.toml",
+        "--json",
+    ]);
+    let text = common::stdout(&out);
     assert!(!text.contains("NaN"));
     let v: serde_json::Value = serde_json::from_str(&text).expect("JSON");
     let q: Vec<f64> = ["A", "B", "C", "D", "E"]
@@ -197,32 +167,23 @@ fn a_degenerate_quartic_is_a_clear_error() {
 
 #[test]
 fn response_writes_csv_and_svg() {
-    let dir = tempfile::tempdir().expect("temp dir");
+    let dir = Scratch::new();
     let csv = dir.path().join("r.csv");
     let svg = dir.path().join("r.svg");
-    let out = bin()
-        .current_dir(root())
-        .args([
-            "response",
-            "examples/tailless-delta-45.toml",
-            "--input",
-            "step",
-            "--until",
-            "2",
-            "--steps",
-            "100",
-        ])
-        .arg("--csv")
-        .arg(&csv)
-        .arg("--svg")
-        .arg(&svg)
-        .output()
-        .expect("run");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    run_ok(&[
+        "response",
+        "examples/tailless-delta-45.toml",
+        "--input",
+        "step",
+        "--until",
+        "2",
+        "--steps",
+        "100",
+        "--csv",
+        path(&csv),
+        "--svg",
+        path(&svg),
+    ]);
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
     assert_eq!(
@@ -236,41 +197,35 @@ fn response_writes_csv_and_svg() {
 
 #[test]
 fn response_rejects_a_bad_input_kind() {
-    let out = bin()
-        .current_dir(root())
-        .args([
+    let out = run_err(
+        &[
             "response",
             "examples/tailless-delta-45.toml",
             "--input",
             "ramp",
             "--until",
             "1",
-        ])
-        .output()
-        .expect("run");
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("--input must be `step` or `initial`"));
+        ],
+        2,
+    );
+    // a closed choice: the message lists the kinds there are
+    let err = stderr(&out);
+    assert!(
+        err.contains("'ramp'") && err.contains("step") && err.contains("initial"),
+        "{err}"
+    );
 }
 
 #[test]
 fn analyze_gives_the_derivatives_coefficients_modes_and_criteria() {
-    let out = bin()
-        .current_dir(root())
-        .args([
-            "analyze",
-            "examples/delta-45.toml",
-            "--json",
-            "--mach",
-            "0.6",
-        ])
-        .output()
-        .expect("run");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8_lossy(&out.stdout);
+    let out = run_ok(&[
+        "analyze",
+        "examples/delta-45.toml",
+        "--json",
+        "--mach",
+        "0.6",
+    ]);
+    let text = common::stdout(&out);
     assert!(!text.contains("NaN"));
     let v: serde_json::Value = serde_json::from_str(&text).expect("JSON");
     for key in ["derivatives", "coefficients", "modes", "criteria"] {
@@ -293,30 +248,30 @@ fn analyze_gives_the_derivatives_coefficients_modes_and_criteria() {
 
 #[test]
 fn analyze_rejects_theories_outside_their_validity_and_bad_configs() {
-    let out = bin()
-        .current_dir(root())
-        .args([
+    let out = run_err(
+        &[
             "analyze",
             "examples/delta-45.toml",
             "--damping",
             "supersonic",
             "--mach",
             "0.9",
-        ])
-        .output()
-        .expect("run");
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("needs M > 1"));
-    let out = bin()
-        .current_dir(root())
-        .args(["analyze", "examples/delta-45.toml", "--damping", "mangler"])
-        .output()
-        .expect("run");
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("`transonic-frequency`"));
+        ],
+        2,
+    );
+    assert!(stderr(&out).contains("needs M > 1"));
+    let out = run_err(
+        &["analyze", "examples/delta-45.toml", "--damping", "mangler"],
+        2,
+    );
+    assert!(
+        stderr(&out).contains("transonic-frequency"),
+        "{}",
+        stderr(&out)
+    );
 
-    let cfg = std::fs::read_to_string(root().join("examples/delta-45.toml")).unwrap();
-    let dir = tempfile::tempdir().unwrap();
+    let cfg = common::example("delta-45.toml");
+    let dir = Scratch::new();
     let cases = [
         (cfg.replace("sweep = 45.0", "sweep = 95.0"), "[planform] sweep: the leading-edge sweep must lie strictly between 0° and 90°"),
         (cfg.replace("mu1 = 50.0", "mu1 = -3.0"), "[flight] mu1: the relative density μ₁ must be positive"),
@@ -327,11 +282,9 @@ fn analyze_rejects_theories_outside_their_validity_and_bad_configs() {
         (cfg.replace("root_chord = 10.0", "root_chord = 10.0\nspan = 3.0"), "give only one size"),
     ];
     for (text, expected) in cases {
-        let p = dir.path().join("c.toml");
-        std::fs::write(&p, text).unwrap();
-        let out = bin().arg("analyze").arg(&p).output().expect("run");
-        assert_eq!(out.status.code(), Some(2));
-        let err = String::from_utf8_lossy(&out.stderr);
+        let p = dir.write("c.toml", text);
+        let out = run_err(&["analyze", path(&p)], 2);
+        let err = stderr(&out);
         assert!(
             err.contains(expected) && err.contains("c.toml:"),
             "{expected}\n{err}"
@@ -339,20 +292,8 @@ fn analyze_rejects_theories_outside_their_validity_and_bad_configs() {
     }
 }
 
-fn quartic_json(path: &std::path::Path) -> serde_json::Value {
-    let out = bin()
-        .current_dir(root())
-        .arg("quartic")
-        .arg(path)
-        .arg("--json")
-        .output()
-        .expect("run");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("JSON")
+fn quartic_json(file: &std::path::Path) -> serde_json::Value {
+    json(&run_ok(&["quartic", path(file), "--json"]))
 }
 
 #[test]
@@ -369,28 +310,18 @@ fn the_747_in_american_notation_gives_etkin_and_reids_roots_in_seconds() {
 
 #[test]
 fn converted_files_describe_the_same_aircraft() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Scratch::new();
     let base = quartic_json(&root().join("examples/boeing-747-american.toml"));
     for to in ["report", "garner", "duncan", "american"] {
-        let out = bin()
-            .current_dir(root())
-            .args([
-                "convert",
-                "--from",
-                "american",
-                "--to",
-                to,
-                "examples/boeing-747-american.toml",
-            ])
-            .output()
-            .expect("run");
-        assert!(
-            out.status.success(),
-            "{to}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let p = dir.path().join(format!("{to}.toml"));
-        std::fs::write(&p, &out.stdout).unwrap();
+        let out = run_ok(&[
+            "convert",
+            "--from",
+            "american",
+            "--to",
+            to,
+            "examples/boeing-747-american.toml",
+        ]);
+        let p = dir.write(&format!("{to}.toml"), &out.stdout);
         let v = quartic_json(&p);
         for k in ["A", "B", "C", "D", "E"] {
             let (a, b) = (
@@ -404,19 +335,10 @@ fn converted_files_describe_the_same_aircraft() {
 
 #[test]
 fn avl_output_is_read_with_its_assumptions_stated() {
-    let out = bin()
-        .current_dir(root())
-        .args(["quartic", "examples/avl-tailless-delta.toml", "--json"])
-        .output()
-        .expect("run");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(stderr.contains("quasi-steady") && stderr.contains("apparent mass"));
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let out = run_ok(&["quartic", "examples/avl-tailless-delta.toml", "--json"]);
+    let err = stderr(&out);
+    assert!(err.contains("quasi-steady") && err.contains("apparent mass"));
+    let v = json(&out);
     // μ₁ = m/(½ρ Sref Cref) = 9000/(0.5·1.225·60·7) and A = 1 (z_ẇ = 0)
     assert_eq!(v["coefficients"]["A"].as_f64(), Some(1.0));
     assert!(v["modes"][0]["name"] == "short_period");
@@ -424,33 +346,28 @@ fn avl_output_is_read_with_its_assumptions_stated() {
 
 #[test]
 fn notations_missing_what_they_need_are_named() {
-    let dir = tempfile::tempdir().unwrap();
-    let p = dir.path().join("d.toml");
+    let dir = Scratch::new();
     // American without mass: μ₁ cannot be formed
-    let text = std::fs::read_to_string(root().join("examples/boeing-747-american.toml"))
-        .unwrap()
-        .replace("mass = 288660.55", "");
-    std::fs::write(&p, text).unwrap();
-    let out = bin().arg("quartic").arg(&p).output().unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&out.stderr);
+    let text = common::example("boeing-747-american.toml").replace("mass = 288660.55", "");
+    let p = dir.write("d.toml", text);
+    let args = ["quartic", path(&p)];
+    let err = stderr(&run_err(&args, 2));
     assert!(
         err.contains("lacks `mu1`, `i_b`") && err.contains("[dimensional]"),
         "{err}"
     );
     // Duncan without the tail arm
-    std::fs::write(&p, "notation = \"duncan\"\n[derivatives]\nx_u = 1.0\n").unwrap();
-    let out = bin().arg("quartic").arg(&p).output().unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("[parameters] lt"));
+    dir.write(
+        "d.toml",
+        "notation = \"duncan\"\n[derivatives]\nx_u = 1.0\n",
+    );
+    assert!(stderr(&run_err(&args, 2)).contains("[parameters] lt"));
     // a truncated AVL file: the .st's own line
-    let st = std::fs::read_to_string(root().join("examples/tailless-delta.st")).unwrap();
+    let st = common::example("tailless-delta.st");
     let cut: String = st.lines().take(30).collect::<Vec<_>>().join("\n");
-    std::fs::write(dir.path().join("cut.st"), cut).unwrap();
-    std::fs::write(&p, "notation = \"avl\"\nst_file = \"cut.st\"\n[dimensional]\nmass = 1.0\nI_y = 1.0\nrho = 1.0\nV = 1.0\n").unwrap();
-    let out = bin().arg("quartic").arg(&p).output().unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&out.stderr);
+    dir.write("cut.st", cut);
+    dir.write("d.toml", "notation = \"avl\"\nst_file = \"cut.st\"\n[dimensional]\nmass = 1.0\nI_y = 1.0\nrho = 1.0\nV = 1.0\n");
+    let err = stderr(&run_err(&args, 2));
     assert!(
         err.contains("cut.st:30:") && err.contains("ends without"),
         "{err}"
@@ -459,18 +376,8 @@ fn notations_missing_what_they_need_are_named() {
 
 #[test]
 fn report_writes_the_figures_summary_and_page() {
-    let dir = tempfile::tempdir().unwrap();
-    let out = bin()
-        .arg("report")
-        .arg("--out")
-        .arg(dir.path())
-        .output()
-        .expect("run");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let dir = Scratch::new();
+    run_ok(&["report", "--out", path(dir.path())]);
     for n in [
         "02", "05", "06", "07", "12", "13", "16", "17", "18", "19", "24", "25", "26", "27", "31",
         "32", "33", "34", "35", "36", "37", "38",
@@ -531,6 +438,7 @@ fn report_writes_the_figures_summary_and_page() {
     let shown = std::fs::read_to_string(root().join("docs/figures/fig33.csv")).unwrap();
     let cells = |t: &str| -> Vec<String> {
         t.lines()
+            .filter(|l| !l.starts_with('#'))
             .flat_map(|l| l.split(',').map(String::from).collect::<Vec<_>>())
             .collect()
     };
@@ -544,17 +452,130 @@ fn report_writes_the_figures_summary_and_page() {
             });
     assert!(
         same,
-        "docs/figures/fig33.* are stale: cargo run --release -p delta-stability -- report && cp report/fig33.svg report/fig33.csv docs/figures/"
+        "docs/figures/fig33.* are stale: run `cargo xtask regen` (it writes delta_stability::report::readme_figures())"
+    );
+    // and the library function the xtask writes them from renders exactly
+    // the report's files
+    for (rel, contents) in delta_stability::report::readme_figures().unwrap() {
+        let name = std::path::Path::new(&rel).file_name().unwrap();
+        let written = std::fs::read_to_string(dir.path().join(name)).unwrap();
+        assert!(written == contents, "{rel} differs from the report's");
+    }
+    // the conclusions are generated from what was computed: the 45° delta's
+    // intervals in summary.json appear, as numbers, in its row
+    let fails = &summary["delta_45"]["fails_one_cycle_mach"][0];
+    let interval = format!(
+        "{:.2}–{:.2}",
+        fails[0].as_f64().unwrap(),
+        fails[1].as_f64().unwrap()
+    );
+    let row = html
+        .split("<tr>")
+        .find(|r| r.contains("0.97 &lt; M &lt; 1.5"))
+        .unwrap();
+    assert!(
+        row.contains(&interval) && row.contains("class=\""),
+        "{interval}: {row}"
     );
 }
 
-fn sweep(args: &[&str]) -> std::process::Output {
-    bin()
-        .current_dir(root())
-        .arg("sweep")
-        .args(args)
-        .output()
-        .expect("run")
+/// The relative links (`href`, `src`) of an HTML page.
+fn links(html: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for attr in ["href=\"", "src=\""] {
+        for part in html.split(attr).skip(1) {
+            let target = part.split('"').next().unwrap_or("");
+            if !target.starts_with('#') && !target.contains("://") {
+                out.push(target.to_string());
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn the_report_page_links_work_wherever_out_points() {
+    let dir = Scratch::new();
+    let out = dir.path().join("somewhere/else/report");
+    run_ok(&["report", "--out", path(&out)]);
+    let html = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let targets = links(&html);
+    assert!(targets.len() > 70, "{targets:?}");
+    for t in targets {
+        assert!(
+            out.join(&t).is_file(),
+            "index.html links to {t}, which is not in the report"
+        );
+        assert!(!t.starts_with(".."), "{t} leaves the report");
+    }
+}
+
+#[test]
+fn a_killed_report_leaves_the_previous_report_whole() {
+    let dir = Scratch::new();
+    let out = dir.path().join("report");
+    run_ok(&["report", "--out", path(&out)]);
+    let previous = "<!doctype html><p>the previous report</p>";
+    std::fs::write(out.join("index.html"), previous).unwrap();
+    let listing = |p: &std::path::Path| -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(p)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .collect();
+        v.sort();
+        v
+    };
+    let before = listing(&out);
+    // kill a run once its temporary directory holds some of its figures
+    let mut killed = false;
+    for _ in 0..5 {
+        let mut child = bin()
+            .args(["report", "--out", path(&out)])
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("run");
+        let started = wait_for(|| {
+            entries_named(dir.path(), ".delta-stability-")
+                .iter()
+                .any(|d| std::fs::read_dir(d).is_ok_and(|mut e| e.next().is_some()))
+        });
+        child.kill().unwrap();
+        let status = child.wait().unwrap();
+        if started && !status.success() {
+            killed = true;
+            break;
+        }
+        std::fs::write(out.join("index.html"), previous).unwrap();
+    }
+    assert!(killed, "no run was killed while writing");
+    assert_eq!(
+        std::fs::read_to_string(out.join("index.html")).unwrap(),
+        previous
+    );
+    assert_eq!(listing(&out), before, "a mix of old and new");
+    let stray = entries_named(dir.path(), ".delta-stability-");
+    assert_eq!(stray.len(), 1, "{stray:?}");
+    // a later run removes the dead run's directory and replaces the report
+    age(&stray[0], 3600);
+    run_ok(&["report", "--out", path(&out)]);
+    assert_ne!(
+        std::fs::read_to_string(out.join("index.html")).unwrap(),
+        previous
+    );
+    assert!(entries_named(dir.path(), ".delta-stability-").is_empty());
+}
+
+#[test]
+fn the_report_replaces_only_a_report() {
+    let dir = Scratch::new();
+    let notes = dir.write("notes.txt", "mine");
+    let err = stderr(&run_err(&["report", "--out", path(dir.path())], 3));
+    assert!(
+        err.contains("will not replace") && err.contains("notes.txt"),
+        "{err}"
+    );
+    assert_eq!(std::fs::read_to_string(notes).unwrap(), "mine");
 }
 
 /// The eigenvalues of the state matrix of eqs (2) (independent of the
@@ -604,9 +625,10 @@ fn eigenvalues_of_eqs_2(d: &[f64; 15]) -> Vec<num_complex::Complex64> {
 
 #[test]
 fn sweep_csv_covers_the_grid_and_agrees_with_the_state_matrix() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Scratch::new();
     let out_path = dir.path().join("grid.csv");
-    let out = sweep(&[
+    run_ok(&[
+        "sweep",
         "examples/delta-60.toml",
         "--mach",
         "0.6:2.0:0.2",
@@ -616,13 +638,8 @@ fn sweep_csv_covers_the_grid_and_agrees_with_the_state_matrix() {
         "50:450:200",
         "--derivatives",
         "-o",
-        out_path.to_str().unwrap(),
+        path(&out_path),
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     let text = std::fs::read_to_string(&out_path).unwrap();
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
@@ -668,22 +685,18 @@ fn sweep_csv_covers_the_grid_and_agrees_with_the_state_matrix() {
 
 #[test]
 fn sweep_json_is_an_array_of_objects() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Scratch::new();
     let out_path = dir.path().join("sub/grid.json");
-    let out = sweep(&[
+    run_ok(&[
+        "sweep",
         "examples/delta-45.toml",
         "--mach",
         "0.5:2:0.5",
         "--sweep",
         "30:75:15",
         "-o",
-        out_path.to_str().unwrap(),
+        path(&out_path),
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&out_path).unwrap()).unwrap();
     let a = v.as_array().unwrap();
@@ -706,9 +719,8 @@ fn sweep_json_is_an_array_of_objects() {
 
 #[test]
 fn sweep_rejects_bad_ranges_with_status_2_and_writes_nothing() {
-    let dir = tempfile::tempdir().unwrap();
-    let out_path = dir.path().join("grid.csv");
-    std::fs::write(&out_path, "an earlier result\n").unwrap();
+    let dir = Scratch::new();
+    let out_path = dir.write("grid.csv", "an earlier result\n");
     for (args, expect) in [
         (vec!["--mach", "2:1:0.1"], "runs backwards"),
         (vec!["--mach", "1:2:0"], "step must be positive"),
@@ -720,76 +732,138 @@ fn sweep_rejects_bad_ranges_with_status_2_and_writes_nothing() {
         (vec!["--mach", "1", "--sweep", "95"], "--sweep 95"),
         (vec!["--mach", "0:1e9:1"], "too many"),
     ] {
-        let mut a = vec!["examples/delta-60.toml"];
+        let mut a = vec!["sweep", "examples/delta-60.toml"];
         a.extend(args);
-        a.extend(["-o", out_path.to_str().unwrap()]);
-        let out = sweep(&a);
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{a:?}: {err}");
+        a.extend(["-o", path(&out_path)]);
+        let err = stderr(&run_err(&a, 2));
         assert!(err.contains(expect), "{a:?}: {err}");
     }
-    let out = sweep(&["examples/delta-60.toml", "--mach", "1", "-o", "grid.txt"]);
-    assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains(".csv or .json"));
+    let a = [
+        "sweep",
+        "examples/delta-60.toml",
+        "--mach",
+        "1",
+        "-o",
+        "grid.txt",
+    ];
+    assert!(stderr(&run_err(&a, 2)).contains(".csv or .json"));
     assert_eq!(
         std::fs::read_to_string(&out_path).unwrap(),
         "an earlier result\n"
     );
 }
 
+/// The entries of `dir` whose names begin with `prefix`.
+fn entries_named(dir: &std::path::Path, prefix: &str) -> Vec<std::path::PathBuf> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.starts_with(prefix))
+        })
+        .collect()
+}
+
+/// Polls `ready` every 2 ms for up to 60 s.
+fn wait_for(mut ready: impl FnMut() -> bool) -> bool {
+    let start = std::time::Instant::now();
+    while start.elapsed() < std::time::Duration::from_secs(60) {
+        if ready() {
+            return true;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(2));
+    }
+    false
+}
+
+/// Makes `path` look `secs` seconds old.
+fn age(path: &std::path::Path, secs: u64) {
+    let then = std::time::SystemTime::now() - std::time::Duration::from_secs(secs);
+    std::fs::File::open(path)
+        .unwrap()
+        .set_modified(then)
+        .unwrap();
+}
+
 #[test]
 fn a_killed_sweep_leaves_no_half_written_file() {
-    let dir = tempfile::tempdir().unwrap();
+    let dir = Scratch::new();
     let out_path = dir.path().join("big.csv");
     let mut child = bin()
-        .current_dir(root())
         .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.00001"])
         .args(["--cg", "0.2:0.3:0.001", "-o"])
         .arg(&out_path)
         .stderr(std::process::Stdio::null())
         .spawn()
         .expect("run");
-    // wait until it has started writing (its temporary file exists)
-    for _ in 0..200 {
-        if std::fs::read_dir(dir.path()).unwrap().count() > 0 {
-            break;
-        }
-        std::thread::sleep(std::time::Duration::from_millis(10));
-    }
-    std::thread::sleep(std::time::Duration::from_millis(100));
+    // wait until the sweep has written rows (not only the header) into its
+    // temporary file, then kill it
+    let header = 200;
+    let writing = wait_for(|| {
+        entries_named(dir.path(), ".delta-stability-")
+            .iter()
+            .any(|p| std::fs::metadata(p).is_ok_and(|m| m.len() > header))
+    });
     child.kill().unwrap();
-    child.wait().unwrap();
+    let status = child.wait().unwrap();
+    assert!(writing, "the sweep never wrote into a temporary file");
     assert!(
-        !out_path.exists(),
-        "a 15-million-point sweep finished in 0.1 s?"
+        !status.success(),
+        "a 15-million-point sweep finished early?"
     );
+    assert!(!out_path.exists(), "a half-written file at the target");
+    let stale = entries_named(dir.path(), ".delta-stability-");
+    assert_eq!(stale.len(), 1, "{stale:?}");
+
+    // A later sweep into the same directory removes the dead run's stale
+    // file, and nothing else: not a live process's, not the user's files.
+    age(&stale[0], 3600);
+    let live = dir.write(
+        &format!(".delta-stability-{}-abcdef", std::process::id()),
+        "live",
+    );
+    age(&live, 3600);
+    let users = dir.write(".delta-stability-notes", "mine");
+    age(&users, 3600);
+    let small = dir.path().join("small.csv");
+    run_ok(&[
+        "sweep",
+        "examples/delta-60.toml",
+        "--mach",
+        "1",
+        "-o",
+        path(&small),
+    ]);
+    assert!(small.exists());
+    assert!(
+        !stale[0].exists(),
+        "the stale temporary file is still there"
+    );
+    assert!(live.exists() && users.exists());
 }
 
 /// A sweep reuses the derivatives across μ₁; each point must still be the
 /// design point `analyze` computes on its own.
 #[test]
 fn sweep_points_are_those_analyze_computes_alone() {
-    let dir = tempfile::tempdir().unwrap();
-    let base = std::fs::read_to_string(root().join("examples/delta-60.toml")).unwrap();
+    let dir = Scratch::new();
+    let base = common::example("delta-60.toml");
     let heavy = base.replace("mu1 = 50.0", "mu1 = 450.0");
     assert_ne!(heavy, base);
-    let cfg = dir.path().join("heavy.toml");
-    std::fs::write(&cfg, heavy).unwrap();
+    let cfg = dir.write("heavy.toml", heavy);
     let csv = dir.path().join("grid.csv");
-    let out = sweep(&[
+    run_ok(&[
+        "sweep",
         "examples/delta-60.toml",
         "--mach",
         "0.9:1.5:0.3",
         "--mu1",
         "50:450:400",
         "-o",
-        csv.to_str().unwrap(),
+        path(&csv),
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     let text = std::fs::read_to_string(&csv).unwrap();
     let rows: Vec<Vec<String>> = text
         .lines()
@@ -800,14 +874,7 @@ fn sweep_points_are_those_analyze_computes_alone() {
     for (k, mach) in ["0.9", "1.2", "1.5"].iter().enumerate() {
         let row = &rows[2 * k + 1];
         assert_eq!((row[0].as_str(), row[3].as_str()), (*mach, "450.0"));
-        let a = bin()
-            .arg("analyze")
-            .arg(&cfg)
-            .args(["--mach", mach, "--json"])
-            .output()
-            .unwrap();
-        assert!(a.status.success(), "{}", String::from_utf8_lossy(&a.stderr));
-        let v: serde_json::Value = serde_json::from_slice(&a.stdout).unwrap();
+        let v = json(&run_ok(&["analyze", path(&cfg), "--mach", mach, "--json"]));
         let sp = v["modes"]
             .as_array()
             .unwrap()
@@ -823,4 +890,44 @@ fn sweep_points_are_those_analyze_computes_alone() {
             );
         }
     }
+}
+
+#[test]
+fn closed_choices_are_listed_in_help_from_the_library() {
+    let help = common::stdout(&run_ok(&["analyze", "--help"]));
+    for t in stability_core::damping::Theory::ALL {
+        assert!(
+            help.contains(&format!("- {}:", t.name())),
+            "{}\n{help}",
+            t.name()
+        );
+        assert!(help.contains(t.equations()), "{}", t.equations());
+    }
+    assert!(help.contains("- faired:"), "{help}");
+    let help = common::stdout(&run_ok(&["convert", "--help"]));
+    for n in stability_core::notation::Notation::all() {
+        assert!(help.contains(&format!("- {}:", n.name())), "{}", n.name());
+    }
+    assert!(
+        help.contains("- avl:") && help.contains("read only"),
+        "{help}"
+    );
+    let help = common::stdout(&run_ok(&["response", "--help"]));
+    assert!(
+        help.contains("- step:") && help.contains("- initial:"),
+        "{help}"
+    );
+    // avl is read, never written
+    let out = run_err(
+        &[
+            "convert",
+            "--from",
+            "avl",
+            "--to",
+            "avl",
+            "examples/avl-tailless-delta.toml",
+        ],
+        2,
+    );
+    assert!(stderr(&out).contains("'avl'"), "{}", stderr(&out));
 }

@@ -2,120 +2,113 @@
 //! condition → derivatives (§5–7) → quartic (§4) → modes → criteria (§8–9).
 
 use crate::Failure;
-use crate::cmd::quartic::{analysis_json, analysis_table};
-use crate::config;
-use crate::diag::InputError;
+use crate::config::{self, limits};
+use crate::diag::{InputError, num};
 use crate::fmt::sig;
-use serde_json::{Value, json};
+use crate::output::print;
+use crate::page::analysis_page;
+use serde::Serialize;
 use stability_core::Derivatives;
-use stability_core::case::{CaseResult, DampingModel, evaluate};
+use stability_core::case::{CaseResult, DampingModel, FrequencyIteration, evaluate};
 use stability_core::criteria::Margins;
+use stability_core::json::CaseView;
+use std::fmt::Write;
 
 /// Overrides of the config from the command line.
 #[derive(Debug, Default, Clone)]
 pub struct Overrides {
-    pub damping: Option<String>,
+    pub damping: Option<DampingModel>,
     pub mach: Option<f64>,
     pub cg: Option<f64>,
 }
 
-pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
+/// The config with the command line's overrides applied, each within its
+/// range.
+fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
     let mut cfg = config::read(path)?;
-    let bad = |m: String| Failure::Input(InputError::file(path, m));
-    if let Some(d) = &o.damping {
-        cfg.case.damping = DampingModel::parse(d).map_err(|e| bad(format!("--damping: {e}")))?;
+    let bad =
+        |flag: &str, m: String| Failure::Input(InputError::file(path, format!("{flag}: {m}")));
+    if let Some(d) = o.damping {
+        cfg.case.damping = d;
+        cfg.overridden_by("[model] damping", format!("--damping {}", d.name()));
     }
     if let Some(m) = o.mach {
-        if !(m.is_finite() && m > 0.0) {
-            return Err(bad(format!("--mach must be a positive number, not {m}")));
-        }
-        cfg.case.mach = m;
+        cfg.case.mach = limits::MACH.check(m).map_err(|e| bad("--mach", e))?;
+        cfg.overridden_by("[flight] mach", format!("--mach {}", num(m)));
     }
     if let Some(h) = o.cg {
-        if !h.is_finite() {
-            return Err(bad(format!("--cg must be a finite number, not {h}")));
-        }
-        cfg.case.h = h;
+        cfg.case.h = limits::CG.check(h).map_err(|e| bad("--cg", e))?;
+        cfg.overridden_by("[flight] cg", format!("--cg {}", num(h)));
     }
-    let r = evaluate(&cfg.case).map_err(|e| bad(e.to_string()))?;
+    Ok(cfg)
+}
+
+pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
+    let cfg = overridden(path, o)?;
+    let r = evaluate(&cfg.case).map_err(|e| cfg.explain(&e))?;
+    if !crate::cmd::quartic::is_finite(&r.analysis) {
+        return Err(cfg
+            .error_at(
+                "[flight]",
+                "the analysis overflows f64: no result can be written",
+            )
+            .into());
+    }
     for w in &r.warnings {
-        eprintln!("warning: {w}");
+        crate::output::warn(&format!("warning: {w}"));
     }
     if json_out {
-        println!(
-            "{}",
+        print(&format!(
+            "{}\n",
             serde_json::to_string_pretty(&to_json(&cfg, &r)).unwrap_or_default()
-        );
+        ))?;
     } else {
-        print!("{}", page(&cfg, &r));
+        print(&page(&cfg, &r))?;
     }
     Ok(())
 }
 
-/// The 15 report-notation inputs as a JSON object.
-pub fn derivatives_json(d: &Derivatives) -> Value {
-    let mut map = serde_json::Map::new();
-    for (name, v) in Derivatives::QUARTIC_INPUTS
-        .iter()
-        .zip(d.quartic_input_values())
-    {
-        map.insert((*name).to_string(), json!(v));
-    }
-    Value::Object(map)
+/// The `analyze --json` object: the config's path and the design point as
+/// the library serializes it.
+#[derive(Serialize)]
+pub struct AnalyzeJson<'a> {
+    file: &'a str,
+    #[serde(flatten)]
+    point: CaseView<'a>,
 }
 
-pub fn to_json(cfg: &config::Config, r: &CaseResult) -> Value {
-    let c = &cfg.case;
-    let p = &c.planform;
-    let margins = Margins::of(
-        &r.analysis.quartic,
-        &r.derivatives,
-        r.coefficients.lift_slope.value,
-    );
-    let mut map = serde_json::Map::new();
-    map.insert("file".into(), json!(cfg.path));
-    map.insert(
-        "case".into(),
-        json!({
-            "sweep_deg": p.sweep_le.to_degrees(), "taper": p.taper, "aspect_ratio": p.aspect_ratio(),
-            "mac": p.mac(), "smc": p.smc(), "area": p.area(), "span": p.span(),
-            "mach": c.mach, "cg": c.h, "mu1": c.mu1, "i_b": c.i_b, "cl_m2": c.cl_m2, "c_l": r.c_l,
-            "damping": c.damping.name(),
-        }),
-    );
-    map.insert(
-        "aerodynamics".into(),
-        serde_json::to_value(r.coefficients).unwrap_or(Value::Null),
-    );
-    map.insert("derivatives".into(), derivatives_json(&r.derivatives));
-    map.insert(
-        "damping".into(),
-        json!({
-            "theory": r.damping.theory.name(),
-            "equations": r.damping.theory.equations(),
-            "z_thetadot": r.damping.derivatives.z_thetadot(),
-            "m_thetadot": r.damping.derivatives.m_thetadot(),
-            "fig18": r.damping.fig18,
-            "frequency": r.frequency,
-        }),
-    );
-    map.extend(analysis_json(&r.analysis, None));
-    if let Some(Value::Object(criteria)) = map.get_mut("criteria") {
-        criteria.insert(
-            "margins".into(),
-            json!({ "static_margin": margins.static_margin, "manoeuvre_margin": margins.manoeuvre_margin }),
-        );
+pub fn to_json<'a>(cfg: &'a config::Config, r: &'a CaseResult) -> AnalyzeJson<'a> {
+    AnalyzeJson {
+        file: &cfg.path,
+        point: r.view(&cfg.case),
     }
-    map.insert("warnings".into(), json!(r.warnings));
-    Value::Object(map)
 }
 
 pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
-    use std::fmt::Write;
-    let c = &cfg.case;
-    let p = &c.planform;
     let mut s = String::new();
     let _ = writeln!(s, "Design point of {}", cfg.path);
+    design_point(&mut s, cfg, r);
+    derivatives(&mut s, &r.derivatives);
+    s.push_str(&analysis_page(
+        "The stability quartic (eqs 4–6):",
+        &r.analysis,
+        None,
+    ));
+    let lift_slope = r.coefficients.lift_slope.value;
+    let m = Margins::of(&r.analysis.quartic, &r.derivatives, lift_slope);
+    let _ = writeln!(
+        s,
+        "Margins (§9): static K_n = {} (eq 42), manoeuvre H_m = {}",
+        m.static_margin.map_or("—".into(), |x| sig(x, 4)),
+        m.manoeuvre_margin.map_or("—".into(), |x| sig(x, 4))
+    );
+    s
+}
+
+/// The planform, flight condition, coefficients and damping theory.
+fn design_point(s: &mut String, cfg: &config::Config, r: &CaseResult) {
+    let c = &cfg.case;
+    let p = &c.planform;
     let _ = writeln!(
         s,
         "  planform (§2.2): Λ = {}°, taper {}, A = {}, M.A.C. = {}, S = {}",
@@ -154,26 +147,35 @@ pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
         sig(r.damping.derivatives.m_thetadot(), 4)
     );
     if let Some(f) = &r.frequency {
-        let _ = writeln!(
-            s,
-            "  frequency parameter: ω̄ {} → {} in {} iterations{}; m_θ̇ {} → {}, cycles to ½ {} → {}",
-            sig(f.initial, 4),
-            sig(f.converged, 4),
-            f.iterations,
-            if f.converged_ok {
-                ""
-            } else {
-                " (not converged)"
-            },
-            sig(f.m_thetadot_initial, 4),
-            sig(f.m_thetadot_converged, 4),
-            f.cycles_to_half_initial.map_or("—".into(), |x| sig(x, 4)),
-            f.cycles_to_half_converged.map_or("—".into(), |x| sig(x, 4)),
-        );
+        frequency(s, f);
     }
+}
+
+/// The frequency iteration of a frequency-dependent theory.
+fn frequency(s: &mut String, f: &FrequencyIteration) {
+    let _ = writeln!(
+        s,
+        "  frequency parameter: ω̄ {} → {} in {} iterations{}; m_θ̇ {} → {}, cycles to ½ {} → {}",
+        sig(f.initial, 4),
+        sig(f.converged, 4),
+        f.iterations,
+        if f.converged_ok {
+            ""
+        } else {
+            " (not converged)"
+        },
+        sig(f.m_thetadot_initial, 4),
+        sig(f.m_thetadot_converged, 4),
+        f.cycles_to_half_initial.map_or("—".into(), |x| sig(x, 4)),
+        f.cycles_to_half_converged.map_or("—".into(), |x| sig(x, 4)),
+    );
+}
+
+/// The fifteen quartic inputs, five to a line.
+fn derivatives(s: &mut String, d: &Derivatives) {
     let _ = writeln!(s, "\nDerivatives (report notation, §3):");
     let names = Derivatives::QUARTIC_INPUTS;
-    let values = r.derivatives.quartic_input_values();
+    let values = d.quartic_input_values();
     for row in 0..3 {
         let mut line = String::from(" ");
         for col in 0..5 {
@@ -183,17 +185,4 @@ pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
         let _ = writeln!(s, "{}", line.trim_end());
     }
     let _ = writeln!(s);
-    s.push_str(&analysis_table(
-        "The stability quartic (eqs 4–6):",
-        &r.analysis,
-        None,
-    ));
-    let m = Margins::of(&r.analysis.quartic, &r.derivatives, a.lift_slope.value);
-    let _ = writeln!(
-        s,
-        "Margins (§9): static K_n = {} (eq 42), manoeuvre H_m = {}",
-        m.static_margin.map_or("—".into(), |x| sig(x, 4)),
-        m.manoeuvre_margin.map_or("—".into(), |x| sig(x, 4))
-    );
-    s
 }

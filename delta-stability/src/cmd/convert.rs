@@ -1,114 +1,165 @@
 //! `delta-stability convert --from X --to Y FILE [--json]`: a derivative set
 //! from one notation into another, by the factors derived in
-//! `specs/notation.toml` (see docs/notations.md).
+//! `specs/notation.toml` (see docs/notations.md). No value that is not
+//! finite is written: a conversion that overflows is an error at the value
+//! that caused it.
 
 use crate::Failure;
-use crate::diag::InputError;
-use crate::input::{self, DERIVATIVE_ROWS, FLIGHT_ROWS};
-use serde_json::{Value, json};
-use stability_core::notation::{Notation, row, tables};
+use crate::args::NotationArg;
+use crate::diag::{InputError, num};
+use crate::input::rows::{DERIVATIVES, FLIGHT, QUARTIC};
+use crate::input::tabled::uses_parameter;
+use crate::input::{self, DerivativeFile};
+use crate::output::print;
+use serde::Serialize;
+use stability_core::notation::{Notation, NotationError, Values, tables};
+use std::collections::BTreeMap;
 use std::fmt::Write;
 
-pub fn run(from: &str, to: &str, file: &str, json_out: bool) -> Result<(), Failure> {
-    let bad = |m: String| Failure::Input(InputError::file(file, m));
+pub fn run(from: NotationArg, to: Notation, file: &str, json_out: bool) -> Result<(), Failure> {
     let input = input::read(file)?;
     for w in &input.warnings {
-        eprintln!("warning: {w}");
+        crate::output::warn(&format!("warning: {w}"));
     }
-    if input.notation != from {
-        return Err(bad(format!(
-            "the file is in notation `{}` (its `notation` key), not `{from}`",
-            input.notation
-        )));
+    if input.notation != from.name() {
+        return Err(InputError::file(
+            file,
+            format!(
+                "--from {}: the file is in notation `{}` (its `notation` key)",
+                from.name(),
+                input.notation
+            ),
+        )
+        .into());
     }
-    let Some(target) = Notation::named(to) else {
-        return Err(bad(format!(
-            "--to: unknown or read-only notation `{to}`; the notations one can write are: {}",
-            tables::NOTATIONS.join(", ")
-        )));
-    };
-    let values = target
-        .from_report(&input.report, &input.parameters)
-        .map_err(|e| bad(e.to_string()))?;
-    let names = target.names();
-    let report_names = Notation::REPORT.names();
-    let quartic_rows: Vec<&str> = DERIVATIVE_ROWS
-        .iter()
-        .chain(["c_l", "mu", "i_b"].iter())
-        .copied()
-        .collect();
+    let values = converted(&input, to)?;
     if json_out {
-        let mut theirs = serde_json::Map::new();
-        for (i, n) in names.iter().enumerate() {
-            if let Some(n) = n {
-                theirs.insert(
-                    (*n).to_string(),
-                    values[i].map_or(Value::Null, |v| json!(v)),
+        let out = to_json(&input, from.name(), to, &values);
+        print(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&out).unwrap_or_default()
+        ))?;
+    } else {
+        print(&to_toml(&input, from.name(), to, &values))?;
+    }
+    Ok(())
+}
+
+/// The values in notation `to`, every one finite (the library refuses a
+/// conversion that overflows; the error is placed at the value it came
+/// from).
+fn converted(input: &DerivativeFile, to: Notation) -> Result<Values, InputError> {
+    to.from_report(&input.report, &input.parameters)
+        .map_err(|e| {
+            let (notation, quantity) = match &e {
+                NotationError::Overflow { quantity, .. } => (to, *quantity),
+                NotationError::NonFiniteInput { quantity, .. } => (Notation::REPORT, *quantity),
+            };
+            let row = notation
+                .row_of(quantity)
+                .or_else(|| tables::ROWS.iter().position(|r| *r == quantity));
+            let source = row
+                .and_then(|i| input.report[i].map(|v| (i, v)))
+                .map(|(i, v)| {
+                    format!(
+                        " ({} = {} in the report's notation)",
+                        Notation::REPORT.name_of(i),
+                        num(v)
+                    )
+                })
+                .unwrap_or_default();
+            let message = format!("{e}{source}; nothing written");
+            match row {
+                Some(i) => input.error_at(i, message),
+                None => InputError::file(&input.path, message),
+            }
+        })
+}
+
+/// The `convert --json` object: the notations, the values in the target
+/// notation by its names (null where the input does not determine one),
+/// the report's values, and the parameters.
+#[derive(Serialize)]
+struct ConvertJson<'a> {
+    from: &'a str,
+    to: &'a str,
+    values: BTreeMap<&'static str, Option<f64>>,
+    report: BTreeMap<&'static str, f64>,
+    parameters: BTreeMap<&'static str, f64>,
+}
+
+fn to_json<'a>(
+    input: &DerivativeFile,
+    from: &'a str,
+    to: Notation,
+    values: &Values,
+) -> ConvertJson<'a> {
+    let theirs = to.names().iter().zip(values);
+    let ours = Notation::REPORT.names().iter().zip(&input.report);
+    ConvertJson {
+        from,
+        to: to.name(),
+        values: theirs.filter_map(|(n, v)| n.map(|n| (n, *v))).collect(),
+        report: ours.filter_map(|(n, v)| Some(((*n)?, (*v)?))).collect(),
+        parameters: tables::PARAMETERS
+            .iter()
+            .copied()
+            .zip(input.parameters)
+            .collect(),
+    }
+}
+
+/// One table of the TOML output: the notation's names for `rows`.
+fn section(s: &mut String, title: &str, rows: &[usize], to: Notation, values: &Values) {
+    let entries: Vec<(usize, &str)> = rows
+        .iter()
+        .filter_map(|&i| to.names()[i].map(|n| (i, n)))
+        .collect();
+    if entries.is_empty() {
+        return;
+    }
+    let _ = writeln!(s, "\n[{title}]");
+    for (i, n) in entries {
+        match values[i] {
+            Some(v) => {
+                let _ = writeln!(s, "{n} = {v:?}");
+            }
+            None => {
+                let _ = writeln!(
+                    s,
+                    "# {n}: not determined by the input (a quantity it depends on is missing)"
                 );
             }
         }
-        let mut report = serde_json::Map::new();
-        for (i, n) in report_names.iter().enumerate() {
-            if let (Some(n), Some(v)) = (n, input.report[i]) {
-                report.insert((*n).to_string(), json!(v));
-            }
-        }
-        let out = json!({
-            "from": from,
-            "to": to,
-            "values": theirs,
-            "report": report,
-            "parameters": { "lt": input.parameters[0] },
-        });
-        println!("{}", serde_json::to_string_pretty(&out).unwrap_or_default());
-        return Ok(());
     }
+}
+
+fn to_toml(input: &DerivativeFile, from: &str, to: Notation, values: &Values) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "# {file}, converted from notation `{from}` to `{to}` by delta-stability"
+        "# {}, converted from notation `{from}` to `{}` by delta-stability",
+        input.path,
+        to.name()
     );
     let _ = writeln!(
         s,
         "# ({}); factors derived in specs/notation.toml, see docs/notations.md",
-        target.title()
+        to.title()
     );
-    let _ = writeln!(s, "notation = \"{to}\"");
-    let section = |title: &str, rows: &[&str], s: &mut String| {
-        let entries: Vec<(usize, &str)> = rows
-            .iter()
-            .filter_map(|r| row(r))
-            .filter_map(|i| names[i].map(|n| (i, n)))
-            .collect();
-        if entries.is_empty() {
-            return;
-        }
-        let _ = writeln!(s, "\n[{title}]");
-        for (i, n) in entries {
-            match values[i] {
-                Some(v) => {
-                    let _ = writeln!(s, "{n} = {v:?}");
-                }
-                None => {
-                    let _ = writeln!(
-                        s,
-                        "# {n}: not determined by the input (a quantity it depends on is missing)"
-                    );
-                }
-            }
-        }
-    };
-    section("derivatives", &DERIVATIVE_ROWS, &mut s);
-    section("flight", &FLIGHT_ROWS, &mut s);
-    let lacking: Vec<usize> = quartic_rows
-        .iter()
-        .filter_map(|r| row(r))
-        .filter(|&i| names[i].is_none() && input.report[i].is_some())
+    let _ = writeln!(s, "notation = \"{}\"", to.name());
+    section(&mut s, "derivatives", &DERIVATIVES, to, values);
+    section(&mut s, "flight", &FLIGHT, to, values);
+    let report_names = Notation::REPORT.names();
+    let lacking: Vec<usize> = QUARTIC
+        .into_iter()
+        .filter(|&i| to.names()[i].is_none() && input.report[i].is_some())
         .collect();
     if !lacking.is_empty() {
         let _ = writeln!(
             s,
-            "\n# quantities notation `{to}` does not define, in the report's names"
+            "\n# quantities notation `{}` does not define, in the report's names",
+            to.name()
         );
         let _ = writeln!(s, "[report]");
         for i in lacking {
@@ -117,8 +168,10 @@ pub fn run(from: &str, to: &str, file: &str, json_out: bool) -> Result<(), Failu
             }
         }
     }
-    if to == "duncan" {
-        let _ = writeln!(s, "\n[parameters]\nlt = {:?}  # l_t/c̄", input.parameters[0]);
+    for (k, p) in tables::PARAMETERS.iter().enumerate() {
+        if uses_parameter(to, k) {
+            let _ = writeln!(s, "\n[parameters]\n{p} = {:?}", input.parameters[k]);
+        }
     }
     if let Some(d) = &input.dimensional {
         let _ = writeln!(
@@ -127,6 +180,5 @@ pub fn run(from: &str, to: &str, file: &str, json_out: bool) -> Result<(), Failu
             d.v, d.rho, d.s, d.chord, d.mass
         );
     }
-    print!("{s}");
-    Ok(())
+    s
 }

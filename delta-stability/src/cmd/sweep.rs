@@ -8,14 +8,15 @@
 //! ([`stability_core::case::evaluate_point`]: no eq (7) check).
 
 use crate::Failure;
-use crate::config;
+use crate::config::{self, limits};
 use crate::diag::InputError;
+use crate::files::write_error;
 use crate::output::AtomicFile;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 use stability_core::Derivatives;
 use stability_core::analysis::Analysis;
-use stability_core::case::{Case, CaseError, CaseResult, evaluate_point};
+use stability_core::case::{Case, CaseResult, evaluate_point};
 use stability_core::geometry::{Planform, Size};
 use stability_core::study::grid as values;
 use std::io::Write as _;
@@ -238,10 +239,23 @@ impl Row<'_> {
     }
 }
 
+/// Whether every number a point's row would carry is finite (a point
+/// whose numbers overflow is written as an error, not as blanks).
+fn finite(d: &Derivatives, a: &Analysis) -> bool {
+    d.quartic_input_values().iter().all(|v| v.is_finite())
+        && a.quartic.to_array().iter().all(|v| v.is_finite())
+        && a.roots.iter().all(|z| z.re.is_finite() && z.im.is_finite())
+        && a.routh.discriminant.is_finite()
+        && a.damping_standard.m_thetadot.is_finite()
+}
+
+/// The error of a point whose numbers overflow.
+const OVERFLOW: &str = "the design point's numbers overflow f64";
+
 fn write_point(
     out: &mut Vec<u8>,
     head: [&str; 5],
-    r: Result<(&Derivatives, &Analysis), &CaseError>,
+    r: Result<(&Derivatives, &Analysis), &dyn std::fmt::Display>,
     options: (bool, bool),
 ) {
     let (json, with_derivatives) = options;
@@ -258,30 +272,13 @@ fn write_point(
         row.key(name);
         row.out.extend_from_slice(v.as_bytes());
     }
+    let r = match r {
+        Ok((d, a)) if !finite(d, a) => Err(&OVERFLOW as &dyn std::fmt::Display),
+        other => other,
+    };
     match r {
         Ok((d, a)) => {
-            let sp = a.modes.short_period();
-            let ph = a.modes.phugoid();
-            row.boolean("stable", a.routh.stable);
-            row.word("verdict", a.verdict.as_str());
-            row.number("sp_re", sp.map(|m| m.re));
-            row.number("sp_im", sp.map(|m| m.im));
-            row.number("sp_cycles_to_half", sp.and_then(|m| m.cycles_to_half));
-            row.number("sp_damping_ratio", sp.and_then(|m| m.damping_ratio));
-            row.number("sp_omega_bar", sp.and_then(|m| m.frequency_parameter));
-            row.number("ph_re", ph.map(|m| m.re));
-            row.number("ph_im", ph.map(|m| m.im));
-            row.number("m_thetadot", Some(a.damping_standard.m_thetadot));
-            row.number("delta_m_thetadot", a.damping_standard.margin);
-            if with_derivatives {
-                let values = d.quartic_input_values();
-                for (name, v) in stability_core::Derivatives::QUARTIC_INPUTS
-                    .iter()
-                    .zip(values)
-                {
-                    row.number(name, Some(v));
-                }
-            }
+            results(&mut row, d, a, with_derivatives);
             if !json {
                 row.key("error");
             }
@@ -298,6 +295,30 @@ fn write_point(
     }
     if json {
         row.out.push(b'}');
+    }
+}
+
+/// A point's results: Routh, the verdict, the modes, eq (41), and the
+/// derivatives when asked for.
+fn results(row: &mut Row<'_>, d: &Derivatives, a: &Analysis, with_derivatives: bool) {
+    let sp = a.modes.short_period();
+    let ph = a.modes.phugoid();
+    row.boolean("stable", a.routh.stable);
+    row.word("verdict", a.verdict.as_str());
+    row.number("sp_re", sp.map(|m| m.re));
+    row.number("sp_im", sp.map(|m| m.im));
+    row.number("sp_cycles_to_half", sp.and_then(|m| m.cycles_to_half));
+    row.number("sp_damping_ratio", sp.and_then(|m| m.damping_ratio));
+    row.number("sp_omega_bar", sp.and_then(|m| m.frequency_parameter));
+    row.number("ph_re", ph.map(|m| m.re));
+    row.number("ph_im", ph.map(|m| m.im));
+    row.number("m_thetadot", Some(a.damping_standard.m_thetadot));
+    row.number("delta_m_thetadot", a.damping_standard.margin);
+    if with_derivatives {
+        let values = d.quartic_input_values();
+        for (name, v) in Derivatives::QUARTIC_INPUTS.iter().zip(values) {
+            row.number(name, Some(v));
+        }
     }
 }
 
@@ -326,7 +347,7 @@ fn block(grid: &Grid, range: std::ops::Range<usize>, options: (bool, bool)) -> V
                 };
                 match Analysis::without_classical(&d) {
                     Ok(a) => write_point(&mut out, head, Ok((&d, &a)), options),
-                    Err(e) => write_point(&mut out, head, Err(&e.into()), options),
+                    Err(e) => write_point(&mut out, head, Err(&e), options),
                 }
             }
             _ => match evaluate_point(&case) {
@@ -350,11 +371,17 @@ pub fn grid(o: &Options, base: Case) -> Result<Grid, String> {
         Some(t) => parse_range(flag, t),
         None => Ok(vec![clean(base)]),
     };
-    let mach = parse_range("mach", &o.mach)?;
+    let within = |flag: &str, v: Vec<f64>, limit: &limits::Limit| -> Result<Vec<f64>, String> {
+        for &x in &v {
+            limit.check(x).map_err(|e| format!("--{flag}: {e}"))?;
+        }
+        Ok(v)
+    };
+    let mach = within("mach", parse_range("mach", &o.mach)?, &limits::MACH)?;
     let sweep_deg = or_base("sweep", &o.sweep, base.planform.sweep_le.to_degrees())?;
-    let cg = or_base("cg", &o.cg, base.h)?;
-    let mu1 = or_base("mu1", &o.mu1, base.mu1)?;
-    let i_b = or_base("ib", &o.ib, base.i_b)?;
+    let cg = within("cg", or_base("cg", &o.cg, base.h)?, &limits::CG)?;
+    let mu1 = within("mu1", or_base("mu1", &o.mu1, base.mu1)?, &limits::MU1)?;
+    let i_b = within("ib", or_base("ib", &o.ib, base.i_b)?, &limits::I_B)?;
     let mut planforms = Vec::with_capacity(sweep_deg.len());
     for &s in &sweep_deg {
         let p = Planform::new(s.to_radians(), base.planform.taper, Size::RootChord(1.0))
@@ -391,24 +418,19 @@ pub fn grid(o: &Options, base: Case) -> Result<Grid, String> {
     }
 }
 
-pub fn run(o: &Options) -> Result<(), Failure> {
-    let cfg = config::read(&o.config)?;
-    let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
-    let json = match Path::new(&o.output).extension().and_then(|e| e.to_str()) {
-        Some("csv") => false,
-        Some("json") => true,
-        _ => {
-            return Err(bad(format!(
-                "-o {}: the output must end in .csv or .json",
-                o.output
-            )));
-        }
-    };
-    let grid = grid(o, cfg.case).map_err(&bad)?;
-    let total = grid.points().unwrap_or(0);
-    let options = (json, o.derivatives);
-    let write_err = |e: std::io::Error| bad(format!("cannot write {}: {e}", o.output));
-    let mut file = AtomicFile::create(Path::new(&o.output)).map_err(write_err)?;
+/// Whether the output is JSON (`.json`) or CSV (`.csv`).
+fn is_json(o: &Options) -> Result<bool, String> {
+    match Path::new(&o.output).extension().and_then(|e| e.to_str()) {
+        Some("csv") => Ok(false),
+        Some("json") => Ok(true),
+        _ => Err(format!(
+            "-o {}: the output must end in .csv or .json",
+            o.output
+        )),
+    }
+}
+
+fn progress_bar(total: usize) -> ProgressBar {
     let bar = ProgressBar::with_draw_target(Some(total as u64), ProgressDrawTarget::stderr());
     bar.set_style(
         ProgressStyle::with_template(
@@ -417,6 +439,19 @@ pub fn run(o: &Options) -> Result<(), Failure> {
         .unwrap_or_else(|_| ProgressStyle::default_bar())
         .progress_chars("=> "),
     );
+    bar
+}
+
+pub fn run(o: &Options) -> Result<(), Failure> {
+    let cfg = config::read(&o.config)?;
+    let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
+    let json = is_json(o).map_err(&bad)?;
+    let grid = grid(o, cfg.case).map_err(&bad)?;
+    let out = Path::new(&o.output);
+    let write_err = |e: std::io::Error| Failure::Io(write_error(out, &e));
+    let mut file = AtomicFile::create(out).map_err(write_err)?;
+    let total = grid.points().unwrap_or(0);
+    let bar = progress_bar(total);
     if json {
         file.write_all(b"[\n").map_err(write_err)?;
     } else {
@@ -424,18 +459,35 @@ pub fn run(o: &Options) -> Result<(), Failure> {
             .and_then(|_| file.write_all(b"\n"))
             .map_err(write_err)?;
     }
+    write_points(&mut file, &grid, (json, o.derivatives), &bar).map_err(write_err)?;
+    if json {
+        file.write_all(b"\n]\n").map_err(write_err)?;
+    }
+    file.commit().map_err(write_err)?;
+    bar.finish_and_clear();
+    crate::output::print(&format!("wrote {total} design points to {}\n", o.output))
+}
+
+/// Evaluates the grid in chunks, writing chunk k while chunk k + 1 is
+/// computed.
+fn write_points(
+    file: &mut AtomicFile,
+    grid: &Grid,
+    options: (bool, bool),
+    bar: &ProgressBar,
+) -> std::io::Result<()> {
     const CHUNK: usize = 1 << 16;
     const BLOCK: usize = 1 << 10;
+    let total = grid.points().unwrap_or(0);
     let compute = |start: usize| -> Vec<Vec<u8>> {
         let end = (start + CHUNK).min(total);
         (start..end)
             .step_by(BLOCK)
             .collect::<Vec<_>>()
             .into_par_iter()
-            .map(|b| block(&grid, b..(b + BLOCK).min(end), options))
+            .map(|b| block(grid, b..(b + BLOCK).min(end), options))
             .collect()
     };
-    // write chunk k while chunk k + 1 is computed
     let mut pending = compute(0);
     let mut start = CHUNK;
     loop {
@@ -448,21 +500,14 @@ pub fn run(o: &Options) -> Result<(), Failure> {
             },
             || (start < total).then(|| compute(start)),
         );
-        written.map_err(write_err)?;
+        written?;
         bar.set_position(start.min(total) as u64);
         match next {
             Some(n) => {
                 pending = n;
                 start += CHUNK;
             }
-            None => break,
+            None => return Ok(()),
         }
     }
-    if json {
-        file.write_all(b"\n]\n").map_err(write_err)?;
-    }
-    file.commit().map_err(write_err)?;
-    bar.finish_and_clear();
-    println!("wrote {total} design points to {}", o.output);
-    Ok(())
 }

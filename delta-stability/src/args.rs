@@ -1,0 +1,194 @@
+//! The closed choices of the command line as clap value enums, each value
+//! with its one-line meaning in `--help`; the lists come from the library
+//! (its damping theories and notations), not restated here.
+
+use clap::ValueEnum;
+use clap::builder::PossibleValue;
+use stability_core::case::DampingModel;
+use stability_core::damping::Theory;
+use stability_core::notation::Notation;
+use std::sync::OnceLock;
+
+/// A damping model: `faired` or one of the library's theories.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DampingArg(pub DampingModel);
+
+/// What each theory is, in a line (the names and equations are the
+/// library's; a theory added there fails to compile here until described).
+fn theory_meaning(t: Theory) -> &'static str {
+    match t {
+        Theory::Garrick => "Garrick's low-aspect-ratio theory, incompressible",
+        Theory::GarnerTaper => "Garner's version of it for taper 1/7",
+        Theory::Slender => "Ribner's slender-wing theory",
+        Theory::Supersonic => {
+            "Mangler, Ribner & Malvestuto, supersonic, subsonic leading edges (M > 1)"
+        }
+        Theory::Transonic => "Mangler's transonic theory at M = 1, steady",
+        Theory::TransonicFrequency => {
+            "the same with its frequency terms, ω̄ iterated to the short period's own"
+        }
+    }
+}
+
+impl ValueEnum for DampingArg {
+    fn value_variants<'a>() -> &'a [Self] {
+        static ALL: OnceLock<Vec<DampingArg>> = OnceLock::new();
+        ALL.get_or_init(|| {
+            std::iter::once(DampingModel::Faired)
+                .chain(Theory::ALL.map(DampingModel::Theory))
+                .map(DampingArg)
+                .collect()
+        })
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        let help = match self.0 {
+            DampingModel::Faired => {
+                "the default: slender-wing theory (37) through M = 1, blended into (36) by M = 1.2"
+                    .to_string()
+            }
+            DampingModel::Theory(t) => {
+                let eqs = if t.equations().contains('–') {
+                    "eqs"
+                } else {
+                    "eq"
+                };
+                format!("{}: {eqs} {}", theory_meaning(t), t.equations())
+            }
+        };
+        Some(PossibleValue::new(self.0.name()).help(help))
+    }
+}
+
+/// The notation only AVL's output is read in (`st_file`), never written.
+pub const AVL: &str = "avl";
+
+/// A notation a derivative file may be written in: one of the library's
+/// tables, or AVL's `.st` output.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum NotationArg {
+    Table(Notation),
+    Avl,
+}
+
+impl NotationArg {
+    pub fn name(self) -> &'static str {
+        match self {
+            NotationArg::Table(n) => n.name(),
+            NotationArg::Avl => AVL,
+        }
+    }
+}
+
+impl ValueEnum for NotationArg {
+    fn value_variants<'a>() -> &'a [Self] {
+        static ALL: OnceLock<Vec<NotationArg>> = OnceLock::new();
+        ALL.get_or_init(|| {
+            Notation::all()
+                .map(NotationArg::Table)
+                .chain([NotationArg::Avl])
+                .collect()
+        })
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        let help = match self {
+            NotationArg::Table(n) => n.title(),
+            NotationArg::Avl => {
+                "AVL's ST output, read only: st_file = \"case.st\", [dimensional] mass, I_y, rho, V"
+            }
+        };
+        Some(PossibleValue::new(self.name()).help(help))
+    }
+}
+
+/// A notation that can be written: one of the library's tables.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TargetNotation(pub Notation);
+
+impl ValueEnum for TargetNotation {
+    fn value_variants<'a>() -> &'a [Self] {
+        static ALL: OnceLock<Vec<TargetNotation>> = OnceLock::new();
+        ALL.get_or_init(|| Notation::all().map(TargetNotation).collect())
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(PossibleValue::new(self.0.name()).help(self.0.title()))
+    }
+}
+
+/// What disturbs the aircraft in `response`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ResponseInput {
+    /// An elevon applied instantaneously: a step of the moment m₀ (--m0), from rest
+    Step,
+    /// No input: the motion from an initial disturbance ŵ(0) = --w0
+    Initial,
+}
+
+/// A finite number (a command-line value).
+pub fn finite(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(x) if x.is_finite() => Ok(x),
+        Ok(x) => Err(format!("{x} is not a finite number")),
+        Err(_) => Err(format!("`{}` is not a number", crate::diag::quote(s))),
+    }
+}
+
+/// A positive finite number (a command-line value).
+pub fn positive(s: &str) -> Result<f64, String> {
+    let x = finite(s)?;
+    if x > 0.0 {
+        Ok(x)
+    } else {
+        Err(format!("{} is not positive", crate::diag::num(x)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_theory_of_the_library_is_a_choice() {
+        let names: Vec<String> = DampingArg::value_variants()
+            .iter()
+            .filter_map(|v| v.to_possible_value())
+            .map(|p| p.get_name().to_string())
+            .collect();
+        assert_eq!(names.len(), Theory::ALL.len() + 1);
+        for t in Theory::ALL {
+            assert!(names.contains(&t.name().to_string()));
+            let parsed = DampingArg::from_str(t.name(), false).unwrap();
+            assert_eq!(parsed.0, DampingModel::parse(t.name()).unwrap());
+        }
+        assert_eq!(
+            DampingArg::from_str("faired", false).unwrap().0,
+            DampingModel::Faired
+        );
+    }
+
+    #[test]
+    fn every_notation_is_readable_and_all_but_avl_writable() {
+        for n in Notation::all() {
+            assert_eq!(
+                NotationArg::from_str(n.name(), false).unwrap(),
+                NotationArg::Table(n)
+            );
+            assert_eq!(TargetNotation::from_str(n.name(), false).unwrap().0, n);
+        }
+        assert_eq!(
+            NotationArg::from_str("avl", false).unwrap(),
+            NotationArg::Avl
+        );
+        assert!(TargetNotation::from_str("avl", false).is_err());
+    }
+
+    #[test]
+    fn values_are_finite() {
+        assert!(finite("NaN").is_err() && finite("inf").is_err() && finite("x").is_err());
+        assert_eq!(finite(" 2.5 "), Ok(2.5));
+        assert!(positive("0").is_err() && positive("-1").is_err());
+        assert!(positive("1e308").is_ok());
+    }
+}

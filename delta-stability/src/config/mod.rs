@@ -1,0 +1,309 @@
+//! Design-point configs for `analyze`, `sweep` and `report`: a planform, a
+//! flight condition and the model choices, as TOML.
+//!
+//! ```toml
+//! [planform]
+//! sweep = 45.0          # leading-edge sweep Λ, degrees (0 < Λ < 90)
+//! taper = 0.0           # c_t/c₀; 0 = a true delta
+//! root_chord = 10.0     # one size: root_chord, span or area (any one unit)
+//!
+//! [flight]
+//! mach = 0.9
+//! cg = 0.25             # h: c.g. aft of the M.A.C.'s leading edge, fraction of the M.A.C.
+//! mu1 = 50.0            # relative density m/(½ρSc̄)
+//! i_b = 0.08            # pitching inertia B/(mc̄²)
+//! cl_m2 = 0.05          # C_L·M² = W/(½ρa²S), constant in level flight (eq 24)
+//!
+//! [model]               # optional
+//! damping = "faired"    # or garrick, garner-taper, slender, supersonic, transonic, transonic-frequency
+//! omega_bar = 0.3       # starting ω̄ for transonic-frequency (default: √(−m_w/(μ₁i_B)))
+//! iterate_frequency = true
+//! [model.tables]        # optional: the user's curves instead of the defaults
+//! lift_slope = { mach = [0.5, 0.9, 1.2], value = [3.1, 3.6, 3.4] }
+//! zero_lift_drag = { file = "cd0.csv" }   # two columns, Mach and value (a header line optional)
+//! # drag_due_to_lift, aerodynamic_centre likewise
+//! ```
+//!
+//! Each value must lie in its range ([`limits`]); every error names the
+//! file, line and field.
+
+pub mod limits;
+pub mod raw;
+pub mod tables;
+
+use crate::Failure;
+use crate::diag::{InputError, quote};
+use crate::input::toml_error;
+use raw::{RawConfig, RawModel, RawPlanform};
+use stability_core::aero::{AeroError, AeroModel, Source};
+use stability_core::case::{Case, CaseError, DampingModel};
+use stability_core::damping::DampingError;
+use stability_core::geometry::{GeometryError, Planform, Size};
+use std::ops::Range;
+use std::path::Path;
+use toml::Spanned;
+
+pub use tables::read_csv_table;
+
+/// A config, read and checked.
+#[derive(Debug, Clone)]
+pub struct Config {
+    pub path: String,
+    pub case: Case,
+    text: String,
+    /// Where each value (and table) was written: field and span.
+    spans: Vec<(String, Range<usize>)>,
+    /// Values replaced from the command line: field and flag (`--mach 1.2`).
+    overridden: Vec<(&'static str, String)>,
+}
+
+/// Read a config file (a regular file of at most
+/// [`crate::files::MAX_INPUT_BYTES`]).
+pub fn read(path: &str) -> Result<Config, Failure> {
+    let text = crate::files::read_input(Path::new(path))?;
+    parse(path, &text)
+}
+
+/// The spans of a config's values, collected as they are read.
+struct Reader<'a> {
+    path: &'a str,
+    text: &'a str,
+    spans: Vec<(String, Range<usize>)>,
+}
+
+impl Reader<'_> {
+    fn err(&self, span: Range<usize>, field: &str, m: String) -> InputError {
+        InputError::at(self.path, self.text, span, field, m)
+    }
+
+    /// `v` within `limit`, its span recorded under `field`.
+    fn value(
+        &mut self,
+        v: &Spanned<f64>,
+        field: &str,
+        limit: &limits::Limit,
+    ) -> Result<f64, InputError> {
+        self.spans.push((field.to_string(), v.span()));
+        limit
+            .check(*v.get_ref())
+            .map_err(|m| self.err(v.span(), field, m))
+    }
+}
+
+/// Parse a config's text (a CSV table it names is read from disk,
+/// relative to `path`).
+pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
+    let raw: RawConfig = toml::from_str(text).map_err(|e| toml_error(path, text, &e))?;
+    let mut r = Reader {
+        path,
+        text,
+        spans: vec![
+            ("[planform]".into(), raw.planform.span()),
+            ("[flight]".into(), raw.flight.span()),
+        ],
+    };
+    let planform = planform(&mut r, &raw.planform)?;
+    let f = raw.flight.get_ref();
+    let mach = r.value(&f.mach, "[flight] mach", &limits::MACH)?;
+    let h = r.value(&f.cg, "[flight] cg", &limits::CG)?;
+    let mu1 = r.value(&f.mu1, "[flight] mu1", &limits::MU1)?;
+    let i_b = r.value(&f.i_b, "[flight] i_b", &limits::I_B)?;
+    let cl_m2 = r.value(&f.cl_m2, "[flight] cl_m2", &limits::CL_M2)?;
+    let mut case = Case {
+        planform,
+        mach,
+        h,
+        mu1,
+        i_b,
+        cl_m2,
+        aero: AeroModel::default(),
+        damping: DampingModel::Faired,
+        omega_bar: None,
+        iterate_frequency: true,
+    };
+    if let Some(m) = &raw.model {
+        r.spans.push(("[model]".into(), m.span()));
+        model(&mut r, m.get_ref(), &mut case)?;
+    }
+    Ok(Config {
+        path: path.to_string(),
+        case,
+        text: text.to_string(),
+        spans: r.spans,
+        overridden: Vec::new(),
+    })
+}
+
+/// The one size given (root chord, span or area), its field and value.
+fn size<'p>(
+    r: &mut Reader<'_>,
+    p: &'p RawPlanform,
+    whole: Range<usize>,
+) -> Result<(Size, String, &'p Spanned<f64>), InputError> {
+    let sizes: Vec<(&str, &Spanned<f64>)> = [
+        ("root_chord", &p.root_chord),
+        ("span", &p.span),
+        ("area", &p.area),
+    ]
+    .into_iter()
+    .filter_map(|(n, v)| v.as_ref().map(|v| (n, v)))
+    .collect();
+    let (name, v) = match sizes.as_slice() {
+        [one] => *one,
+        [] => {
+            let m = "give one size: root_chord, span or area";
+            return Err(r.err(whole, "[planform]", m.into()));
+        }
+        [_, second, ..] => {
+            let field = format!("[planform] {}", second.0);
+            let m = "give only one size: root_chord, span or area";
+            return Err(r.err(second.1.span(), &field, m.into()));
+        }
+    };
+    let field = format!("[planform] {name}");
+    let x = r.value(v, &field, &limits::SIZE)?;
+    let size = match name {
+        "root_chord" => Size::RootChord(x),
+        "span" => Size::Span(x),
+        _ => Size::Area(x),
+    };
+    Ok((size, field, v))
+}
+
+fn planform(r: &mut Reader<'_>, p: &Spanned<RawPlanform>) -> Result<Planform, InputError> {
+    let whole = p.span();
+    let p = p.get_ref();
+    let any = limits::Limit {
+        what: "the value",
+        lo: f64::MIN,
+        hi: f64::MAX,
+        lo_included: true,
+    };
+    let sweep = r.value(&p.sweep, "[planform] sweep", &any)?;
+    let taper = match &p.taper {
+        Some(t) => r.value(t, "[planform] taper", &any)?,
+        None => 0.0,
+    };
+    let (size, size_field, size_v) = size(r, p, whole.clone())?;
+    let planform = Planform::new(sweep.to_radians(), taper, size).map_err(|e| {
+        let (span, field) = match e {
+            GeometryError::Sweep(_) => (p.sweep.span(), "[planform] sweep".to_string()),
+            GeometryError::Taper(_) => (
+                p.taper.as_ref().map_or(whole, |t| t.span()),
+                "[planform] taper".to_string(),
+            ),
+            GeometryError::Size(..) => (size_v.span(), size_field),
+        };
+        r.err(span, &field, e.to_string())
+    })?;
+    // a sweep a hair above 0° is valid, but its span is not finite
+    let derived = [
+        planform.span(),
+        planform.area(),
+        planform.mac(),
+        planform.aspect_ratio(),
+    ];
+    if !derived.iter().all(|v| v.is_finite() && *v > 0.0) {
+        return Err(r.err(
+            p.sweep.span(),
+            "[planform] sweep",
+            format!(
+                "at a sweep of {}° the planform's span, area or aspect ratio is not a finite positive number",
+                crate::diag::num(sweep)
+            ),
+        ));
+    }
+    Ok(planform)
+}
+
+fn model(r: &mut Reader<'_>, m: &RawModel, case: &mut Case) -> Result<(), Failure> {
+    if let Some(d) = &m.damping {
+        r.spans.push(("[model] damping".into(), d.span()));
+        case.damping = DampingModel::parse(d.get_ref()).map_err(|_| {
+            let names: Vec<&str> = <crate::args::DampingArg as clap::ValueEnum>::value_variants()
+                .iter()
+                .map(|v| v.0.name())
+                .collect();
+            r.err(
+                d.span(),
+                "[model] damping",
+                format!(
+                    "unknown damping model `{}`{}; the models are: {}",
+                    quote(d.get_ref()),
+                    crate::input::suggest::did_you_mean(d.get_ref(), names.iter().copied()),
+                    names.join(", ")
+                ),
+            )
+        })?;
+    }
+    if let Some(w) = &m.omega_bar {
+        case.omega_bar = Some(r.value(w, "[model] omega_bar", &limits::OMEGA_BAR)?);
+    }
+    if let Some(it) = m.iterate_frequency {
+        case.iterate_frequency = it;
+    }
+    if let Some(t) = &m.tables {
+        r.spans.push(("[model.tables]".into(), t.span()));
+        let t = t.get_ref();
+        let get = |name: &str, t: &Option<Spanned<raw::RawTable>>| -> Result<Source, Failure> {
+            match t {
+                Some(t) => Ok(Source::Table(tables::table_from(r.path, r.text, name, t)?)),
+                None => Ok(Source::Default),
+            }
+        };
+        case.aero = AeroModel {
+            lift_slope: get("lift_slope", &t.lift_slope)?,
+            zero_lift_drag: get("zero_lift_drag", &t.zero_lift_drag)?,
+            drag_due_to_lift: get("drag_due_to_lift", &t.drag_due_to_lift)?,
+            aerodynamic_centre: get("aerodynamic_centre", &t.aerodynamic_centre)?,
+        };
+    }
+    Ok(())
+}
+
+impl Config {
+    /// Records that the command line replaced `field` (`--mach 1.2`).
+    pub fn overridden_by(&mut self, field: &'static str, flag: String) {
+        self.overridden.push((field, flag));
+    }
+
+    /// An error about `field` (`[flight] mach`, or a table `[flight]`): at
+    /// its line, or naming the flag that replaced it.
+    pub fn error_at(&self, field: &str, message: impl Into<String>) -> InputError {
+        let message = message.into();
+        if let Some((_, flag)) = self.overridden.iter().find(|(f, _)| *f == field) {
+            return InputError::file(&self.path, format!("{flag}: {message}"));
+        }
+        let table = field.split(' ').next().unwrap_or(field);
+        let found = self
+            .spans
+            .iter()
+            .find(|(f, _)| f == field)
+            .or_else(|| self.spans.iter().find(|(f, _)| f == table));
+        match found {
+            Some((f, span)) => {
+                InputError::at(&self.path, &self.text, span.clone(), f.clone(), message)
+            }
+            None => InputError {
+                field: field.to_string(),
+                ..InputError::file(&self.path, message)
+            },
+        }
+    }
+
+    /// The design point's failure, at the field it arises from.
+    pub fn explain(&self, e: &CaseError) -> InputError {
+        let field = match e {
+            CaseError::Aero(AeroError::OutsideTable { .. } | AeroError::OutsideDefaults(_)) => {
+                "[flight] mach"
+            }
+            CaseError::Aero(_) => "[model.tables]",
+            CaseError::Damping(DampingError::Taper { .. }) => "[planform] taper",
+            CaseError::Damping(DampingError::Sweep { .. }) => "[planform] sweep",
+            CaseError::Damping(DampingError::NonFinite { .. }) => "[flight] cg",
+            CaseError::Damping(_) => "[model] damping",
+            _ => "[flight]",
+        };
+        self.error_at(field, e.to_string())
+    }
+}

@@ -1,0 +1,60 @@
+//! A config as TOML gives it: spanned values, before any checks.
+
+use serde::Deserialize;
+use toml::Spanned;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawConfig {
+    pub planform: Spanned<RawPlanform>,
+    pub flight: Spanned<RawFlight>,
+    #[serde(default)]
+    pub model: Option<Spanned<RawModel>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawPlanform {
+    pub sweep: Spanned<f64>,
+    #[serde(default)]
+    pub taper: Option<Spanned<f64>>,
+    pub root_chord: Option<Spanned<f64>>,
+    pub span: Option<Spanned<f64>>,
+    pub area: Option<Spanned<f64>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawFlight {
+    pub mach: Spanned<f64>,
+    pub cg: Spanned<f64>,
+    pub mu1: Spanned<f64>,
+    pub i_b: Spanned<f64>,
+    pub cl_m2: Spanned<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawModel {
+    pub damping: Option<Spanned<String>>,
+    pub omega_bar: Option<Spanned<f64>>,
+    pub iterate_frequency: Option<bool>,
+    pub tables: Option<Spanned<RawTables>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawTables {
+    pub lift_slope: Option<Spanned<RawTable>>,
+    pub zero_lift_drag: Option<Spanned<RawTable>>,
+    pub drag_due_to_lift: Option<Spanned<RawTable>>,
+    pub aerodynamic_centre: Option<Spanned<RawTable>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawTable {
+    pub mach: Option<Vec<f64>>,
+    pub value: Option<Vec<f64>>,
+    pub file: Option<Spanned<String>>,
+}

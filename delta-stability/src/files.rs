@@ -1,0 +1,171 @@
+//! Reading input files: only regular files (not a FIFO, a device or a
+//! directory, which could block forever or never end), of at most
+//! [`MAX_INPUT_BYTES`], as UTF-8 text; and saying in words why a path
+//! could not be read or written.
+
+use crate::Failure;
+use crate::diag::{InputError, IoError};
+use std::io::Read;
+use std::path::Path;
+
+/// The largest input file the program reads (a derivative file, a config,
+/// an AVL `.st` file or a CSV table): 16 MiB.
+pub const MAX_INPUT_BYTES: u64 = 16 * 1024 * 1024;
+
+/// The same limit in words, for messages and `--help`.
+pub const MAX_INPUT_TEXT: &str = "16 MiB";
+
+/// An I/O error's reason, without the "(os error N)" suffix.
+pub fn reason(e: &std::io::Error) -> String {
+    let s = e.to_string();
+    match s.find(" (os error") {
+        Some(i) => s[..i].to_string(),
+        None => s,
+    }
+}
+
+/// What a non-regular file is, in words.
+fn kind_of(t: std::fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if t.is_fifo() {
+            return "a FIFO (named pipe)";
+        }
+        if t.is_char_device() {
+            return "a character device";
+        }
+        if t.is_block_device() {
+            return "a block device";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    if t.is_dir() {
+        "a directory"
+    } else {
+        "not a regular file"
+    }
+}
+
+fn not_regular(path: &Path, t: std::fs::FileType) -> Failure {
+    Failure::Io(IoError::new(
+        "cannot read",
+        path,
+        format!(
+            "it is {}; inputs are read only from regular files",
+            kind_of(t)
+        ),
+    ))
+}
+
+fn too_large(path: &Path, len: u64) -> Failure {
+    Failure::Input(InputError::file(
+        &path.display().to_string(),
+        format!(
+            "the file has {len} bytes; inputs are read up to {MAX_INPUT_TEXT} ({MAX_INPUT_BYTES} bytes)"
+        ),
+    ))
+}
+
+/// The text of the input file `path`: a regular file of at most
+/// [`MAX_INPUT_BYTES`], in UTF-8.
+pub fn read_input(path: &Path) -> Result<String, Failure> {
+    let io = |e: std::io::Error| Failure::Io(IoError::new("cannot read", path, reason(&e)));
+    // look before opening: opening a FIFO blocks until a writer appears
+    let meta = std::fs::metadata(path).map_err(io)?;
+    if !meta.is_file() {
+        return Err(not_regular(path, meta.file_type()));
+    }
+    if meta.len() > MAX_INPUT_BYTES {
+        return Err(too_large(path, meta.len()));
+    }
+    let file = std::fs::File::open(path).map_err(io)?;
+    let meta = file.metadata().map_err(io)?;
+    if !meta.is_file() {
+        return Err(not_regular(path, meta.file_type()));
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(too_large(path, bytes.len() as u64));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let bytes = e.as_bytes();
+        let line = bytes[..at].iter().filter(|&&b| b == b'\n').count() + 1;
+        let text = String::from_utf8_lossy(bytes);
+        Failure::Input(InputError::at_line(
+            &path.display().to_string(),
+            &text,
+            line,
+            format!("not UTF-8 text (byte {at} is not part of a UTF-8 character)"),
+        ))
+    })
+}
+
+/// Why `path` cannot be written, in words: a component of it that is a
+/// file rather than a directory, the path itself being a directory, or the
+/// system's reason.
+pub fn write_error(path: &Path, e: &std::io::Error) -> IoError {
+    let mut ancestor = path.parent();
+    while let Some(a) = ancestor {
+        if !a.as_os_str().is_empty()
+            && let Ok(m) = std::fs::metadata(a)
+        {
+            if !m.is_dir() {
+                return IoError::new(
+                    "cannot write",
+                    path,
+                    format!("`{}` is a file, not a directory", a.display()),
+                );
+            }
+            break;
+        }
+        ancestor = a.parent();
+    }
+    if std::fs::metadata(path).is_ok_and(|m| m.is_dir()) {
+        return IoError::new("cannot write", path, "it is a directory");
+    }
+    IoError::new("cannot write", path, reason(e))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_directory_is_not_an_input() {
+        let dir = tempfile::tempdir().unwrap();
+        let e = read_input(dir.path()).unwrap_err();
+        assert_eq!(e.status(), Failure::IO_STATUS);
+        assert!(e.to_string().contains("it is a directory"), "{e}");
+    }
+
+    #[test]
+    fn a_path_through_a_file_is_named() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("plain");
+        std::fs::write(&file, "x").unwrap();
+        let target = file.join("sub/out.csv");
+        let e = std::fs::create_dir_all(target.parent().unwrap()).unwrap_err();
+        let msg = write_error(&target, &e).to_string();
+        assert!(
+            msg.contains("plain` is a file, not a directory") && msg.contains("out.csv"),
+            "{msg}"
+        );
+    }
+
+    #[test]
+    fn text_that_is_not_utf8_is_located() {
+        let dir = tempfile::tempdir().unwrap();
+        let p = dir.path().join("bad.toml");
+        std::fs::write(&p, b"a = 1\nb = \"\xff\"\n").unwrap();
+        let e = read_input(&p).unwrap_err();
+        assert_eq!(e.status(), Failure::INPUT_STATUS);
+        assert!(e.to_string().contains("bad.toml:2:1: not UTF-8"), "{e}");
+    }
+}

@@ -1,0 +1,111 @@
+//! `index.html`: the study's page — its assumptions, the note's
+//! conclusions beside ours (generated from the computed results), and the
+//! figures. Every link is relative to the page: the documents it cites are
+//! written beside it ([`DOCS`]), so the page works wherever `--out` puts
+//! it.
+
+use super::Plate;
+use super::conclusions::{Agreement, Assessment, Conclusion};
+use crate::fmt::sig;
+use stability_core::study::report_wing;
+use std::fmt::Write;
+
+/// The documents the page links to, written into the report's `docs/`.
+pub const DOCS: [(&str, &str); 3] = [
+    ("docs/models.md", include_str!("../../../docs/models.md")),
+    (
+        "docs/damping-theories.md",
+        include_str!("../../../docs/damping-theories.md"),
+    ),
+    ("docs/errata.md", include_str!("../../../docs/errata.md")),
+];
+
+fn esc(t: &str) -> String {
+    t.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+const HEAD: &str = "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>delta-stability: McCarter (1953) reproduced</title>\n<style>body{font-family:sans-serif;max-width:60em;margin:2em auto;line-height:1.45}figure{margin:2em 0}img{max-width:100%;border:1px solid #ddd}td,th{padding:.2em .6em;border-bottom:1px solid #eee;text-align:left;vertical-align:top}.agrees{color:#060}.partly{color:#850}.differs{color:#a00}</style></head><body>\n<h1>Longitudinal stability of delta wings — McCarter (1953), recomputed</h1>";
+
+/// The built-in cases and what we assume, from the cases themselves.
+fn introduction() -> String {
+    let (w45, w60) = (report_wing(45.0, 1.0), report_wing(60.0, 1.0));
+    format!(
+        "<p>W.B. McCarter's note studies tailless true deltas of 45° and 60° leading-edge sweep (aspect ratios {} and {}), 6&nbsp;% thick, c.g. at h&nbsp;=&nbsp;{}, relative density μ₁&nbsp;=&nbsp;{}, against a standard: the short period must damp to half amplitude within one cycle (§8). His aerodynamic curves (Figs 1–6, 19–24) were faired through data we do not have; here every coefficient comes from a named method (<a href=\"docs/models.md\">docs/models.md</a>), the damping derivatives from his own theories (<a href=\"docs/damping-theories.md\">docs/damping-theories.md</a>) faired through Mach number, the quartic from his eq (4) with the three misprints of eq (6) corrected (<a href=\"docs/errata.md\">docs/errata.md</a>), and the roots exactly. The pitching inertia i_B&nbsp;=&nbsp;{} and the level-flight C_L·M²&nbsp;=&nbsp;{}, which the note does not state, are our assumptions. Numbers: <a href=\"summary.json\">summary.json</a>.</p>",
+        sig(w45.planform.aspect_ratio(), 3),
+        sig(w60.planform.aspect_ratio(), 3),
+        w45.h,
+        w45.mu1,
+        w45.i_b,
+        w45.cl_m2,
+    )
+}
+
+fn class(a: Agreement) -> &'static str {
+    match a {
+        Agreement::Agrees => "agrees",
+        Agreement::Partly => "partly",
+        Agreement::Differs => "differs",
+    }
+}
+
+/// The note's conclusions beside ours, and where they part, why.
+fn conclusions(assessed: &[(&Conclusion, Assessment)]) -> String {
+    let mut s = String::from(
+        "<h2>His conclusions and ours</h2><table><tr><th>subject</th><th>the note</th><th>our models</th><th></th></tr>\n",
+    );
+    for (c, a) in assessed {
+        let _ = writeln!(
+            s,
+            "<tr><td>{}</td><td>{} ({})</td><td>{}</td><td class=\"{}\">{}</td></tr>",
+            esc(c.subject),
+            esc(c.claim),
+            esc(c.source),
+            esc(&a.computed),
+            class(a.agreement),
+            a.agreement.as_str()
+        );
+    }
+    s.push_str("</table>\n");
+    let parting: Vec<String> = assessed
+        .iter()
+        .filter(|(c, a)| a.agreement != Agreement::Agrees && !c.when_they_part.is_empty())
+        .map(|(c, _)| {
+            format!(
+                "<li>{} ({}): {}</li>",
+                esc(c.subject),
+                esc(c.source),
+                esc(c.when_they_part)
+            )
+        })
+        .collect();
+    if !parting.is_empty() {
+        let _ = writeln!(s, "<p>Where they part:</p><ul>{}</ul>", parting.join(""));
+    }
+    s
+}
+
+fn figure(p: &Plate) -> String {
+    let name = p.name();
+    format!(
+        "<figure id=\"{name}\"><img src=\"{name}.svg\" alt=\"Fig. {id}\"><figcaption><b>Fig. {id}</b> — {title}. {caption} <a href=\"{name}.csv\">data (CSV)</a></figcaption></figure>",
+        id = p.figure.id,
+        title = esc(&p.figure.title),
+        caption = esc(&p.caption)
+    )
+}
+
+pub fn index_html(plates: &[Plate], assessed: &[(&Conclusion, Assessment)]) -> String {
+    let mut s = String::from(HEAD);
+    s.push('\n');
+    s.push_str(&introduction());
+    s.push('\n');
+    s.push_str(&conclusions(assessed));
+    for p in plates {
+        s.push_str(&figure(p));
+        s.push('\n');
+    }
+    s.push_str("</body></html>\n");
+    s
+}

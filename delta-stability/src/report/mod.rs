@@ -1,0 +1,99 @@
+//! The note's whole study on its built-in cases (`delta-stability report`):
+//! the figures it draws, grouped as the note groups them — §6 coefficients
+//! and stiffness ([`coefficients`], Figs 2–12), §7 damping ([`damping`],
+//! 13–24), §8 the standard ([`standard`], 25–26), §9 the quartic and
+//! margins ([`quartic`], 27–35), §10 taper ([`taper`], 36), §11 responses
+//! ([`responses`], 37–38) — then the [`summary`] of what was found, the
+//! note's [`conclusions`] set beside it, and the page ([`html`]).
+//!
+//! Everything here computes; writing the files is `cmd::report`'s.
+
+pub mod coefficients;
+pub mod conclusions;
+pub mod damping;
+pub mod html;
+pub mod quartic;
+pub mod responses;
+pub mod standard;
+pub mod study;
+pub mod summary;
+pub mod taper;
+
+use crate::plot::Figure;
+pub use study::Study;
+
+/// One figure of the note, with its caption for the page.
+pub struct Plate {
+    pub figure: Figure,
+    pub caption: String,
+}
+
+impl Plate {
+    pub fn new(figure: Figure, caption: impl Into<String>) -> Plate {
+        Plate {
+            figure,
+            caption: caption.into(),
+        }
+    }
+
+    /// The file name without extension: `fig02`, `fig33`.
+    pub fn name(&self) -> String {
+        format!("fig{:0>2}", self.figure.id)
+    }
+
+    /// The figure's two files, `figNN.svg` and `figNN.csv`.
+    pub fn files(&self) -> Result<[(String, Vec<u8>); 2], String> {
+        let name = self.name();
+        Ok([
+            (format!("{name}.svg"), self.figure.to_svg()?.into_bytes()),
+            (format!("{name}.csv"), self.figure.to_csv().into_bytes()),
+        ])
+    }
+}
+
+/// A section of the note: its figures, computed from the study.
+pub struct Section {
+    /// What the progress bar shows while it is computed.
+    pub title: &'static str,
+    pub plates: fn(&Study) -> Vec<Plate>,
+}
+
+/// The note's sections with figures, in its order.
+pub const SECTIONS: [Section; 6] = [
+    Section {
+        title: "§6: aerodynamic coefficients and stiffness derivatives (Figs 2–12)",
+        plates: coefficients::plates,
+    },
+    Section {
+        title: "§7: damping theories and derivatives (Figs 13–24)",
+        plates: damping::plates,
+    },
+    Section {
+        title: "§8: the damping standard (Figs 25–26)",
+        plates: standard::plates,
+    },
+    Section {
+        title: "§9: the quartic, its modes and the margins (Figs 27–35)",
+        plates: quartic::plates,
+    },
+    Section {
+        title: "§10: taper (Fig 36)",
+        plates: taper::plates,
+    },
+    Section {
+        title: "§11: responses (Figs 37–38)",
+        plates: responses::plates,
+    },
+];
+
+/// The files README.md shows, as the report draws them, by their path in
+/// the repository: `docs/figures/fig33.svg` and `docs/figures/fig33.csv`
+/// (Fig. 33, cycles to half amplitude). `cargo xtask regen` writes them.
+pub fn readme_figures() -> Result<Vec<(String, String)>, String> {
+    let study = Study::new();
+    let plate = quartic::fig33(&study);
+    Ok(vec![
+        ("docs/figures/fig33.svg".to_string(), plate.figure.to_svg()?),
+        ("docs/figures/fig33.csv".to_string(), plate.figure.to_csv()),
+    ])
+}

@@ -1,0 +1,98 @@
+//! What every test of the program as a user runs it shares: the binary, the
+//! repository root, running a command and checking its exit status.
+#![allow(dead_code)] // each test binary uses its own part of this module
+
+use std::ffi::OsStr;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// The program, run from the repository root (so that `examples/…` paths
+/// resolve). `DELTA_STABILITY_BIN` runs another build of it instead (to see
+/// a regression test fail on the program before its fix).
+pub fn bin() -> Command {
+    let exe = std::env::var_os("DELTA_STABILITY_BIN").map_or_else(
+        || env!("CARGO_BIN_EXE_delta-stability").into(),
+        PathBuf::from,
+    );
+    let mut c = Command::new(exe);
+    c.current_dir(root());
+    c
+}
+
+/// The repository root.
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// The program's standard error, as text.
+pub fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+/// The program's standard output, as text.
+pub fn stdout(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// Runs the program with `args`, which must succeed.
+pub fn run_ok<S: AsRef<OsStr>>(args: &[S]) -> Output {
+    let out = bin().args(args).output().expect("the program runs");
+    assert!(
+        out.status.success(),
+        "{:?} failed ({:?}):\n{}",
+        args.iter().map(|a| a.as_ref()).collect::<Vec<_>>(),
+        out.status,
+        stderr(&out)
+    );
+    out
+}
+
+/// Runs the program with `args`, which must fail with exit status `code`
+/// (2: bad input, 3: a file could not be read or written), without a panic
+/// and with a message on standard error.
+pub fn run_err<S: AsRef<OsStr>>(args: &[S], code: i32) -> Output {
+    let out = bin().args(args).output().expect("the program runs");
+    let err = stderr(&out);
+    assert_eq!(
+        out.status.code(),
+        Some(code),
+        "{:?}: expected exit status {code}:\n{err}",
+        args.iter().map(|a| a.as_ref()).collect::<Vec<_>>()
+    );
+    assert!(!err.contains("panicked"), "{err}");
+    assert!(!err.trim().is_empty(), "no message on standard error");
+    out
+}
+
+/// The JSON object a command printed.
+pub fn json(out: &Output) -> serde_json::Value {
+    serde_json::from_slice(&out.stdout).expect("one JSON object")
+}
+
+/// An example file's text.
+pub fn example(name: &str) -> String {
+    std::fs::read_to_string(root().join("examples").join(name)).expect("example")
+}
+
+/// A temporary directory for a test's files.
+pub struct Scratch(pub tempfile::TempDir);
+
+impl Scratch {
+    pub fn new() -> Scratch {
+        Scratch(tempfile::tempdir().expect("temp dir"))
+    }
+    pub fn path(&self) -> &Path {
+        self.0.path()
+    }
+    /// Writes `contents` to `name` in the directory and returns its path.
+    pub fn write(&self, name: &str, contents: impl AsRef<[u8]>) -> PathBuf {
+        let p = self.0.path().join(name);
+        std::fs::write(&p, contents).expect("write");
+        p
+    }
+}
+
+/// A path as a command-line argument (the tests' paths are UTF-8).
+pub fn path(p: &Path) -> &str {
+    p.to_str().expect("a UTF-8 path")
+}

@@ -1,0 +1,530 @@
+//! The failures fuzzing found in the program (issue 10), each as a user
+//! meets it: every one failed on the program before its fix (run with
+//! `DELTA_STABILITY_BIN=path/to/old/delta-stability` to see it fail there).
+
+mod common;
+
+use common::{Scratch, bin, example, json, path, run_err, run_ok, stderr, stdout};
+use std::time::{Duration, Instant};
+
+/// Exit status for bad input and for a file that cannot be read or written.
+const INPUT: i32 = 2;
+const IO: i32 = 3;
+
+/// No message quotes more than this much of what it is about.
+const SHORT: usize = 2_000;
+
+fn assert_short(err: &str) {
+    assert!(
+        err.len() < SHORT,
+        "{} bytes of message:\n{}",
+        err.len(),
+        &err[..SHORT.min(err.len())]
+    );
+    let longest_digits = err
+        .split(|c: char| !c.is_ascii_digit())
+        .map(str::len)
+        .max()
+        .unwrap_or(0);
+    assert!(
+        longest_digits < 20,
+        "a {longest_digits}-digit number in:\n{err}"
+    );
+}
+
+/// The 45° example with `z_w`'s value at column 70,007 of its line, and
+/// the value not a finite number.
+fn error_past_column_65535() -> String {
+    example("tailless-delta-45.toml")
+        .replace("z_w = -3.2", &format!("{}z_w = nan", " ".repeat(70_000)))
+}
+
+#[test]
+fn an_error_past_column_65535_is_reported_not_a_panic() {
+    let dir = Scratch::new();
+    let f = dir.write("wide.toml", error_past_column_65535());
+    let cfg = dir.write(
+        "wide-config.toml",
+        example("delta-45.toml").replace("mu1 = 50.0", &format!("{}mu1 = inf", " ".repeat(70_000))),
+    );
+    let (f, cfg) = (path(&f), path(&cfg));
+    let out_csv = dir.path().join("o.csv");
+    for args in [
+        vec!["quartic", f],
+        vec!["response", f, "--until", "1"],
+        vec!["convert", "--from", "report", "--to", "garner", f],
+        vec!["analyze", cfg],
+        vec!["sweep", cfg, "--mach", "1", "-o", path(&out_csv)],
+    ] {
+        let err = stderr(&run_err(&args, INPUT));
+        assert!(
+            err.contains(":13:70007: [derivatives] z_w") || err.contains(":17:70007: [flight] mu1"),
+            "{args:?}:\n{err}"
+        );
+        assert_short(&err);
+    }
+}
+
+/// Runs the program on `args`; it must end within 20 s (a FIFO read blocks
+/// forever, /dev/zero never ends).
+fn run_with_deadline(args: &[&str]) -> std::process::Output {
+    let mut child = bin()
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run");
+    let start = Instant::now();
+    while child.try_wait().expect("wait").is_none() {
+        if start.elapsed() > Duration::from_secs(20) {
+            child.kill().ok();
+            panic!("{args:?} did not finish in 20 s");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().expect("output")
+}
+
+#[cfg(unix)]
+#[test]
+fn a_fifo_or_a_device_is_refused_not_read() {
+    let dir = Scratch::new();
+    let fifo = dir.path().join("pipe.toml");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .expect("mkfifo");
+    assert!(made.success());
+    let cfg = dir.write(
+        "c.toml",
+        example("delta-45.toml").replace(
+            "damping = \"faired\"",
+            "damping = \"faired\"\n[model.tables]\nzero_lift_drag = { file = \"pipe.toml\" }",
+        ),
+    );
+    for (args, what) in [
+        (vec!["quartic", path(&fifo)], "FIFO"),
+        (vec!["quartic", "/dev/zero"], "character device"),
+        (vec!["analyze", path(&cfg)], "FIFO"),
+    ] {
+        let out = run_with_deadline(&args);
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(IO), "{args:?}: {err}");
+        assert!(
+            err.contains(what) && err.contains("regular file"),
+            "{args:?}: {err}"
+        );
+    }
+    // the table's error is located where the config names it
+    let err = stderr(&run_with_deadline(&["analyze", path(&cfg)]));
+    assert!(
+        err.contains("c.toml:") && err.contains("[model.tables] zero_lift_drag"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_input_larger_than_the_limit_is_refused() {
+    let dir = Scratch::new();
+    let big = dir.write("big.toml", " ".repeat(17 << 20));
+    let err = stderr(&run_err(&["quartic", path(&big)], INPUT));
+    assert!(err.contains("16 MiB"), "{err}");
+}
+
+#[test]
+fn response_rejects_values_that_are_not_finite() {
+    for (flag, value) in [
+        ("--m0", "NaN"),
+        ("--w0", "inf"),
+        ("--until", "-1"),
+        ("--until", "nan"),
+    ] {
+        let args = [
+            "response",
+            "examples/tailless-delta-45.toml",
+            "--until",
+            "2",
+            flag,
+            value,
+        ];
+        let err = stderr(&run_err(&args, INPUT));
+        assert!(err.contains(flag), "{flag} {value}: {err}");
+    }
+}
+
+#[test]
+fn a_response_that_cannot_reach_until_is_an_error_that_says_why() {
+    let dir = Scratch::new();
+    let csv = dir.path().join("r.csv");
+    // a step far too long for the matrix exponential: refused, with advice
+    let args = [
+        "response",
+        "examples/tailless-delta-45.toml",
+        "--until",
+        "1e308",
+        "--csv",
+        path(&csv),
+    ];
+    let err = stderr(&run_err(&args, INPUT));
+    assert!(
+        err.contains("--until 1e308") && err.contains("too long"),
+        "{err}"
+    );
+    assert_short(&err);
+    assert!(!csv.exists(), "a one-sample file was written");
+    // a divergent motion that overflows f64 before --until: where it stopped
+    let divergent = dir.write(
+        "div.toml",
+        example("tailless-delta-45.toml").replace("m_w = -0.55", "m_w = 5.0"),
+    );
+    let args = [
+        "response",
+        path(&divergent),
+        "--until",
+        "1000",
+        "--steps",
+        "100000",
+        "--csv",
+        path(&csv),
+    ];
+    let err = stderr(&run_err(&args, INPUT));
+    assert!(
+        err.contains("stops at t̂ = ") && err.contains("diverged"),
+        "{err}"
+    );
+    assert!(!csv.exists(), "a short file was written");
+}
+
+#[test]
+fn convert_never_writes_a_value_that_is_not_finite() {
+    let dir = Scratch::new();
+    let f = dir.write(
+        "big.toml",
+        example("tailless-delta-45.toml").replace("z_q = -1.5 ", "z_q = -1.5e308"),
+    );
+    for extra in [None, Some("--json")] {
+        let mut args = vec!["convert", "--from", "report", "--to", "ribner", path(&f)];
+        args.extend(extra);
+        let out = run_err(&args, INPUT);
+        let err = stderr(&out);
+        assert!(
+            err.contains(":15:7: [derivatives] z_q") && err.contains("C_Lq"),
+            "{err}"
+        );
+        assert!(stdout(&out).is_empty(), "{}", stdout(&out));
+        assert_short(&err);
+    }
+}
+
+#[test]
+fn stray_tables_beside_avl_output_are_errors() {
+    let dir = Scratch::new();
+    std::fs::copy(
+        common::root().join("examples/tailless-delta.st"),
+        dir.path().join("tailless-delta.st"),
+    )
+    .unwrap();
+    let avl = example("avl-tailless-delta.toml");
+    for (table, key) in [
+        ("report", "mu1 = 1e6"),
+        ("flight", "c_l = 0.3"),
+        ("derivatives", "m_q = -1.0"),
+        ("parameters", "lt = 3.0"),
+    ] {
+        let f = dir.write("a.toml", format!("{avl}\n[{table}]\n{key}\n"));
+        let err = stderr(&run_err(&["quartic", path(&f)], INPUT));
+        let name = key.split(' ').next().unwrap();
+        assert!(
+            err.contains(&format!("a.toml:20:1: [{table}] {name}")) && err.contains("ignored"),
+            "{err}"
+        );
+    }
+}
+
+#[test]
+fn a_csv_table_without_a_header_is_used_whole() {
+    let dir = Scratch::new();
+    let rows = "0.5,0.02\n0.7,0.03\n2.0,0.04\n";
+    dir.write("headed.csv", format!("mach,cd0\n{rows}"));
+    dir.write("bare.csv", rows);
+    let result = |table: &str| {
+        let cfg = dir.write(
+            "c.toml",
+            example("delta-45.toml").replace(
+                "damping = \"faired\"",
+                &format!("damping = \"faired\"\n[model.tables]\nzero_lift_drag = {table}"),
+            ),
+        );
+        json(&run_ok(&["analyze", path(&cfg), "--mach", "0.6", "--json"]))
+    };
+    // the same three rows inline: the independent route
+    let inline = result("{ mach = [0.5, 0.7, 2.0], value = [0.02, 0.03, 0.04] }");
+    let headed = result("{ file = \"headed.csv\" }");
+    let bare = result("{ file = \"bare.csv\" }");
+    let cd0 = |v: &serde_json::Value| {
+        v["aerodynamics"]["zero_lift_drag"]["value"]
+            .as_f64()
+            .unwrap()
+    };
+    assert!((0.02..0.03).contains(&cd0(&inline)), "{}", cd0(&inline));
+    assert_eq!(cd0(&headed), cd0(&inline));
+    assert_eq!(cd0(&bare), cd0(&inline));
+}
+
+#[test]
+fn a_huge_string_gives_a_short_message() {
+    let dir = Scratch::new();
+    let huge = "a".repeat(10 << 20);
+    let f = dir.write(
+        "s.toml",
+        example("tailless-delta-45.toml").replace("\"report\"", &format!("\"{huge}\"")),
+    );
+    let err = stderr(&run_err(&["quartic", path(&f)], INPUT));
+    assert!(
+        err.contains("s.toml:5:12: notation: unknown notation"),
+        "{}",
+        &err[..err.len().min(300)]
+    );
+    assert_short(&err);
+    // a string where a number belongs
+    let f = dir.write(
+        "n.toml",
+        example("tailless-delta-45.toml").replace("-3.2", &format!("\"{huge}\"")),
+    );
+    let err = stderr(&run_err(&["quartic", path(&f)], INPUT));
+    assert!(err.contains("n.toml:13:"), "{}", &err[..err.len().min(300)]);
+    assert_short(&err);
+}
+
+#[test]
+fn messages_name_the_line_and_field_and_print_short_numbers() {
+    let dir = Scratch::new();
+    // a c.g. at h = 1e308: the config's own line, not "a derivative is not finite"
+    let cfg = dir.write(
+        "cg-1e308.toml",
+        example("delta-45.toml").replace("cg = 0.25", "cg = 1e308"),
+    );
+    let err = stderr(&run_err(&["analyze", path(&cfg)], INPUT));
+    assert!(
+        err.contains("cg-1e308.toml:16:6: [flight] cg:") && err.contains("1e308"),
+        "{err}"
+    );
+    assert_short(&err);
+    // a value whose conversion overflows: named at the value
+    // (Garner's x_u is half the report's)
+    let garner = stdout(&run_ok(&[
+        "convert",
+        "--from",
+        "report",
+        "--to",
+        "garner",
+        "examples/tailless-delta-45.toml",
+    ]));
+    let line = garner
+        .lines()
+        .position(|l| l.starts_with("x_u = "))
+        .unwrap()
+        + 1;
+    let big = dir.write(
+        "g.toml",
+        garner
+            .lines()
+            .map(|l| {
+                if l.starts_with("x_u = ") {
+                    "x_u = -1.7e308"
+                } else {
+                    l
+                }
+            })
+            .collect::<Vec<_>>()
+            .join("\n"),
+    );
+    let err = stderr(&run_err(&["quartic", path(&big)], INPUT));
+    assert!(
+        err.contains(&format!("g.toml:{line}:7: [derivatives] x_u")) && err.contains("-inf"),
+        "{err}"
+    );
+    assert!(err.contains("overflows"), "{err}");
+    assert_short(&err);
+    // an AVL file with Sref = 0: the .st line, not an overflow
+    let st = example("tailless-delta.st");
+    let line = st.lines().position(|l| l.contains("Sref")).unwrap() + 1;
+    let sref = st.lines().nth(line - 1).unwrap();
+    let value = sref
+        .split('=')
+        .nth(1)
+        .unwrap()
+        .split_whitespace()
+        .next()
+        .unwrap();
+    let zeroed = sref.replacen(value, "0.0", 1);
+    dir.write("tailless-delta.st", st.replacen(sref, &zeroed, 1));
+    let avl = dir.write("a.toml", example("avl-tailless-delta.toml"));
+    let err = stderr(&run_err(&["quartic", path(&avl)], INPUT));
+    assert!(
+        err.contains(&format!("tailless-delta.st:{line}:"))
+            && err.contains("Sref")
+            && err.contains("positive"),
+        "{err}"
+    );
+    assert!(!err.contains("overflow"), "{err}");
+}
+
+#[test]
+fn a_misspelt_name_is_an_error_with_the_nearest_valid_one() {
+    let dir = Scratch::new();
+    let ex = example("boeing-747-american.toml");
+    let line = ex.lines().position(|l| l.starts_with("C_mq = ")).unwrap() + 1;
+    let misspelt =
+        format!(":{line}:1: [derivatives] C_mqq: unknown field `C_mqq`; did you mean `C_mq`?");
+    for (from, to, expect) in [
+        ("C_mq = -23.92", "C_mqq = -23.92", misspelt.as_str()),
+        (
+            "notation = \"american\"",
+            "notaton = \"american\"",
+            "did you mean `notation`?",
+        ),
+        (
+            "mass = 288660.55",
+            "mas = 288660.55",
+            "[dimensional] mas: unknown field `mas`",
+        ),
+        (
+            "notation = \"american\"",
+            "notation = \"amercan\"",
+            "did you mean `american`?",
+        ),
+    ] {
+        let f = dir.write("m.toml", ex.replace(from, to));
+        let err = stderr(&run_err(&["quartic", path(&f)], INPUT));
+        assert!(err.contains(expect), "{expect}\n{err}");
+    }
+    let f = dir.write("m.toml", ex.replace("mass = 288660.55", "mas = 288660.55"));
+    assert!(stderr(&run_err(&["quartic", path(&f)], INPUT)).contains("did you mean `mass`?"));
+}
+
+#[test]
+fn a_write_failure_names_the_output_not_the_config() {
+    let dir = Scratch::new();
+    let plain = dir.write("plain", "a regular file");
+    let under = plain.join("out.csv");
+    let args = [
+        "sweep",
+        "examples/delta-60.toml",
+        "--mach",
+        "1",
+        "-o",
+        path(&under),
+    ];
+    let err = stderr(&run_err(&args, IO));
+    assert!(
+        err.contains("plain/out.csv") && err.contains("is a file, not a directory"),
+        "{err}"
+    );
+    assert!(
+        !err.contains("delta-60.toml") && !err.contains("File exists"),
+        "{err}"
+    );
+    let svg = plain.join("r.svg");
+    let args = [
+        "response",
+        "examples/tailless-delta-45.toml",
+        "--until",
+        "1",
+        "--svg",
+        path(&svg),
+    ];
+    assert!(stderr(&run_err(&args, IO)).contains("is a file, not a directory"));
+    let report = plain.join("report");
+    let args = ["report", "--out", path(&report)];
+    assert!(stderr(&run_err(&args, IO)).contains("is a file, not a directory"));
+}
+
+#[test]
+fn a_missing_input_is_an_io_failure_naming_its_path() {
+    let err = stderr(&run_err(&["quartic", "no/such/file.toml"], IO));
+    assert!(
+        err.contains("`no/such/file.toml`") && err.contains("No such file"),
+        "{err}"
+    );
+}
+
+#[test]
+fn exit_statuses_and_input_limits_are_documented_in_help() {
+    let help = stdout(&run_ok(&["--help"]));
+    for text in [
+        "Exit status",
+        "2  bad input",
+        "3  a file could not be read or written",
+        "16 MiB",
+    ] {
+        assert!(help.contains(text), "{text}:\n{help}");
+    }
+}
+
+#[test]
+fn a_reader_that_stops_early_is_not_a_panic_and_a_full_disk_is_an_io_failure() {
+    use std::io::{BufRead, BufReader};
+    let mut child = bin()
+        .args([
+            "response",
+            "examples/tailless-delta-45.toml",
+            "--until",
+            "100",
+            "--steps",
+            "200000",
+        ])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run");
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    assert!(first.starts_with("t_hat"), "{first}");
+    // the pipe is closed here, with most of the output unread
+    let out = child.wait_with_output().unwrap();
+    let err = stderr(&out);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    #[cfg(target_os = "linux")]
+    {
+        let full = std::fs::File::create("/dev/full").unwrap();
+        let out = bin()
+            .args(["quartic", "examples/tailless-delta-45.toml"])
+            .stdout(full)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(IO));
+        assert!(
+            stderr(&out).contains("cannot write `standard output`"),
+            "{}",
+            stderr(&out)
+        );
+    }
+}
+
+#[test]
+fn an_analysis_that_overflows_is_an_error_at_the_value_behind_it() {
+    let dir = Scratch::new();
+    let ex = example("tailless-delta-45.toml");
+    for (from, to, at) in [
+        ("mu1 = 50.0", "mu1 = 1e300", "[flight] mu1"),
+        ("mu1 = 50.0", "mu1 = 1e-300", "[flight] mu1"),
+        ("i_b = 0.08", "i_b = 1e-300", "[flight] i_b"),
+    ] {
+        let f = dir.write("x.toml", ex.replace(from, to));
+        let out = run_err(&["quartic", path(&f), "--json"], INPUT);
+        let err = stderr(&out);
+        assert!(
+            err.contains(&format!(
+                "x.toml:{}:7: {at}",
+                if at.contains("i_b") { 24 } else { 23 }
+            )),
+            "{to}: {err}"
+        );
+        assert!(stdout(&out).is_empty(), "{to}: printed {}", stdout(&out));
+        assert_short(&err);
+    }
+}
