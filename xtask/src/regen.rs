@@ -86,7 +86,7 @@ impl Artefact {
         let preamble = match self.comment {
             Comment::Html => format!("<!-- {PREAMBLE} -->\n\n"),
             Comment::Slashes => format!("// {PREAMBLE}\n"),
-            Comment::Hash => format!("# {PREAMBLE}\n\n"),
+            Comment::Hash => format!("# {PREAMBLE}\n"),
         };
         format!("{preamble}{}", self.contents)
     }
@@ -133,20 +133,15 @@ fn artefacts(root: &Path) -> Result<Vec<Artefact>, String> {
         Comment::Html,
         docs::errata_markdown(&quartics, Some(&notation)),
     ));
-    // ---------------------------------------------------------------------
-    // PENDING (helper "cli", issue 10 item 4): the README's figure,
-    // docs/figures/fig33.svg and docs/figures/fig33.csv, is still copied by
-    // hand from `delta-stability report`'s output: the report code exposes
-    // no function giving the two files' contents. When it does, wire it here:
-    //
-    //     let (svg, csv) = delta_stability::report::readme_figure()?;
-    //     out.push(Artefact::new("docs/figures/fig33.svg", Comment::Html, svg));
-    //     out.push(Artefact::new("docs/figures/fig33.csv", Comment::Without, csv));
-    //
-    // adding `delta-stability` to xtask's dependencies, and a variant
-    // `Comment::Without` (no preamble: a CSV's readers take every line as
-    // data) to `Comment`, `Artefact::text` and the preamble test.
-    // ---------------------------------------------------------------------
+    // The README's figure: Fig 33 as the report draws it.
+    for (rel, contents) in delta_stability::report::readme_figures()? {
+        let comment = if rel.ends_with(".svg") {
+            Comment::Html
+        } else {
+            Comment::Hash
+        };
+        out.push(Artefact::new(&rel, comment, contents));
+    }
     Ok(out)
 }
 
