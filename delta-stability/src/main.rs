@@ -219,7 +219,7 @@ fn main() -> ExitCode {
             to,
             file,
             json,
-        } => cmd::convert::run(from, to.0, &file, json),
+        } => cmd::convert::run(from, to, &file, json),
         Command::Analyze {
             config,
             damping,

@@ -308,10 +308,18 @@ impl DimensionalModel {
             theta0: self.trim.theta0 - alpha,
             g: self.trim.g,
         };
+        // The q column's trim terms cancel exactly (s U₀ − c W₀ = 0,
+        // s W₀ + c U₀ = V); X_q, Z_q turn as a force, without that rounding.
+        let d = &self.derivatives;
+        let derivatives = DimensionalDerivatives {
+            x_q: c * d.x_q + s * d.z_q,
+            z_q: -s * d.x_q + c * d.z_q,
+            ..derivatives_of(&e, &a, &trim)
+        };
         DimensionalModel {
             axes: Axes::Stability,
             units: self.units,
-            derivatives: derivatives_of(&e, &a, &trim),
+            derivatives,
             trim,
         }
     }

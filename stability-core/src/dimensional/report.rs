@@ -109,12 +109,19 @@ pub struct Dropped {
     pub gamma0: f64,
 }
 
+/// A flight-path angle |γ₀| at or below this (rad, 0.0057°) is level
+/// flight to the rounding of printed data (θ₀ and α₀ = atan(W₀/U₀) from
+/// rounded numbers): g sin γ₀ is then below 1e-4 g.
+pub const GAMMA0_NEGLIGIBLE: f64 = 1e-4;
+
 impl Dropped {
-    /// Whether nothing was left out.
+    /// Whether nothing was left out: no u̇ derivative, and level flight to
+    /// within [`GAMMA0_NEGLIGIBLE`].
     pub fn is_empty(&self) -> bool {
-        [self.x_udot, self.z_udot, self.m_udot, self.gamma0]
+        [self.x_udot, self.z_udot, self.m_udot]
             .iter()
             .all(|&v| v == 0.0)
+            && self.gamma0.abs() <= GAMMA0_NEGLIGIBLE
     }
 }
 
