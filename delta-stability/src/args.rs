@@ -195,13 +195,25 @@ mod tests {
                 NotationArg::from_str(n.name(), false).unwrap(),
                 NotationArg::Table(n)
             );
-            assert_eq!(TargetNotation::from_str(n.name(), false).unwrap().0, n);
+            assert_eq!(
+                TargetNotation::from_str(n.name(), false).unwrap(),
+                TargetNotation::Table(n)
+            );
         }
         assert_eq!(
             NotationArg::from_str("avl", false).unwrap(),
             NotationArg::Avl
         );
         assert!(TargetNotation::from_str("avl", false).is_err());
+        // the dimensional notation is read and written
+        assert_eq!(
+            NotationArg::from_str("dimensional", false).unwrap(),
+            NotationArg::Dimensional
+        );
+        assert_eq!(
+            TargetNotation::from_str("dimensional", false).unwrap(),
+            TargetNotation::Dimensional
+        );
     }
 
     #[test]

@@ -238,7 +238,7 @@ fn edited(toml: &str, edits: &[(&str, &str)]) -> String {
 #[test]
 fn the_udot_fields_reproduce_cr_2144s_phugoid_damping() {
     for name in ["nt33a-fc1", "boeing-747-cr2144-fc9"] {
-        let js = published(&name);
+        let js = published(name);
         let d = &js["derivatives"];
         let t = js["flight"]["W0"].as_f64().unwrap() / js["flight"]["U0"].as_f64().unwrap();
         let (zq, zwd, mwd) = (

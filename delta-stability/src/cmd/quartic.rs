@@ -16,7 +16,7 @@ use stability_core::json::Timed;
 
 pub fn run(file: &str, json: bool) -> Result<(), Failure> {
     let input = match input::read_any(file)? {
-        AnyFile::Report(input) => input,
+        AnyFile::Report(input) => *input,
         AnyFile::Dimensional(input) => return run_dimensional(&input, json),
     };
     for w in &input.warnings {
@@ -130,7 +130,7 @@ fn run_dimensional(input: &DimensionalFile, json: bool) -> Result<(), Failure> {
     if !finite {
         return Err(input
             .error_at(
-                "notation",
+                input.most_extreme(),
                 "the analysis overflows f64: no result can be written",
             )
             .into());

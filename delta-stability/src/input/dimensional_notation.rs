@@ -99,8 +99,33 @@ impl DimensionalFile {
 
     /// The analysis of the set, its errors placed at the value at fault.
     pub fn analysis(&self) -> Result<DimensionalAnalysis, InputError> {
-        DimensionalAnalysis::of(&self.model, self.reference.as_ref())
-            .map_err(|e| self.error_at(blame(&e), e.to_string()))
+        DimensionalAnalysis::of(&self.model, self.reference.as_ref()).map_err(|e| {
+            let at = match blame(&e) {
+                "notation" => self.most_extreme(),
+                name => name,
+            };
+            self.error_at(at, e.to_string())
+        })
+    }
+
+    /// The input most extreme in magnitude, largest or smallest (the
+    /// likeliest cause of an overflow).
+    pub fn most_extreme(&self) -> &'static str {
+        let t = &self.model.trim;
+        let names = DimensionalDerivatives::NAMES
+            .into_iter()
+            .chain(["U0", "W0", "g"]);
+        let values = self
+            .model
+            .derivatives
+            .values()
+            .into_iter()
+            .chain([t.u0, t.w0, t.g]);
+        let extreme = |v: f64| if v == 0.0 { 0.0 } else { v.abs().log10().abs() };
+        names
+            .zip(values)
+            .max_by(|a, b| extreme(a.1).total_cmp(&extreme(b.1)))
+            .map_or("notation", |(n, _)| n)
     }
 }
 

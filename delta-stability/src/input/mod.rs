@@ -128,8 +128,8 @@ pub fn read(path: &str) -> Result<DerivativeFile, Failure> {
 /// report's notation.
 #[derive(Debug, Clone)]
 pub enum AnyFile {
-    Report(DerivativeFile),
-    Dimensional(dimensional_notation::DimensionalFile),
+    Report(Box<DerivativeFile>),
+    Dimensional(Box<dimensional_notation::DimensionalFile>),
 }
 
 /// Read a derivative file of any notation from disk, keeping a dimensional
@@ -137,11 +137,10 @@ pub enum AnyFile {
 pub fn read_any(path: &str) -> Result<AnyFile, Failure> {
     let text = crate::files::read_input(Path::new(path))?;
     if dimensional_notation::is_dimensional(&text) {
-        return Ok(AnyFile::Dimensional(dimensional_notation::parse(
-            path, &text,
-        )?));
+        let file = dimensional_notation::parse(path, &text)?;
+        return Ok(AnyFile::Dimensional(Box::new(file)));
     }
-    Ok(AnyFile::Report(parse(path, &text)?))
+    Ok(AnyFile::Report(Box::new(parse(path, &text)?)))
 }
 
 /// Parse a derivative file's text (an AVL file's `.st` output is read from
