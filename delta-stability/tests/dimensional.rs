@@ -418,6 +418,17 @@ fn the_quartic_page_of_a_dimensional_set_is_in_seconds() {
     ] {
         assert!(text.contains(s), "{s}:\n{text}");
     }
+    // The README's quotation of this output is the output.
+    let readme = std::fs::read_to_string(root().join("README.md")).unwrap();
+    let section = &readme[readme.find("## Real aircraft data").expect("the section")..];
+    let block = section
+        .split("```text\n")
+        .nth(1)
+        .and_then(|b| b.split("```").next())
+        .unwrap();
+    for line in block.lines().filter(|l| !l.trim().is_empty()) {
+        assert!(text.contains(line), "README line not in the output: {line}");
+    }
     let v = quartic("examples/aircraft/boeing-747-cr2144-fc9.toml");
     // with [reference]: τ, and the roots in 1/τ beside 1/s
     let tau = v["tau_s"].as_f64().expect("τ");

@@ -25,6 +25,37 @@
 //!   ([`Reference`]: c̄, μ₁, i_B);
 //! - [`analysis`]: roots in 1/s, modes in seconds, Routh, the §8 verdict,
 //!   MIL-F-8785C levels ([`DimensionalAnalysis`]).
+//!
+//! The 747 of NASA CR-2144, flight condition 9, body axes, as printed:
+//!
+//! ```
+//! use stability_core::dimensional::{
+//!     Axes, DimensionalAnalysis, DimensionalDerivatives, DimensionalModel, Reference, Trim, Units,
+//! };
+//! let model = DimensionalModel {
+//!     axes: Axes::Body,
+//!     units: Units::Ft,
+//!     derivatives: DimensionalDerivatives {
+//!         x_u: -0.00276, x_w: 0.0389, z_u: -0.065, z_w: -0.317, z_wdot: 0.00556, z_q: -5.16,
+//!         m_u: 0.000193, m_w: -0.00105, m_wdot: -0.000116, m_q: -0.339,
+//!         ..Default::default()
+//!     },
+//!     trim: Trim { u0: 771.5069, w0: 62.0740, theta0: 4.6f64.to_radians(), g: 32.174 },
+//! };
+//! let reference = Reference::physical(5.9092e-4, 5500.0, 27.3, 636_636.0 / 32.174, 3.31e7);
+//! let a = DimensionalAnalysis::of(&model, Some(&reference)).unwrap();
+//! let ph = a.modes.phugoid().unwrap();          // 1/s and s
+//! assert!((ph.damping_ratio.unwrap() - 0.0485).abs() < 5e-5);
+//! assert!((ph.period.unwrap() - 93.49).abs() < 0.01);
+//! // the same motion in stability axes, and the state matrix E⁻¹A
+//! let st = model.in_stability_axes();
+//! assert!(st.trim.w0 == 0.0 && st.derivatives.m_udot != 0.0);
+//! let a_matrix = model.state_matrix().unwrap();
+//! assert!((a_matrix.trace() - (-0.7457561 / 0.99444)).abs() < 1e-6);
+//! // and in the report's notation (τ = μ₁c̄/V)
+//! let eq = model.to_report(&reference);
+//! assert!((eq.tau - 15.732).abs() < 1e-3 && !eq.is_exact());
+//! ```
 
 pub mod analysis;
 pub mod json;
