@@ -731,3 +731,48 @@ fn the_american_forms_are_not_mixed() {
         "{err}"
     );
 }
+
+/// The trim as V and α₀ (as CR-2144 prints it) is the same set as U₀ and
+/// W₀; the reference as μ₁ and i_B the same as ρ, S, m and I_y; W₀ left
+/// out in body axes is announced.
+#[test]
+fn the_alternative_forms_of_the_trim_and_the_reference_are_the_same_set() {
+    let toml = "examples/aircraft/boeing-747-cr2144-fc9.toml";
+    let base = quartic(toml);
+    let dir = Scratch::new();
+    let va = edited(toml, &[("U0", "V = 774.0"), ("W0", "alpha0 = 4.6")]);
+    let f = dir.write("va.toml", va);
+    let v = quartic(path(&f));
+    for m in ["short_period", "phugoid"] {
+        let (a, b) = (mode(&base, m), mode(&v, m));
+        // U0 and W0 are printed to 1e-4 ft/s
+        assert!(
+            (a.0 - b.0).hypot(a.1 - b.1) < 1e-6 * a.0.hypot(a.1),
+            "{m}: {a:?} {b:?}"
+        );
+    }
+    let r = &base["report"]["reference"];
+    let (mu1, i_b) = (r["mu1"].as_f64().unwrap(), r["i_b"].as_f64().unwrap());
+    let direct = edited(
+        toml,
+        &[
+            ("S", &format!("mu1 = {mu1:?}")),
+            ("rho", &format!("i_b = {i_b:?}")),
+            ("weight", ""),
+            ("I_y", ""),
+        ],
+    );
+    let f = dir.write("direct.toml", direct);
+    let d = quartic(path(&f));
+    for k in ["m_thetadot", "m_thetadot_max"] {
+        let (x, y) = (
+            base["criteria"]["damping_standard"][k].as_f64().unwrap(),
+            d["criteria"]["damping_standard"][k].as_f64().unwrap(),
+        );
+        assert!((x - y).abs() <= 1e-12 * x.abs(), "{k}: {x} {y}");
+    }
+    let no_w0 = edited("examples/aircraft/nt33a-fc1.toml", &[("W0", "")]);
+    let f = dir.write("no_w0.toml", no_w0);
+    let err = stderr(&run_ok(&["quartic", path(&f)]));
+    assert!(err.contains("[flight] W0 not given: taken as 0"), "{err}");
+}
