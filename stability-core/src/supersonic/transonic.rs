@@ -112,6 +112,13 @@ pub fn validity_mach(wing: &Wing, omega_bar: f64) -> Result<f64, SupersonicError
     Ok((LOW_FREQUENCY_LIMIT / (LOW_FREQUENCY_LIMIT - scaled)).sqrt())
 }
 
+/// The largest ω̄ at which (36) is valid at Mach `mach` (κ = limit):
+/// ω̄ = κ_max (c̄/c₀)(M² − 1)/M²; 0 at and below M = 1.
+pub fn largest_omega_bar(wing: &Wing, mach: f64) -> f64 {
+    let b2 = (mach * mach - 1.0).max(0.0);
+    LOW_FREQUENCY_LIMIT * wing.mac() * b2 / (mach * mach)
+}
+
 /// The Mach number where (36)'s near-sonic z_ẇ equals Mangler's at ω̄:
 /// M = √(1 + ω̄/[`MATCHING_RATIO`]).
 pub fn matching_mach(omega_bar: f64) -> Result<f64, SupersonicError> {
