@@ -10,8 +10,7 @@
 //! and what the iteration changed.
 
 use crate::Derivatives;
-use crate::aero::TheoryCoefficients;
-use crate::aero::{AeroError, AeroModel, Coefficients, level_flight_lift};
+use crate::aero::{AeroError, AeroModel, Coefficients, TheoryCoefficients, level_flight_lift};
 use crate::analysis::{Analysis, AnalysisError};
 use crate::damping::{
     Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,

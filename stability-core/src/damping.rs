@@ -108,7 +108,7 @@ pub struct Damping {
 /// The damping derivatives of `theory` for the wing at c.g. `h` and Mach
 /// number `mach`; `omega_bar` is the frequency parameter ω̄ = ωc̄/V, used by
 /// `transonic-frequency` and, for the low-frequency rule's warning
-/// ([`low_frequency`]), by `supersonic`.
+/// (`low_frequency`), by `supersonic`.
 pub fn damping_derivatives(
     theory: Theory,
     wing: &WingInput,

@@ -20,7 +20,7 @@
 //!
 //! | module | what | route |
 //! | --- | --- | --- |
-//! | [`eq36`] | eq (36) for subsonic leading edges and the functions of Fig 18 | closed form (elliptic integrals) |
+//! | [`eq36`](mod@eq36) | eq (36) for subsonic leading edges and the functions of Fig 18 | closed form (elliptic integrals) |
 //! | [`strip`] | Ackeret's two-dimensional values and their strip integrals; the true delta exactly | closed form |
 //! | [`evvard`] | the cropped delta: strip values less the tip deficits | closed-form weights, integrated over the tip regions |
 //! | [`source`] | the same seven potential integrals from the source integral at each receiver | independent numerical route (tests) |
