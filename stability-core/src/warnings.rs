@@ -80,7 +80,7 @@ impl fmt::Display for Warning {
             } => {
                 write!(
                     f,
-                    "supersonic (36): linear theory is first order in frequency, valid for ω̄/(M² − 1) ≪ 1 (the rule: κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ {limit}); at M = {} the short period's ω̄ = {omega_bar:.3} gives ω̄/(M² − 1) = {nu:.3}, κ = {kappa:.3}, so its z_ẇ, m_ẇ are outside it; ",
+                    "supersonic: linear theory ((36) and past the sonic edge) is first order in frequency, valid for ω̄/(M² − 1) ≪ 1 (the rule: κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ {limit}); at M = {} the short period's ω̄ = {omega_bar:.3} gives ω̄/(M² − 1) = {nu:.3}, κ = {kappa:.3}, so its z_ẇ, m_ẇ are outside it; ",
                     Num(mach)
                 )?;
                 match validity_mach {
@@ -94,7 +94,7 @@ impl fmt::Display for Warning {
                 limit,
             } => write!(
                 f,
-                "supersonic (36): linear theory is first order in frequency, valid for ω̄/(M² − 1) ≪ 1; at M = {} it holds for ω̄ ≤ {omega_max:.3} (κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ {limit}), and no frequency was given to check",
+                "supersonic: linear theory ((36) and past the sonic edge) is first order in frequency, valid for ω̄/(M² − 1) ≪ 1; at M = {} it holds for ω̄ ≤ {omega_max:.3} (κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ {limit}), and no frequency was given to check",
                 Num(mach)
             ),
             Warning::FairedHeldAtSonicEdge { sonic } => write!(
