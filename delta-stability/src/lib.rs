@@ -5,6 +5,7 @@ pub mod args;
 pub mod cmd;
 pub mod config;
 pub mod diag;
+pub mod engineering;
 pub mod files;
 pub mod fmt;
 pub mod input;
@@ -12,6 +13,7 @@ pub mod output;
 pub mod page;
 pub mod plot;
 pub mod report;
+pub mod state_space;
 
 /// Why a command failed; each kind has its own exit status.
 #[derive(Debug, thiserror::Error)]

@@ -156,7 +156,12 @@ pub fn regions(category: Category, class: AirplaneClass) -> [Region; 3] {
 /// (rad/s) at acceleration sensitivity `n_alpha` (g/rad) in `category`.
 /// A non-positive or non-finite n/α or ω has no level better than worse
 /// than Level 3.
-pub fn frequency_level(omega: f64, n_alpha: f64, category: Category, class: AirplaneClass) -> Level {
+pub fn frequency_level(
+    omega: f64,
+    n_alpha: f64,
+    category: Category,
+    class: AirplaneClass,
+) -> Level {
     let valid = omega.is_finite() && omega > 0.0 && n_alpha.is_finite() && n_alpha > 0.0;
     let levels = [Level::One, Level::Two, Level::Three];
     match regions(category, class)

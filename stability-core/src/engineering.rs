@@ -13,13 +13,13 @@
 //!   [`LinearModel::eigenvalues`]) and its n/α when known
 //!   ([`Engineering::of_model`]).
 
+use crate::Derivatives;
 use crate::analysis::Analysis;
 use crate::cap::{AirplaneClass, ShortPeriodFrequency, n_alpha};
 use crate::damp::Damp;
 use crate::linear::{Control, LinearModel, TimeUnit};
 use crate::mode_shape::ModeShape;
 use crate::response::ResponseError;
-use crate::Derivatives;
 use num_complex::Complex64;
 use serde::Serialize;
 

@@ -31,8 +31,8 @@
 //! (geometric) height Z is given explicitly as such
 //! ([`Atmosphere::at_geometric`]). Both lie between 0 and 86 km.
 
-use crate::atmosphere::{Atmosphere, AtmosphereError, FOOT, KG_PER_SLUG, NEWTON_PER_LBF};
 use crate::analysis::{Dimensional, STANDARD_GRAVITY};
+use crate::atmosphere::{Atmosphere, AtmosphereError, FOOT, KG_PER_SLUG, NEWTON_PER_LBF};
 use crate::case::Case;
 use crate::display::Num;
 use crate::geometry::Planform;

@@ -142,7 +142,10 @@ impl LinearModel {
 
     /// Whether every entry is finite.
     pub fn is_finite(&self) -> bool {
-        self.a.iter().chain(self.b.iter().flatten()).all(|v| v.is_finite())
+        self.a
+            .iter()
+            .chain(self.b.iter().flatten())
+            .all(|v| v.is_finite())
     }
 
     /// The eigenvalues of A by nalgebra's Schur decomposition, conjugates
@@ -152,11 +155,7 @@ impl LinearModel {
     pub fn eigenvalues(&self) -> [Complex64; 4] {
         let ev = self.a.complex_eigenvalues();
         let mut out = [ev[0], ev[1], ev[2], ev[3]];
-        out.sort_by(|x, y| {
-            y.norm()
-                .total_cmp(&x.norm())
-                .then(y.im.total_cmp(&x.im))
-        });
+        out.sort_by(|x, y| y.norm().total_cmp(&x.norm()).then(y.im.total_cmp(&x.im)));
         out
     }
 }
@@ -184,7 +183,12 @@ mod tests {
         let dx_tau = m.a * x_tau + m.b.unwrap() * 0.1;
         let dx_s = s.a * x_s + s.b.unwrap() * 0.1;
         // d/dt = (1/τ) d/dt̂, and dq/dt = (1/τ²) dq̂/dt̂
-        let expect = [dx_tau[0] / tau, dx_tau[1] / tau, dx_tau[2] / (tau * tau), dx_tau[3] / tau];
+        let expect = [
+            dx_tau[0] / tau,
+            dx_tau[1] / tau,
+            dx_tau[2] / (tau * tau),
+            dx_tau[3] / tau,
+        ];
         for i in 0..4 {
             assert!((dx_s[i] - expect[i]).abs() < 1e-15, "{i}");
         }

@@ -33,7 +33,11 @@ const THETA: usize = 3;
 pub fn eigenvector(a: &Matrix4<f64>, lambda: Complex64) -> Option<[Complex64; 4]> {
     let m: [[Complex64; 4]; 4] = std::array::from_fn(|i| {
         std::array::from_fn(|j| {
-            let diag = if i == j { lambda } else { Complex64::new(0.0, 0.0) };
+            let diag = if i == j {
+                lambda
+            } else {
+                Complex64::new(0.0, 0.0)
+            };
             Complex64::new(a[(i, j)], 0.0) - diag
         })
     });
@@ -89,7 +93,11 @@ impl Component {
         let phase = z.im.atan2(z.re).to_degrees();
         Component {
             magnitude: z.norm(),
-            phase_deg: if phase <= -180.0 { phase + 360.0 } else { phase },
+            phase_deg: if phase <= -180.0 {
+                phase + 360.0
+            } else {
+                phase
+            },
         }
     }
 }
@@ -134,7 +142,10 @@ impl ModeShape {
 
     /// Every mode's shape that is determined, in the order of `modes`.
     pub fn all(model: &LinearModel, modes: &[Mode]) -> Vec<ModeShape> {
-        modes.iter().filter_map(|m| ModeShape::of(model, m)).collect()
+        modes
+            .iter()
+            .filter_map(|m| ModeShape::of(model, m))
+            .collect()
     }
 
     /// The four components, (u/V, α, q, θ).

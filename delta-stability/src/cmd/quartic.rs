@@ -1,6 +1,9 @@
-//! `delta-stability quartic FILE [--json]`: the stability quartic of a
-//! derivative set (eqs 4–6), its roots and modes (§4, eqs 7–8), Routh's
-//! test, the §8 damping standard and the MIL-F-8785C levels.
+//! `delta-stability quartic FILE [--json] [--state-space OUT.json]`: the
+//! stability quartic of a derivative set (eqs 4–6), its roots and modes
+//! (§4, eqs 7–8), Routh's test, the §8 damping standard and the
+//! MIL-F-8785C levels; with `[dimensional]`, the modes in seconds
+//! (`damp()`) and the short-period frequency requirement; the mode shapes;
+//! and the state-space model, written on request.
 
 use crate::Failure;
 use crate::input::{self, DerivativeFile, rows};
@@ -9,16 +12,39 @@ use crate::page::analysis_page;
 use serde::Serialize;
 use stability_core::Derivatives;
 use stability_core::analysis::{Analysis, AnalysisError};
+use stability_core::cap::AirplaneClass;
+use stability_core::engineering::Engineering;
 use stability_core::json::Timed;
+use std::path::Path;
 
-pub fn run(file: &str, json: bool) -> Result<(), Failure> {
-    let input = input::read(file)?;
+/// The command's options beside the file.
+#[derive(Debug, Clone)]
+pub struct Options {
+    pub json: bool,
+    /// Where to write the state space (`OUT.json`, with `OUT.py` and `OUT.m`).
+    pub state_space: Option<String>,
+    /// The airplane class of the Category C frequency floors.
+    pub class: AirplaneClass,
+}
+
+pub fn run(file: &str, o: &Options) -> Result<(), Failure> {
+    let text = crate::files::read_input(Path::new(file))?;
+    let input = input::parse(file, &text)?;
+    let control = crate::state_space::read_control(file, &text)?;
     for w in &input.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
     let analysis = Analysis::of(&input.derivatives)
         .map_err(|e| input.error_at(blame(&input, &e), e.to_string()))?;
-    if !is_finite(&analysis) {
+    let tau = input.dimensional.map(|d| d.tau());
+    let engineering = Engineering::of_report(
+        &input.derivatives,
+        &analysis,
+        tau,
+        control.as_ref(),
+        o.class,
+    );
+    let (true, Ok(engineering)) = (is_finite(&analysis), engineering) else {
         let largest = most_extreme_input(&input);
         return Err(input
             .error_at(
@@ -26,14 +52,28 @@ pub fn run(file: &str, json: bool) -> Result<(), Failure> {
                 "the analysis overflows f64: no result can be written",
             )
             .into());
+    };
+    if let Some(out) = &o.state_space {
+        let roots = tau.map_or(analysis.roots, |t| analysis.roots.map(|z| z / t));
+        crate::state_space::write(
+            out,
+            &crate::state_space::Export {
+                source: file,
+                command: "quartic",
+                model: &engineering.model,
+                tau,
+                eigenvalues: roots,
+            },
+        )?;
     }
-    if json {
+    if o.json {
         print(&format!(
             "{}\n",
-            serde_json::to_string_pretty(&to_json(&input, &analysis)).unwrap_or_default()
+            serde_json::to_string_pretty(&to_json(&input, &analysis, &engineering))
+                .unwrap_or_default()
         ))?;
     } else {
-        print(&table(&input, &analysis))?;
+        print(&table(&input, &analysis, &engineering))?;
     }
     Ok(())
 }
@@ -49,7 +89,7 @@ pub fn is_finite(a: &Analysis) -> bool {
 
 /// The quartic input most extreme in magnitude, largest or smallest (the
 /// likeliest cause of an overflow: μ₁ = 1e-300 as much as 1e300).
-fn most_extreme_input(input: &DerivativeFile) -> usize {
+pub(crate) fn most_extreme_input(input: &DerivativeFile) -> usize {
     let mut best = (0.0, rows::QUARTIC[0]);
     for i in rows::QUARTIC {
         let v = input.report[i].map_or(0.0, f64::abs);
@@ -62,7 +102,7 @@ fn most_extreme_input(input: &DerivativeFile) -> usize {
 }
 
 /// The row an analysis error is about.
-fn blame(input: &DerivativeFile, e: &AnalysisError) -> usize {
+pub(crate) fn blame(input: &DerivativeFile, e: &AnalysisError) -> usize {
     let named = |name: &str| {
         Derivatives::QUARTIC_INPUTS
             .iter()
@@ -89,24 +129,38 @@ pub struct QuarticJson<'a> {
     #[serde(flatten)]
     analysis: Timed<'a>,
     warnings: &'a [String],
+    /// `damp`, `mode_shapes`, `short_period_frequency`.
+    #[serde(flatten)]
+    engineering: &'a Engineering,
 }
 
-pub fn to_json<'a>(input: &'a DerivativeFile, a: &'a Analysis) -> QuarticJson<'a> {
+pub fn to_json<'a>(
+    input: &'a DerivativeFile,
+    a: &'a Analysis,
+    engineering: &'a Engineering,
+) -> QuarticJson<'a> {
     QuarticJson {
         file: &input.path,
         notation: &input.notation,
         analysis: a.timed(input.dimensional.map(|d| d.tau())),
         warnings: &input.warnings,
+        engineering,
     }
 }
 
-pub fn table(input: &DerivativeFile, a: &Analysis) -> String {
-    analysis_page(
+pub fn table(input: &DerivativeFile, a: &Analysis, engineering: &Engineering) -> String {
+    let mut s = analysis_page(
         &format!(
             "Stability quartic of {} (eqs 4–6; the errata of docs/errata.md applied)",
             input.path
         ),
         a,
         input.dimensional.map(|d| d.tau()),
-    )
+    );
+    if let Some(f) = &engineering.short_period_frequency {
+        s.push_str(&crate::engineering::frequency_line(f));
+        s.push('\n');
+    }
+    s.push_str(&crate::engineering::tables(engineering));
+    s
 }

@@ -28,6 +28,7 @@
 //! file, line and field.
 
 pub mod limits;
+pub mod physical;
 pub mod raw;
 pub mod tables;
 
@@ -50,6 +51,9 @@ pub use tables::read_csv_table;
 pub struct Config {
     pub path: String,
     pub case: Case,
+    /// The physical flight condition, when `[flight]` gives one
+    /// ([`physical`]); `case` then holds the μ₁, i_B and C_L·M² it gives.
+    pub physical: Option<physical::Physical>,
     text: String,
     /// Where each value (and table) was written: field and span.
     spans: Vec<(String, Range<usize>)>,
@@ -74,6 +78,18 @@ struct Reader<'a> {
 impl Reader<'_> {
     fn err(&self, span: Range<usize>, field: &str, m: String) -> InputError {
         InputError::at(self.path, self.text, span, field, m)
+    }
+
+    /// An error at the value recorded under `field` (the file's start if
+    /// none was).
+    fn err_field(&self, field: &str, m: String) -> InputError {
+        let span = self
+            .spans
+            .iter()
+            .rev()
+            .find(|(f, _)| f == field)
+            .map_or(0..0, |(_, s)| s.clone());
+        self.err(span, field, m)
     }
 
     /// `v` within `limit`, its span recorded under `field`.
@@ -106,9 +122,8 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
     let f = raw.flight.get_ref();
     let mach = r.value(&f.mach, "[flight] mach", &limits::MACH)?;
     let h = r.value(&f.cg, "[flight] cg", &limits::CG)?;
-    let mu1 = r.value(&f.mu1, "[flight] mu1", &limits::MU1)?;
-    let i_b = r.value(&f.i_b, "[flight] i_b", &limits::I_B)?;
-    let cl_m2 = r.value(&f.cl_m2, "[flight] cl_m2", &limits::CL_M2)?;
+    let ([mu1, i_b, cl_m2], physical) =
+        physical::flight_parameters(&mut r, f, raw.flight.span(), &planform)?;
     let mut case = Case {
         planform,
         mach,
@@ -128,6 +143,7 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
     Ok(Config {
         path: path.to_string(),
         case,
+        physical,
         text: text.to_string(),
         spans: r.spans,
         overridden: Vec::new(),
@@ -262,6 +278,11 @@ fn model(r: &mut Reader<'_>, m: &RawModel, case: &mut Case) -> Result<(), Failur
 }
 
 impl Config {
+    /// The config's text, as read.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
     /// Records that the command line replaced `field` (`--mach 1.2`).
     pub fn overridden_by(&mut self, field: &'static str, flag: String) {
         self.overridden.push((field, flag));
