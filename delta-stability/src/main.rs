@@ -233,6 +233,15 @@ enum Command {
     /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
     /// outside a theory's validity. Roots are in units of 1/τ, τ = m/(½ρSV).
     ///
+    /// With a physical flight condition in CONFIG (units, altitude, mass,
+    /// I_y: see `analyze --help`), μ₁, i_B and C_L·M² follow from it and each
+    /// point's planform (the root chord is held, so they change with
+    /// --sweep; --mu1 and --ib are refused), and V = M·a, C_L and τ from
+    /// each Mach number: at a fixed altitude and weight C_L·M² is constant
+    /// (eq 24), so C_L ∝ 1/M² and τ ∝ 1/M. The rows then also carry v_m_s,
+    /// c_l, tau_s and the modes in seconds (sp_re_s, sp_im_s,
+    /// sp_natural_frequency_rad_s, sp_period_s, ph_re_s, ph_im_s).
+    ///
     /// Example: the 60° delta from Mach 0.5 to 2, c.g. 0.20 to 0.30, μ₁ 50 to
     /// 450, 31 × 11 × 5 points:
     ///

@@ -366,7 +366,7 @@ fn etkin_reid_a() -> Matrix4<f64> {
 }
 
 #[test]
-fn the_747s_state_matrix_and_mode_shapes_are_etkin_and_reids() {
+fn the_747s_state_matrix_is_etkin_and_reids() {
     let dir = Scratch::new();
     let out = dir.path().join("ss.json");
     run_ok(&[
@@ -406,6 +406,13 @@ fn the_747s_state_matrix_and_mode_shapes_are_etkin_and_reids() {
             );
         }
     }
+}
+
+#[test]
+fn the_747s_mode_shapes_are_those_of_etkin_and_reids_matrix() {
+    let s = [235.9 / 0.3048, 235.9 / 0.3048, 1.0, 1.0];
+    let er = etkin_reid_a();
+    let theirs = Matrix4::from_fn(|i, j| er[(i, j)] * s[j] / s[i]);
     // the mode shapes of their matrix against ours: within 1 % and 1°
     let v = json(&run_ok(&[
         "quartic",
@@ -484,6 +491,11 @@ fn the_state_space_file_is_the_librarys_state_matrix() {
             "{ext}:\n{script}"
         );
     }
+}
+
+#[test]
+fn without_dimensions_the_state_space_is_in_tau() {
+    let dir = Scratch::new();
     // without dimensions: in τ, the library's matrix itself
     let out = dir.path().join("tau.json");
     run_ok(&[
@@ -504,6 +516,11 @@ fn the_state_space_file_is_the_librarys_state_matrix() {
             assert_eq!(f(&ss["A"][i][j]), lib.a[(i, j)]);
         }
     }
+}
+
+#[test]
+fn the_control_column_is_the_librarys_input_matrix() {
+    let dir = Scratch::new();
     // analyze with [control]: B = the library's B·(C_Xδ, C_Zδ, (μ₁/i_B)C_mδ), in seconds
     let out = dir.path().join("phys.json");
     run_ok(&[

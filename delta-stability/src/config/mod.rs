@@ -13,6 +13,9 @@
 //! mu1 = 50.0            # relative density m/(½ρSc̄)
 //! i_b = 0.08            # pitching inertia B/(mc̄²)
 //! cl_m2 = 0.05          # C_L·M² = W/(½ρa²S), constant in level flight (eq 24)
+//! # or, instead of mu1, i_b and cl_m2, a physical flight condition
+//! # ([`physical`]): units = "si" | "ft", altitude (or geometric_altitude,
+//! # or rho with speed_of_sound), mass (or weight), I_y
 //!
 //! [model]               # optional
 //! damping = "faired"    # or garrick, garner-taper, slender, supersonic, transonic, transonic-frequency
@@ -24,8 +27,9 @@
 //! # drag_due_to_lift, aerodynamic_centre likewise
 //! ```
 //!
-//! Each value must lie in its range ([`limits`]); every error names the
-//! file, line and field.
+//! An optional `[control]` table gives the control derivatives of
+//! `--state-space` ([`crate::state_space`]). Each value must lie in its
+//! range ([`limits`]); every error names the file, line and field.
 
 pub mod limits;
 pub mod physical;
