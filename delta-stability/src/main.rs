@@ -76,6 +76,9 @@ enum Command {
     ///   S = 93.0        # m²
     ///   chord = 6.6     # m, the chord of the derivatives and of μ₁
     ///   mass = 12000.0  # kg
+    ///   [control]       # optional: B of --state-space, per radian of δ
+    ///   name = "elevator"
+    ///   C_mdelta = -1.2 # ∂C_m/∂δ; C_zdelta (or C_Ldelta) and C_xdelta default to 0
     ///
     /// The coefficients are the exact expansion of the determinant of eq (4);
     /// the report's printed eq (6) has three misprints, corrected here (see
