@@ -5,6 +5,7 @@
 use crate::input::dimensional_notation::DIMENSIONAL;
 use clap::ValueEnum;
 use clap::builder::PossibleValue;
+use stability_core::cap::AirplaneClass;
 use stability_core::case::DampingModel;
 use stability_core::damping::Theory;
 use stability_core::notation::Notation;
@@ -55,6 +56,29 @@ impl ValueEnum for DampingArg {
                 };
                 format!("{}: {eqs} {}", theory_meaning(t), t.equations())
             }
+        };
+        Some(PossibleValue::new(self.0.name()).help(help))
+    }
+}
+
+/// A MIL-F-8785C airplane class (§1.3), for the Category C floors of the
+/// short-period frequency requirement.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClassArg(pub AirplaneClass);
+
+impl ValueEnum for ClassArg {
+    fn value_variants<'a>() -> &'a [Self] {
+        static ALL: OnceLock<Vec<ClassArg>> = OnceLock::new();
+        ALL.get_or_init(|| AirplaneClass::ALL.map(ClassArg).to_vec())
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        let help = match self.0 {
+            AirplaneClass::I => "small, light airplanes",
+            AirplaneClass::IIC => "medium weight, low-to-medium manoeuvrability, carrier-based",
+            AirplaneClass::IIL => "medium weight, low-to-medium manoeuvrability, land-based",
+            AirplaneClass::III => "large, heavy, low-to-medium manoeuvrability (transports)",
+            AirplaneClass::IV => "high manoeuvrability (fighters, attack): the default",
         };
         Some(PossibleValue::new(self.0.name()).help(help))
     }

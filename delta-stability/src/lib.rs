@@ -5,6 +5,7 @@ pub mod args;
 pub mod cmd;
 pub mod config;
 pub mod diag;
+pub mod engineering;
 pub mod files;
 pub mod fmt;
 pub mod input;
@@ -13,6 +14,7 @@ pub mod page;
 pub mod page_dimensional;
 pub mod plot;
 pub mod report;
+pub mod state_space;
 
 /// Why a command failed; each kind has its own exit status.
 #[derive(Debug, thiserror::Error)]

@@ -7,7 +7,7 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 use delta_stability::args::{
-    DampingArg, NotationArg, ResponseInput, TargetNotation, finite, positive,
+    ClassArg, DampingArg, NotationArg, ResponseInput, TargetNotation, finite, positive,
 };
 use delta_stability::cmd;
 use stability_core::response::MAX_STEPS;
@@ -50,7 +50,15 @@ enum Command {
     /// time to half (or double) amplitude, cycles to half amplitude (eq 8),
     /// damping ratio, undamped frequency and frequency parameter ω̄ (§9);
     /// then the report's one-cycle damping standard (§8, eq 41) and the
-    /// MIL-F-8785C damping levels.
+    /// MIL-F-8785C damping levels; and the mode shapes (each mode's
+    /// eigenvector: |u/V|, α, q, θ with their phases relative to θ).
+    ///
+    /// With [dimensional] (τ = m/(½ρSV) known) the modes also come in
+    /// seconds: a damp() table as MATLAB and python-control print it
+    /// (eigenvalue in 1/s, ζ, ωₙ in rad/s, period, time to half or double,
+    /// cycles), and the MIL-F-8785C short-period frequency requirement
+    /// (§3.2.2.1.1: CAP = ω_sp²/(n/α), n/α = −z_w/C_L g/rad) beside the
+    /// damping one.
     ///
     /// FILE is TOML, in the report's notation or another (see `convert --help`):
     ///
@@ -68,6 +76,9 @@ enum Command {
     ///   S = 93.0        # m²
     ///   chord = 6.6     # m, the chord of the derivatives and of μ₁
     ///   mass = 12000.0  # kg
+    ///   [control]       # optional: B of --state-space, per radian of δ
+    ///   name = "elevator"
+    ///   C_mdelta = -1.2 # ∂C_m/∂δ; C_zdelta (or C_Ldelta) and C_xdelta default to 0
     ///
     /// The coefficients are the exact expansion of the determinant of eq (4);
     /// the report's printed eq (6) has three misprints, corrected here (see
@@ -98,9 +109,11 @@ enum Command {
     Quartic {
         /// The derivative file (TOML).
         file: String,
-        /// Print one JSON object (keys coefficients, routh_discriminant, stable, roots, modes, criteria) instead of a table.
+        /// Print one JSON object (keys coefficients, routh_discriminant, stable, roots, modes, criteria, mode_shapes; with [dimensional] also damp and short_period_frequency) instead of a table.
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        engineering: EngineeringArgs,
     },
     /// The longitudinal response (§11) to an elevon step or an initial disturbance.
     ///
@@ -148,6 +161,26 @@ enum Command {
     /// quartic, its modes and the criteria. See examples/delta-45.toml and
     /// examples/delta-60.toml, commented. The damping theories are listed
     /// under --damping.
+    ///
+    /// The flight condition is non-dimensional (mu1, i_b, cl_m2) or
+    /// physical, when the results come in seconds and rad/s too:
+    ///
+    ///   [flight]
+    ///   mach = 0.9
+    ///   cg = 0.25
+    ///   units = "si"          # "si": m, kg, N; "ft": ft, slug, lbf — the planform's size too
+    ///   altitude = 11000.0    # pressure altitude (geopotential), 1976 standard atmosphere
+    ///   # geometric_altitude = 11019.0            # a true height instead, or
+    ///   # rho = 0.3639  speed_of_sound = 295.07   # the air as given
+    ///   mass = 9000.0         # or weight = … (N or lbf)
+    ///   I_y = 60000.0         # pitching moment of inertia, kg·m² or slug·ft²
+    ///
+    /// With the planform's area S and M.A.C. c̄ they give μ₁ = m/(½ρSc̄),
+    /// i_B = I_y/(mc̄²), C_L·M² = W/(½ρa²S) (eq 24) and, at the Mach
+    /// number, V = M·a, C_L and τ = m/(½ρSV); the page prints them. A
+    /// quantity given in both forms (mu1 and mass, say) is an error. See
+    /// examples/delta-60-physical.toml.
+    #[command(verbatim_doc_comment)]
     Analyze {
         /// The design-point config (TOML).
         config: String,
@@ -160,9 +193,11 @@ enum Command {
         /// Override the c.g. position h (fraction of the M.A.C.).
         #[arg(long, value_parser = finite)]
         cg: Option<f64>,
-        /// Print one JSON object (keys derivatives, coefficients, modes, criteria, …).
+        /// Print one JSON object (keys derivatives, coefficients, modes, criteria, mode_shapes, …; with a physical flight condition also flight, damp and short_period_frequency).
         #[arg(long)]
         json: bool,
+        #[command(flatten)]
+        engineering: EngineeringArgs,
     },
     /// Convert a derivative file from one notation to another.
     ///
@@ -238,17 +273,75 @@ enum Command {
     /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
     /// outside a theory's validity. Roots are in units of 1/τ, τ = m/(½ρSV).
     ///
+    /// With a physical flight condition in CONFIG (units, altitude, mass,
+    /// I_y: see `analyze --help`), μ₁, i_B and C_L·M² follow from it and each
+    /// point's planform (the root chord is held, so they change with
+    /// --sweep; --mu1 and --ib are refused), and V = M·a, C_L and τ from
+    /// each Mach number: at a fixed altitude and weight C_L·M² is constant
+    /// (eq 24), so C_L ∝ 1/M² and τ ∝ 1/M. The rows then also carry v_m_s,
+    /// c_l, tau_s and the modes in seconds (sp_re_s, sp_im_s,
+    /// sp_natural_frequency_rad_s, sp_period_s, ph_re_s, ph_im_s).
+    ///
     /// Example: the 60° delta from Mach 0.5 to 2, c.g. 0.20 to 0.30, μ₁ 50 to
     /// 450, 31 × 11 × 5 points:
     ///
     /// delta-stability sweep examples/delta-60.toml --mach 0.5:2:0.05 --cg 0.2:0.3:0.01 --mu1 50:450:100 -o sweep.csv
     Sweep(cmd::sweep::Options),
+    /// How each mode's root moves with each derivative: dλ/dp for every input.
+    ///
+    /// For each mode (short period, phugoid, aperiodic roots) and each of
+    /// the fifteen quartic inputs p (x_u … m_q, c_l, mu1, i_b, report
+    /// notation §3), the exact derivative of the root λ = r + is:
+    /// dλ/dp = −(∂P/∂p)(λ)/P′(λ), by implicit differentiation of the quartic
+    /// P(λ) = Aλ⁴ + … + E = 0 with the generated exact gradient of its
+    /// coefficients (no finite differences). The table gives ∂r/∂p and ∂s/∂p
+    /// (1/τ per unit of p; in brackets 1/s when [dimensional] gives τ, with
+    /// τ held fixed), ∂ζ/∂p, ∂(cycles to half amplitude)/∂p, and
+    /// p·∂r/∂p — the first-order change of the damping r if p doubled, by
+    /// which the inputs are ranked: the derivative at the top drives the
+    /// mode's damping most (the report's §7, §8 and §10 question). A
+    /// multiple root has no derivative and says so.
+    ///
+    /// FILE is a derivative file, as for `quartic`.
+    Sensitivity {
+        /// The derivative file (TOML).
+        file: String,
+        /// Print one JSON object (keys file, notation, tau_s, modes[].sensitivities[] with input, value, d_re, d_im, d_damping_ratio, d_cycles_to_half, damping_drive, and d_re_s, d_im_s when τ is known).
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// The options that write the engineer's outputs (`quartic`, `analyze`).
+#[derive(clap::Args)]
+struct EngineeringArgs {
+    /// Write the state space ẋ = A x + B δ, x = (u/V, α, q, θ), in seconds when the flight condition is dimensional (else in τ), to OUT.json, with a python-control script OUT.py and a MATLAB script OUT.m beside it. B needs a [control] table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; optional name); without one, A only.
+    #[arg(long, value_name = "OUT.json")]
+    state_space: Option<String>,
+    /// The MIL-F-8785C airplane class (§1.3) whose Category C floors the short-period frequency requirement applies.
+    #[arg(long = "class", value_enum, default_value = "IV")]
+    class: ClassArg,
+}
+
+impl EngineeringArgs {
+    fn options(self, json: bool) -> cmd::quartic::Options {
+        cmd::quartic::Options {
+            json,
+            state_space: self.state_space,
+            class: self.class.0,
+        }
+    }
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Quartic { file, json } => cmd::quartic::run(&file, json),
+        Command::Quartic {
+            file,
+            json,
+            engineering,
+        } => cmd::quartic::run(&file, &engineering.options(json)),
+        Command::Sensitivity { file, json } => cmd::sensitivity::run(&file, json),
         Command::Report { out } => cmd::report::run(std::path::Path::new(&out)),
         Command::Sweep(o) => cmd::sweep::run(&o),
         Command::Convert {
@@ -263,6 +356,7 @@ fn main() -> ExitCode {
             mach,
             cg,
             json,
+            engineering,
         } => cmd::analyze::run(
             &config,
             &cmd::analyze::Overrides {
@@ -270,7 +364,7 @@ fn main() -> ExitCode {
                 mach,
                 cg,
             },
-            json,
+            &engineering.options(json),
         ),
         Command::Response {
             file,

@@ -24,7 +24,7 @@ pub fn analysis_page(title: &str, a: &Analysis, tau: Option<f64>) -> String {
         s,
         "\nModes (times in τ{}):",
         if tau.is_some() {
-            "; seconds in brackets"
+            "; seconds and rad/s in brackets"
         } else {
             ""
         }
@@ -99,7 +99,14 @@ fn mode_row(m: &Mode, tau: Option<f64>) -> [String; 8] {
         format!("{}{tag}", with_s(t)),
         cell(m.cycles_to_half.or(m.cycles_to_double.map(|c| -c))),
         cell(m.damping_ratio),
-        sig(m.natural_frequency, 4),
+        match tau {
+            Some(tau) => format!(
+                "{} ({} rad/s)",
+                sig(m.natural_frequency, 4),
+                sig(m.natural_frequency / tau, 3)
+            ),
+            None => sig(m.natural_frequency, 4),
+        },
         cell(m.frequency_parameter),
     ]
 }

@@ -59,7 +59,7 @@ fn trim(s: &mut String, m: &DimensionalModel) {
         s,
         "  {} axes, units {}: U₀ = {} {v}, W₀ = {} {v} (V = {} {v}, α₀ = {}°), θ₀ = {}°, γ₀ = θ₀ − α₀ = {}°, g = {} {acc}",
         m.axes.as_str(),
-        m.units.as_str(),
+        m.units.name(),
         sig(t.u0, 6),
         sig(t.w0, 5),
         sig(t.speed(), 6),
@@ -194,7 +194,7 @@ fn in_report_notation(s: &mut String, r: &InReportNotation, units: Units) {
         sig(d.mu1, 5),
         sig(d.i_b, 4),
         sig(r.reference.chord, 5),
-        units.length(),
+        units.symbols().0,
         sig(d.c_l, 4)
     );
     let names = stability_core::Derivatives::QUARTIC_INPUTS;

@@ -61,9 +61,11 @@ pub const FOOT: f64 = 0.3048;
 /// Upper limit of the model, geometric: 86 km.
 pub const Z_MAX: f64 = 86_000.0;
 
-/// The kilogram per slug (14.593 902 937 2 kg): lbf·s²/ft with
-/// 1 lbf = 0.453 592 37 kg × g₀, exactly.
-pub const KG_PER_SLUG: f64 = 0.453_592_37 * G0 / FOOT;
+/// The newton per pound-force: 1 lbf = 0.453 592 37 kg × g₀ = 4.448 221 615 260 5 N,
+/// exactly.
+pub const NEWTON_PER_LBF: f64 = 0.453_592_37 * G0;
+/// The kilogram per slug (14.593 902 937 2 kg): lbf·s²/ft, exactly.
+pub const KG_PER_SLUG: f64 = NEWTON_PER_LBF / FOOT;
 /// The pascal per lbf/ft².
 const PA_PER_PSF: f64 = 0.453_592_37 * G0 / (FOOT * FOOT);
 

@@ -187,12 +187,24 @@ struct CriteriaJson<'a> {
 pub struct CaseView<'a> {
     pub case: &'a Case,
     pub result: &'a CaseResult,
+    /// τ = m/(½ρSV) in seconds, when the flight condition is physical
+    /// ([`crate::flight`]): the modes then carry their `_s` keys too.
+    pub tau: Option<f64>,
 }
 
 impl CaseResult {
     /// This result with the case it came from, for JSON.
     pub fn view<'a>(&'a self, case: &'a Case) -> CaseView<'a> {
-        CaseView { case, result: self }
+        self.view_timed(case, None)
+    }
+
+    /// As [`CaseResult::view`], with τ (s) when it is known.
+    pub fn view_timed<'a>(&'a self, case: &'a Case, tau: Option<f64>) -> CaseView<'a> {
+        CaseView {
+            case,
+            result: self,
+            tau,
+        }
     }
 }
 
@@ -216,7 +228,7 @@ impl Serialize for CaseView<'_> {
                 fig18: &r.damping.fig18,
                 frequency: &r.frequency,
             },
-            analysis: AnalysisJson::new(&r.analysis, None, Some(margins)),
+            analysis: AnalysisJson::new(&r.analysis, self.tau, Some(margins)),
             warnings: &r.warnings,
         }
         .serialize(s)

@@ -20,7 +20,8 @@
 //! | §10 which derivative drives the damping | [`sensitivity`] |
 //! | §11 responses | [`response`] |
 //! | the appendix's notations | [`notation`] |
-//! | the flight condition | [`atmosphere`] (U.S. Standard Atmosphere, 1976) |
+//! | the flight condition | [`atmosphere`] (U.S. Standard Atmosphere, 1976), [`flight`] (physical → μ₁, i_B, C_L·M², τ) |
+//! | the engineer's outputs | [`linear`] (state space), [`mode_shape`], [`damp`] (modes in seconds), [`cap`] (MIL-F-8785C short-period frequency), [`engineering`] (all of them) |
 //! | handbook data: dimensional derivatives, body or stability axes (issue 12) | [`dimensional`] |
 //!
 //! Around them: [`warnings`] (validity limits approached), [`json`] (the
@@ -30,17 +31,23 @@
 pub mod aero;
 pub mod analysis;
 pub mod atmosphere;
+pub mod cap;
 pub mod case;
 pub mod classical;
 pub mod criteria;
+pub mod damp;
 pub mod damping;
 pub mod derivatives;
 pub mod dimensional;
 pub mod display;
+pub mod engineering;
 pub mod examples;
+pub mod flight;
 pub mod geometry;
 pub mod json;
 pub mod lifting_surface;
+pub mod linear;
+pub mod mode_shape;
 pub mod modes;
 pub mod notation;
 pub mod quartic;
@@ -51,6 +58,7 @@ pub mod stiffness;
 pub mod study;
 pub mod supersonic;
 pub mod theory;
+pub mod units;
 pub mod warnings;
 
 pub use derivatives::Derivatives;

@@ -1,5 +1,8 @@
-//! `delta-stability analyze CONFIG [--json]`: a planform at a flight
-//! condition → derivatives (§5–7) → quartic (§4) → modes → criteria (§8–9).
+//! `delta-stability analyze CONFIG [--json] [--state-space OUT.json]`: a
+//! planform at a flight condition → derivatives (§5–7) → quartic (§4) →
+//! modes → criteria (§8–9); with a physical flight condition
+//! ([`crate::config::physical`]), μ₁, i_B, C_L and τ from it and the modes
+//! in seconds too.
 
 use crate::Failure;
 use crate::config::{self, limits};
@@ -11,8 +14,12 @@ use serde::Serialize;
 use stability_core::Derivatives;
 use stability_core::case::{CaseResult, DampingModel, FrequencyIteration, evaluate};
 use stability_core::criteria::Margins;
+use stability_core::engineering::Engineering;
+use stability_core::flight::{FlightJson, FlightPoint, PhysicalFlight};
 use stability_core::json::CaseView;
 use std::fmt::Write;
+
+use super::quartic::Options;
 
 /// Overrides of the config from the command line.
 #[derive(Debug, Default, Clone)]
@@ -43,57 +50,126 @@ fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
     Ok(cfg)
 }
 
-pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
-    let cfg = overridden(path, o)?;
-    let r = evaluate(&cfg.case).map_err(|e| cfg.explain(&e))?;
-    if !crate::cmd::quartic::is_finite(&r.analysis) {
-        return Err(cfg
+/// A design point's results: the library's, and the engineer's.
+pub struct Results {
+    pub result: CaseResult,
+    /// The physical flight condition at the point's Mach number.
+    pub flight: Option<(PhysicalFlight, FlightPoint)>,
+    pub engineering: Engineering,
+}
+
+/// The design point evaluated, with its physical flight condition and the
+/// engineer's outputs.
+fn results(cfg: &config::Config, o: &Options) -> Result<Results, Failure> {
+    let flight = match &cfg.physical {
+        Some(p) => {
+            let point = p
+                .flight
+                .at_mach(cfg.case.mach)
+                .map_err(|e| cfg.error_at("[flight] mach", e.to_string()))?;
+            Some((p.flight, point))
+        }
+        None => None,
+    };
+    let result = evaluate(&cfg.case).map_err(|e| cfg.explain(&e))?;
+    let control = crate::state_space::read_control(&cfg.path, cfg.text())?;
+    let tau = flight.map(|(_, p)| p.tau);
+    let engineering = Engineering::of_report(
+        &result.derivatives,
+        &result.analysis,
+        tau,
+        control.as_ref(),
+        o.class,
+    );
+    match engineering {
+        Ok(engineering) if crate::cmd::quartic::is_finite(&result.analysis) => Ok(Results {
+            result,
+            flight,
+            engineering,
+        }),
+        _ => Err(cfg
             .error_at(
                 "[flight]",
                 "the analysis overflows f64: no result can be written",
             )
-            .into());
+            .into()),
     }
-    for w in &r.warnings {
+}
+
+pub fn run(path: &str, o: &Overrides, options: &Options) -> Result<(), Failure> {
+    let cfg = overridden(path, o)?;
+    let res = results(&cfg, options)?;
+    for w in &res.result.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
-    if json_out {
+    if let Some(out) = &options.state_space {
+        let tau = res.flight.map(|(_, p)| p.tau);
+        let roots = res.result.analysis.roots;
+        crate::state_space::write(
+            out,
+            &crate::state_space::Export {
+                source: path,
+                command: "analyze",
+                model: &res.engineering.model,
+                tau,
+                eigenvalues: tau.map_or(roots, |t| roots.map(|z| z / t)),
+            },
+        )?;
+    }
+    if options.json {
         print(&format!(
             "{}\n",
-            serde_json::to_string_pretty(&to_json(&cfg, &r)).unwrap_or_default()
+            serde_json::to_string_pretty(&to_json(&cfg, &res)).unwrap_or_default()
         ))?;
     } else {
-        print(&page(&cfg, &r))?;
+        print(&page(&cfg, &res))?;
     }
     Ok(())
 }
 
-/// The `analyze --json` object: the config's path and the design point as
-/// the library serializes it.
+/// The `analyze --json` object: the config's path, the physical flight
+/// condition when there is one, the design point as the library
+/// serializes it and the engineer's outputs (`damp`, `mode_shapes`,
+/// `short_period_frequency`).
 #[derive(Serialize)]
 pub struct AnalyzeJson<'a> {
     file: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    flight: Option<FlightJson>,
     #[serde(flatten)]
     point: CaseView<'a>,
+    #[serde(flatten)]
+    engineering: &'a Engineering,
 }
 
-pub fn to_json<'a>(cfg: &'a config::Config, r: &'a CaseResult) -> AnalyzeJson<'a> {
+pub fn to_json<'a>(cfg: &'a config::Config, res: &'a Results) -> AnalyzeJson<'a> {
     AnalyzeJson {
         file: &cfg.path,
-        point: r.view(&cfg.case),
+        flight: res.flight.map(|(f, p)| f.json(&p)),
+        point: res
+            .result
+            .view_timed(&cfg.case, res.flight.map(|(_, p)| p.tau)),
+        engineering: &res.engineering,
     }
 }
 
-pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
+pub fn page(cfg: &config::Config, res: &Results) -> String {
+    let r = &res.result;
     let mut s = String::new();
     let _ = writeln!(s, "Design point of {}", cfg.path);
     design_point(&mut s, cfg, r);
+    if let Some((f, p)) = &res.flight {
+        physical(&mut s, f, p);
+    }
     derivatives(&mut s, &r.derivatives);
     s.push_str(&analysis_page(
         "The stability quartic (eqs 4–6):",
         &r.analysis,
-        None,
+        res.flight.map(|(_, p)| p.tau),
     ));
+    if let Some(f) = &res.engineering.short_period_frequency {
+        let _ = writeln!(s, "{}", crate::engineering::frequency_line(f));
+    }
     let lift_slope = r.coefficients.lift_slope.value;
     let m = Margins::of(&r.analysis.quartic, &r.derivatives, lift_slope);
     let _ = writeln!(
@@ -102,7 +178,63 @@ pub fn page(cfg: &config::Config, r: &CaseResult) -> String {
         m.static_margin.map_or("—".into(), |x| sig(x, 4)),
         m.manoeuvre_margin.map_or("—".into(), |x| sig(x, 4))
     );
+    s.push_str(&crate::engineering::tables(&res.engineering));
     s
+}
+
+/// The physical flight condition and what it gives (§3, eq 24).
+fn physical(s: &mut String, f: &PhysicalFlight, p: &FlightPoint) {
+    use stability_core::flight::Altitude;
+    let u = f.units;
+    let (len, mass, force) = u.symbols();
+    let l = u.length();
+    let air = match (f.altitude, f.atmosphere) {
+        (Some(Altitude::Pressure(h)), Some(_)) => {
+            format!(
+                "pressure altitude {} {len}, 1976 standard atmosphere",
+                sig(h, 6)
+            )
+        }
+        (Some(Altitude::Geometric(z)), Some(_)) => {
+            format!(
+                "geometric altitude {} {len}, 1976 standard atmosphere",
+                sig(z, 6)
+            )
+        }
+        _ => "ρ and a as given".to_string(),
+    };
+    let _ = writeln!(
+        s,
+        "  physical flight condition ({} units; {air}): ρ = {} kg/m³, a = {} m/s, V = M·a = {} m/s{}, ½ρV² = {} Pa",
+        u.name(),
+        sig(f.density, 5),
+        sig(f.speed_of_sound, 5),
+        sig(p.speed, 5),
+        if l == 1.0 {
+            String::new()
+        } else {
+            format!(" ({} {len}/s)", sig(p.speed / l, 5))
+        },
+        sig(p.dynamic_pressure, 5),
+    );
+    let _ = writeln!(
+        s,
+        "    m = {} {mass} (W = {} {force}), I_y = {} {mass}·{len}², S = {} {len}², c̄ = {} {len} (the planform's M.A.C.)",
+        sig(f.mass / u.mass(), 5),
+        sig(f.weight / u.force(), 5),
+        sig(f.pitch_inertia / u.inertia(), 5),
+        sig(f.area / (l * l), 5),
+        sig(f.chord / l, 5),
+    );
+    let _ = writeln!(
+        s,
+        "    → μ₁ = m/(½ρSc̄) = {}, i_B = I_y/(mc̄²) = {}, C_L·M² = W/(½ρa²S) = {}, C_L = {}, τ = m/(½ρSV) = {} s",
+        sig(f.mu1(), 5),
+        sig(f.i_b(), 4),
+        sig(f.cl_m2(), 4),
+        sig(p.c_l, 4),
+        sig(p.tau, 5),
+    );
 }
 
 /// The planform, flight condition, coefficients and damping theory.

@@ -288,7 +288,7 @@ impl Dimensional<'_> {
             s,
             "notation = \"dimensional\"\naxes = \"{}\"\nunits = \"{}\"\n\n[derivatives]",
             m.axes.as_str(),
-            m.units.as_str()
+            m.units.name()
         );
         for (n, v) in DimensionalDerivatives::NAMES
             .iter()

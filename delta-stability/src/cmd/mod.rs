@@ -5,4 +5,6 @@ pub mod convert;
 pub mod quartic;
 pub mod report;
 pub mod response;
+pub mod sensitivity;
 pub mod sweep;
+pub mod sweep_physical;

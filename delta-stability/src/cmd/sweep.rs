@@ -104,6 +104,9 @@ pub struct Grid {
     /// Each axis's values as written (formatted once, not once per row).
     text: [Vec<Box<str>>; 5],
     base: Case,
+    /// The physical flight condition of each planform, when the config's
+    /// is physical.
+    physical: Option<super::sweep_physical::PhysicalAxis>,
 }
 
 impl Grid {
@@ -126,8 +129,8 @@ impl Grid {
 
     /// Makes `case` the `i`-th design point (from the base point, whose other
     /// fields it keeps; no clone per point) and returns its grid values as
-    /// written.
-    fn set_point(&self, i: usize, case: &mut Case) -> [&str; 5] {
+    /// written, and the index of its planform.
+    fn set_point(&self, i: usize, case: &mut Case) -> ([&str; 5], usize) {
         let dims = self.dims();
         let mut k = i;
         let mut idx = [0usize; 5];
@@ -144,7 +147,12 @@ impl Grid {
         ];
         case.planform = self.planforms[idx[1]];
         [case.mach, _, case.h, case.mu1, case.i_b] = head;
-        std::array::from_fn(|k| &*self.text[k][idx[k]])
+        let mut text: [&str; 5] = std::array::from_fn(|k| &*self.text[k][idx[k]]);
+        if let Some(p) = &self.physical {
+            p.apply(idx[1], case);
+            [text[3], text[4]] = p.text(idx[1]);
+        }
+        (text, idx[1])
     }
 }
 
@@ -164,10 +172,14 @@ const RESULTS: [&str; 12] = [
     "error",
 ];
 
-/// The column names, in order.
-pub fn columns(derivatives: bool) -> Vec<&'static str> {
+/// The column names, in order (with a physical flight condition, the
+/// modes in seconds after the results).
+pub fn columns(derivatives: bool, physical: bool) -> Vec<&'static str> {
     let mut c: Vec<&str> = HEAD.to_vec();
     c.extend(&RESULTS[..11]);
+    if physical {
+        c.extend(super::sweep_physical::COLUMNS);
+    }
     if derivatives {
         c.extend(stability_core::Derivatives::QUARTIC_INPUTS);
     }
@@ -252,11 +264,16 @@ fn finite(d: &Derivatives, a: &Analysis) -> bool {
 /// The error of a point whose numbers overflow.
 const OVERFLOW: &str = "the design point's numbers overflow f64";
 
+/// The modes in seconds of a physical flight condition's point (`None`
+/// without one).
+type Seconds = Option<[Option<f64>; super::sweep_physical::COLUMNS.len()]>;
+
 fn write_point(
     out: &mut Vec<u8>,
     head: [&str; 5],
     r: Result<(&Derivatives, &Analysis), &dyn std::fmt::Display>,
     options: (bool, bool),
+    seconds: Seconds,
 ) {
     let (json, with_derivatives) = options;
     if json {
@@ -278,14 +295,16 @@ fn write_point(
     };
     match r {
         Ok((d, a)) => {
-            results(&mut row, d, a, with_derivatives);
+            results(&mut row, d, a, with_derivatives, seconds);
             if !json {
                 row.key("error");
             }
         }
         Err(e) => {
             if !json {
-                let n = RESULTS.len() - 1 + if with_derivatives { 15 } else { 0 };
+                let n = RESULTS.len() - 1
+                    + if with_derivatives { 15 } else { 0 }
+                    + seconds.map_or(0, |s| s.len());
                 for _ in 0..n {
                     row.key("");
                 }
@@ -300,7 +319,13 @@ fn write_point(
 
 /// A point's results: Routh, the verdict, the modes, eq (41), and the
 /// derivatives when asked for.
-fn results(row: &mut Row<'_>, d: &Derivatives, a: &Analysis, with_derivatives: bool) {
+fn results(
+    row: &mut Row<'_>,
+    d: &Derivatives,
+    a: &Analysis,
+    with_derivatives: bool,
+    seconds: Seconds,
+) {
     let sp = a.modes.short_period();
     let ph = a.modes.phugoid();
     row.boolean("stable", a.routh.stable);
@@ -314,6 +339,11 @@ fn results(row: &mut Row<'_>, d: &Derivatives, a: &Analysis, with_derivatives: b
     row.number("ph_im", ph.map(|m| m.im));
     row.number("m_thetadot", Some(a.damping_standard.m_thetadot));
     row.number("delta_m_thetadot", a.damping_standard.margin);
+    if let Some(values) = seconds {
+        for (name, v) in super::sweep_physical::COLUMNS.iter().zip(values) {
+            row.number(name, v);
+        }
+    }
     if with_derivatives {
         let values = d.quartic_input_values();
         for (name, v) in Derivatives::QUARTIC_INPUTS.iter().zip(values) {
@@ -336,8 +366,14 @@ fn block(grid: &Grid, range: std::ops::Range<usize>, options: (bool, bool)) -> V
         if options.0 && i > 0 {
             out.extend_from_slice(b",\n");
         }
-        let head = grid.set_point(i, &mut case);
+        let (head, k) = grid.set_point(i, &mut case);
         let key = i / per_aero;
+        let seconds = |a: Option<&Analysis>| {
+            grid.physical.as_ref().map(|p| match a {
+                Some(a) => p.seconds(k, case.mach, a),
+                None => [None; super::sweep_physical::COLUMNS.len()],
+            })
+        };
         match &last {
             Some((k, r)) if reuse && *k == key => {
                 let d = Derivatives {
@@ -346,16 +382,23 @@ fn block(grid: &Grid, range: std::ops::Range<usize>, options: (bool, bool)) -> V
                     ..r.derivatives
                 };
                 match Analysis::without_classical(&d) {
-                    Ok(a) => write_point(&mut out, head, Ok((&d, &a)), options),
-                    Err(e) => write_point(&mut out, head, Err(&e), options),
+                    Ok(a) => write_point(&mut out, head, Ok((&d, &a)), options, seconds(Some(&a))),
+                    Err(e) => write_point(&mut out, head, Err(&e), options, seconds(None)),
                 }
             }
             _ => match evaluate_point(&case) {
                 Ok(r) => {
-                    write_point(&mut out, head, Ok((&r.derivatives, &r.analysis)), options);
+                    let sec = seconds(Some(&r.analysis));
+                    write_point(
+                        &mut out,
+                        head,
+                        Ok((&r.derivatives, &r.analysis)),
+                        options,
+                        sec,
+                    );
                     last = Some((key, r));
                 }
-                Err(e) => write_point(&mut out, head, Err(&e), options),
+                Err(e) => write_point(&mut out, head, Err(&e), options, seconds(None)),
             },
         }
         if !options.0 {
@@ -365,8 +408,13 @@ fn block(grid: &Grid, range: std::ops::Range<usize>, options: (bool, bool)) -> V
     out
 }
 
-/// Builds the grid from the options and the base design point.
-pub fn grid(o: &Options, base: Case) -> Result<Grid, String> {
+/// Builds the grid from the options and the base design point (with its
+/// physical flight condition, when it has one).
+pub fn grid(
+    o: &Options,
+    base: Case,
+    physical: Option<&crate::config::physical::Physical>,
+) -> Result<Grid, String> {
     let or_base = |flag: &str, v: &Option<String>, base: f64| match v {
         Some(t) => parse_range(flag, t),
         None => Ok(vec![clean(base)]),
@@ -391,6 +439,14 @@ pub fn grid(o: &Options, base: Case) -> Result<Grid, String> {
             ..base.planform
         });
     }
+    let physical = match physical {
+        Some(p) => Some(super::sweep_physical::PhysicalAxis::new(
+            p,
+            &planforms,
+            [("mu1", o.mu1.is_some()), ("ib", o.ib.is_some())],
+        )?),
+        None => None,
+    };
     let mut num = zmij::Buffer::new();
     let mut text =
         |v: &[f64]| -> Vec<Box<str>> { v.iter().map(|&x| num.format(x).into()).collect() };
@@ -410,6 +466,7 @@ pub fn grid(o: &Options, base: Case) -> Result<Grid, String> {
         planforms,
         text,
         base,
+        physical,
     };
     match g.points() {
         Some(n) if n <= 200_000_000 => Ok(g),
@@ -446,7 +503,7 @@ pub fn run(o: &Options) -> Result<(), Failure> {
     let cfg = config::read(&o.config)?;
     let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
     let json = is_json(o).map_err(&bad)?;
-    let grid = grid(o, cfg.case).map_err(&bad)?;
+    let grid = grid(o, cfg.case, cfg.physical.as_ref()).map_err(&bad)?;
     let out = Path::new(&o.output);
     let write_err = |e: std::io::Error| Failure::Io(write_error(out, &e));
     let mut file = AtomicFile::create(out).map_err(write_err)?;
@@ -455,9 +512,13 @@ pub fn run(o: &Options) -> Result<(), Failure> {
     if json {
         file.write_all(b"[\n").map_err(write_err)?;
     } else {
-        file.write_all(columns(o.derivatives).join(",").as_bytes())
-            .and_then(|_| file.write_all(b"\n"))
-            .map_err(write_err)?;
+        file.write_all(
+            columns(o.derivatives, grid.physical.is_some())
+                .join(",")
+                .as_bytes(),
+        )
+        .and_then(|_| file.write_all(b"\n"))
+        .map_err(write_err)?;
     }
     write_points(&mut file, &grid, (json, o.derivatives), &bar).map_err(write_err)?;
     if json {

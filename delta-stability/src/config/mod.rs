@@ -13,6 +13,9 @@
 //! mu1 = 50.0            # relative density m/(½ρSc̄)
 //! i_b = 0.08            # pitching inertia B/(mc̄²)
 //! cl_m2 = 0.05          # C_L·M² = W/(½ρa²S), constant in level flight (eq 24)
+//! # or, instead of mu1, i_b and cl_m2, a physical flight condition
+//! # ([`physical`]): units = "si" | "ft", altitude (or geometric_altitude,
+//! # or rho with speed_of_sound), mass (or weight), I_y
 //!
 //! [model]               # optional
 //! damping = "faired"    # or garrick, garner-taper, slender, supersonic, transonic, transonic-frequency
@@ -24,10 +27,12 @@
 //! # drag_due_to_lift, aerodynamic_centre likewise
 //! ```
 //!
-//! Each value must lie in its range ([`limits`]); every error names the
-//! file, line and field.
+//! An optional `[control]` table gives the control derivatives of
+//! `--state-space` ([`crate::state_space`]). Each value must lie in its
+//! range ([`limits`]); every error names the file, line and field.
 
 pub mod limits;
+pub mod physical;
 pub mod raw;
 pub mod tables;
 
@@ -50,6 +55,9 @@ pub use tables::read_csv_table;
 pub struct Config {
     pub path: String,
     pub case: Case,
+    /// The physical flight condition, when `[flight]` gives one
+    /// ([`physical`]); `case` then holds the μ₁, i_B and C_L·M² it gives.
+    pub physical: Option<physical::Physical>,
     text: String,
     /// Where each value (and table) was written: field and span.
     spans: Vec<(String, Range<usize>)>,
@@ -74,6 +82,18 @@ struct Reader<'a> {
 impl Reader<'_> {
     fn err(&self, span: Range<usize>, field: &str, m: String) -> InputError {
         InputError::at(self.path, self.text, span, field, m)
+    }
+
+    /// An error at the value recorded under `field` (the file's start if
+    /// none was).
+    fn err_field(&self, field: &str, m: String) -> InputError {
+        let span = self
+            .spans
+            .iter()
+            .rev()
+            .find(|(f, _)| f == field)
+            .map_or(0..0, |(_, s)| s.clone());
+        self.err(span, field, m)
     }
 
     /// `v` within `limit`, its span recorded under `field`.
@@ -106,9 +126,8 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
     let f = raw.flight.get_ref();
     let mach = r.value(&f.mach, "[flight] mach", &limits::MACH)?;
     let h = r.value(&f.cg, "[flight] cg", &limits::CG)?;
-    let mu1 = r.value(&f.mu1, "[flight] mu1", &limits::MU1)?;
-    let i_b = r.value(&f.i_b, "[flight] i_b", &limits::I_B)?;
-    let cl_m2 = r.value(&f.cl_m2, "[flight] cl_m2", &limits::CL_M2)?;
+    let ([mu1, i_b, cl_m2], physical) =
+        physical::flight_parameters(&mut r, f, raw.flight.span(), &planform)?;
     let mut case = Case {
         planform,
         mach,
@@ -128,6 +147,7 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
     Ok(Config {
         path: path.to_string(),
         case,
+        physical,
         text: text.to_string(),
         spans: r.spans,
         overridden: Vec::new(),
@@ -262,6 +282,11 @@ fn model(r: &mut Reader<'_>, m: &RawModel, case: &mut Case) -> Result<(), Failur
 }
 
 impl Config {
+    /// The config's text, as read.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
     /// Records that the command line replaced `field` (`--mach 1.2`).
     pub fn overridden_by(&mut self, field: &'static str, flag: String) {
         self.overridden.push((field, flag));

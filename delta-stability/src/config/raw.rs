@@ -10,6 +10,9 @@ pub struct RawConfig {
     pub flight: Spanned<RawFlight>,
     #[serde(default)]
     pub model: Option<Spanned<RawModel>>,
+    /// The control derivatives, read by [`crate::state_space`].
+    #[serde(default)]
+    pub control: Option<toml::Value>,
 }
 
 #[derive(Deserialize)]
@@ -28,9 +31,20 @@ pub struct RawPlanform {
 pub struct RawFlight {
     pub mach: Spanned<f64>,
     pub cg: Spanned<f64>,
-    pub mu1: Spanned<f64>,
-    pub i_b: Spanned<f64>,
-    pub cl_m2: Spanned<f64>,
+    /// The non-dimensional flight condition (or the physical one below).
+    pub mu1: Option<Spanned<f64>>,
+    pub i_b: Option<Spanned<f64>>,
+    pub cl_m2: Option<Spanned<f64>>,
+    /// The physical flight condition instead ([`super::physical`]).
+    pub units: Option<Spanned<String>>,
+    pub altitude: Option<Spanned<f64>>,
+    pub geometric_altitude: Option<Spanned<f64>>,
+    pub rho: Option<Spanned<f64>>,
+    pub speed_of_sound: Option<Spanned<f64>>,
+    pub mass: Option<Spanned<f64>>,
+    pub weight: Option<Spanned<f64>>,
+    #[serde(rename = "I_y")]
+    pub i_y: Option<Spanned<f64>>,
 }
 
 #[derive(Deserialize)]

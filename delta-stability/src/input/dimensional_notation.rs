@@ -277,7 +277,7 @@ impl Reader<'_> {
                 format!("missing field `units`: the values' units, units = {what}"),
             ));
         };
-        Units::parse(u.get_ref()).ok_or_else(|| {
+        Units::parse(u.get_ref()).map_err(|_| {
             self.err(
                 u.span(),
                 "units",
@@ -299,7 +299,7 @@ impl Reader<'_> {
 
 /// "; did you mean `ft`?" for a misspelt or a colloquial units word.
 fn units_hint(word: &str) -> String {
-    let names = Units::ALL.map(Units::as_str);
+    let names = Units::ALL.map(Units::name);
     if let Some(n) = nearest(word, names) {
         return format!("; did you mean `{n}`?");
     }
@@ -532,7 +532,7 @@ impl Reader<'_> {
     /// g from `[flight] g` or the units' standard; g in the other units'
     /// magnitude is a units mistake.
     fn gravity(&self, f: &Given, units: Units) -> Result<f64, InputError> {
-        let standard = units.standard_gravity();
+        let standard = units.handbook_gravity();
         let Some((g, _)) = f.get("g") else {
             return Ok(standard);
         };
@@ -540,11 +540,11 @@ impl Reader<'_> {
             .into_iter()
             .find(|u| *u != units)
             .unwrap_or(units);
-        let og = other.standard_gravity();
+        let og = other.handbook_gravity();
         if (g - og).abs() < 0.02 * og {
             return Err(self.at_given(f, "g", "flight", format!(
                 "g = {} is the standard gravity in units = \"{}\", but the file says units = \"{}\" (g = {standard}): check the units of every value",
-                num(*g), other.as_str(), units.as_str()
+                num(*g), other.name(), units.name()
             )));
         }
         Ok(*g)

@@ -24,6 +24,8 @@ pub struct RawFile {
     pub parameters: Option<Table>,
     pub dimensional: Option<Spanned<RawDimensional>>,
     pub st_file: Option<Spanned<String>>,
+    /// The control derivatives, read by [`crate::state_space`].
+    pub control: Option<toml::Value>,
 }
 
 #[derive(Deserialize)]

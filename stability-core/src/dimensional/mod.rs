@@ -66,7 +66,6 @@ pub use analysis::{DimensionalAnalysis, DimensionalError};
 pub use report::{Dropped, Reference, ReportEquivalent};
 pub use system::DescriptorSystem;
 
-use crate::atmosphere::{FOOT, G0, KG_PER_SLUG};
 use nalgebra::Matrix4;
 use serde::Serialize;
 
@@ -99,67 +98,7 @@ impl Axes {
     }
 }
 
-/// The unit system of a set: lengths, masses and the standard g.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Units {
-    /// ft, slug, s; g = 32.174 ft/s².
-    Ft,
-    /// m, kg, s; g = 9.806 65 m/s².
-    Si,
-}
-
-/// Standard gravity in ft/s² as the handbooks use it (g₀/0.3048 =
-/// 32.1740 ft/s², to the digits CR-2144 and the issue use).
-pub const G_FT: f64 = 32.174;
-
-impl Units {
-    pub const ALL: [Units; 2] = [Units::Ft, Units::Si];
-
-    /// `ft`, `si` (the file's spelling).
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Units::Ft => "ft",
-            Units::Si => "si",
-        }
-    }
-
-    pub fn parse(s: &str) -> Option<Units> {
-        Units::ALL.into_iter().find(|u| u.as_str() == s)
-    }
-
-    /// The standard g in these units (ft/s² or m/s²).
-    pub fn standard_gravity(self) -> f64 {
-        match self {
-            Units::Ft => G_FT,
-            Units::Si => G0,
-        }
-    }
-
-    /// Metres per unit length (0.3048 for ft).
-    pub fn metres(self) -> f64 {
-        match self {
-            Units::Ft => FOOT,
-            Units::Si => 1.0,
-        }
-    }
-
-    /// Kilograms per unit mass (14.594 for the slug).
-    pub fn kilograms(self) -> f64 {
-        match self {
-            Units::Ft => KG_PER_SLUG,
-            Units::Si => 1.0,
-        }
-    }
-
-    /// The unit of length, for messages (`ft`, `m`).
-    pub fn length(self) -> &'static str {
-        match self {
-            Units::Ft => "ft",
-            Units::Si => "m",
-        }
-    }
-}
+pub use crate::units::Units;
 
 /// The derivatives per unit mass (X, Z) and per unit pitching inertia (M),
 /// as CR-2144 and Etkin & Reid tabulate them: X_u = (∂X/∂u)/m, …,

@@ -79,7 +79,7 @@ impl Reference {
     /// `units`, when the physical quantities are known.
     pub fn dimensional(&self, v: f64, units: Units) -> Option<Dimensional> {
         let p = self.physical?;
-        let (l, kg) = (units.metres(), units.kilograms());
+        let (l, kg) = (units.length(), units.mass());
         Some(Dimensional {
             v: v * l,
             rho: p.rho * kg / (l * l * l),
@@ -92,7 +92,7 @@ impl Reference {
     /// I_y in kg·m² when the physical quantities are known.
     pub fn i_y_si(&self, units: Units) -> Option<f64> {
         let p = self.physical?;
-        Some(p.i_y * units.kilograms() * units.metres().powi(2))
+        Some(p.i_y * units.mass() * units.length().powi(2))
     }
 }
 

@@ -1,0 +1,221 @@
+//! The longitudinal motion as a linear state-space model, ẋ = A x + B δ,
+//! with the states an engineer reads and exports: x = (u/V, α, q, θ) —
+//! the speed change as a fraction of V, the incidence α = w/V (rad), the
+//! pitch rate q and the pitch angle θ (rad) — and at most one control δ
+//! (rad).
+//!
+//! The model is in one of two units of time ([`TimeUnit`]): the report's τ
+//! (§3: t̂ = t/τ, q̂ = dθ/dt̂, eqs 2) or seconds. From eqs (2) in units of τ
+//! ([`crate::response::StateSpace`]) the model in seconds follows by the
+//! change of variable q = q̂/τ and d/dt = (1/τ)d/dt̂:
+//! A_s = (1/τ)·D·A_τ·D⁻¹, B_s = (1/τ)·D·B_τ with D = diag(1, 1, 1/τ, 1).
+//!
+//! A derivative set in dimensional form (per unit mass and inertia, states
+//! u, w in m/s or ft/s, q in rad/s, θ) enters through
+//! [`LinearModel::of_dimensional`], which divides u and w by the reference
+//! speed V: A = S⁻¹·A_dim·S, B = S⁻¹·B_dim with S = diag(V, V, 1, 1).
+//!
+//! # The control
+//! A control deflection δ (rad) with the coefficient derivatives C_Xδ,
+//! C_Zδ (forces on ½ρV²S, along the report's stability axes, X forward and
+//! Z down) and C_mδ (moment on ½ρV²Sc̄) is a step of eqs (2)'s x₀ = C_Xδ·δ,
+//! z₀ = C_Zδ·δ and m₀ = (μ₁/i_B)·C_mδ·δ: the angular acceleration in units
+//! of τ is M·τ²/B = C_m·½ρV²Sc̄·τ²/(i_B·mc̄²) = (μ₁/i_B)·C_m, and the
+//! vertical one Z·τ/(mV) = C_Z.
+
+use crate::Derivatives;
+use crate::response::{ResponseError, Simplifications, StateSpace};
+use nalgebra::{Matrix4, Vector4};
+use num_complex::Complex64;
+use serde::Serialize;
+
+/// The unit of time of a model (and of its eigenvalues).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TimeUnit {
+    /// The report's τ = m/(½ρSV) (§3); q is q̂ = dθ/dt̂.
+    Tau,
+    /// Seconds; q in rad/s.
+    Seconds,
+}
+
+impl TimeUnit {
+    /// `"tau"` or `"s"`.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            TimeUnit::Tau => "tau",
+            TimeUnit::Seconds => "s",
+        }
+    }
+}
+
+/// The states of a [`LinearModel`], in order.
+pub const STATES: [&str; 4] = ["u/V", "alpha", "q", "theta"];
+
+/// The control derivatives of one control δ (rad), coefficients per
+/// radian: C_Xδ and C_Zδ on ½ρV²S, C_mδ on ½ρV²Sc̄ (see the module's
+/// documentation).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Control {
+    /// What δ is ("elevator", "elevon", …).
+    pub name: String,
+    pub c_x: f64,
+    pub c_z: f64,
+    pub c_m: f64,
+}
+
+/// ẋ = A x + B δ with x = (u/V, α, q, θ) ([`STATES`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinearModel {
+    pub a: Matrix4<f64>,
+    /// The control column, when there is a control.
+    pub b: Option<Vector4<f64>>,
+    /// The control's name, when there is one.
+    pub input: Option<String>,
+    pub time: TimeUnit,
+}
+
+impl LinearModel {
+    /// Eqs (2) of a derivative set in units of τ (the matrices of
+    /// [`StateSpace`]), with B from `control` when one is given.
+    pub fn of_report(d: &Derivatives, control: Option<&Control>) -> Result<Self, ResponseError> {
+        let ss = StateSpace::new(d, Simplifications::default())?;
+        let a = Matrix4::from_fn(|i, j| ss.a[(i, j)]);
+        let b = control.map(|c| {
+            let forcing = [c.c_x, c.c_z, d.mu1 / d.i_b * c.c_m];
+            Vector4::from_fn(|i, _| (0..3).map(|k| ss.b[(i, k)] * forcing[k]).sum())
+        });
+        let model = LinearModel {
+            a,
+            b,
+            input: control.map(|c| c.name.clone()),
+            time: TimeUnit::Tau,
+        };
+        if model.is_finite() {
+            Ok(model)
+        } else {
+            Err(ResponseError::MatrixOverflow)
+        }
+    }
+
+    /// A model in seconds from the dimensional matrices of states
+    /// (u, w, q, θ) — u, w in m/s or ft/s — and the reference speed V in
+    /// the same units (see the module's documentation).
+    pub fn of_dimensional(
+        a: Matrix4<f64>,
+        b: Option<Vector4<f64>>,
+        input: Option<String>,
+        speed: f64,
+    ) -> LinearModel {
+        let s = [speed, speed, 1.0, 1.0];
+        LinearModel {
+            a: Matrix4::from_fn(|i, j| a[(i, j)] * s[j] / s[i]),
+            b: b.map(|b| Vector4::from_fn(|i, _| b[i] / s[i])),
+            input,
+            time: TimeUnit::Seconds,
+        }
+    }
+
+    /// This model in seconds, given τ (s); a model already in seconds is
+    /// returned as it is.
+    pub fn in_seconds(&self, tau: f64) -> LinearModel {
+        if self.time == TimeUnit::Seconds {
+            return self.clone();
+        }
+        let d = [1.0, 1.0, 1.0 / tau, 1.0];
+        LinearModel {
+            a: Matrix4::from_fn(|i, j| d[i] * self.a[(i, j)] / d[j] / tau),
+            b: self.b.map(|b| Vector4::from_fn(|i, _| d[i] * b[i] / tau)),
+            input: self.input.clone(),
+            time: TimeUnit::Seconds,
+        }
+    }
+
+    /// The unit of each state: `1`, `rad`, `rad/s` (or `rad/tau`), `rad`.
+    pub fn state_units(&self) -> [&'static str; 4] {
+        let q = match self.time {
+            TimeUnit::Tau => "rad/tau",
+            TimeUnit::Seconds => "rad/s",
+        };
+        ["1", "rad", q, "rad"]
+    }
+
+    /// Whether every entry is finite.
+    pub fn is_finite(&self) -> bool {
+        self.a
+            .iter()
+            .chain(self.b.iter().flatten())
+            .all(|v| v.is_finite())
+    }
+
+    /// The eigenvalues of A by nalgebra's Schur decomposition, conjugates
+    /// adjacent: for a set with no quartic of its own. (A derivative set in
+    /// the report's notation has exact roots from its quartic, which these
+    /// agree with to rounding.)
+    pub fn eigenvalues(&self) -> [Complex64; 4] {
+        let ev = self.a.complex_eigenvalues();
+        let mut out = [ev[0], ev[1], ev[2], ev[3]];
+        out.sort_by(|x, y| y.norm().total_cmp(&x.norm()).then(y.im.total_cmp(&x.im)));
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::examples::tailless_delta_45_coupled;
+
+    #[test]
+    fn seconds_and_tau_have_the_same_motion() {
+        // ẋ_s = A_s x_s must be ẋ_τ/τ with q = q̂/τ: check on a vector.
+        let d = tailless_delta_45_coupled();
+        let c = Control {
+            name: "elevon".into(),
+            c_x: 0.01,
+            c_z: -0.4,
+            c_m: -0.3,
+        };
+        let m = LinearModel::of_report(&d, Some(&c)).unwrap();
+        let tau = 2.5;
+        let s = m.in_seconds(tau);
+        let x_tau = Vector4::new(0.01, 0.02, -0.03, 0.04);
+        let x_s = Vector4::new(x_tau[0], x_tau[1], x_tau[2] / tau, x_tau[3]);
+        let dx_tau = m.a * x_tau + m.b.unwrap() * 0.1;
+        let dx_s = s.a * x_s + s.b.unwrap() * 0.1;
+        // d/dt = (1/τ) d/dt̂, and dq/dt = (1/τ²) dq̂/dt̂
+        let expect = [
+            dx_tau[0] / tau,
+            dx_tau[1] / tau,
+            dx_tau[2] / (tau * tau),
+            dx_tau[3] / tau,
+        ];
+        for i in 0..4 {
+            assert!((dx_s[i] - expect[i]).abs() < 1e-15, "{i}");
+        }
+        // the control: m₀ = (μ₁/i_B)·C_mδ enters q̂'s row through B's m₀
+        // column (1), plus m_ẇ/i_B times the ẇ row's z₀ term.
+        let a_mass = 1.0 - d.z_wdot / d.mu1;
+        let wdot = c.c_z / a_mass;
+        assert!((m.b.unwrap()[1] - wdot).abs() < 1e-15);
+        let q = d.mu1 / d.i_b * c.c_m + d.m_wdot / d.i_b * wdot;
+        assert!((m.b.unwrap()[2] - q).abs() < 1e-12);
+    }
+
+    #[test]
+    fn dimensional_states_scale_by_the_speed() {
+        let a = Matrix4::new(
+            -0.02, 0.1, 0.0, -32.2, -0.3, -1.1, 300.0, 0.0, 0.0001, -0.01, -0.9, 0.0, 0.0, 0.0,
+            1.0, 0.0,
+        );
+        let m = LinearModel::of_dimensional(a, None, None, 300.0);
+        assert_eq!(m.a[(0, 3)], -32.2 / 300.0);
+        assert_eq!(m.a[(1, 2)], 1.0);
+        assert!((m.a[(2, 0)] - 0.03).abs() < 1e-15);
+        // a similarity transform keeps the eigenvalues
+        let (e1, e2) = (
+            a.complex_eigenvalues().map(|z| z.norm()).sum(),
+            m.a.complex_eigenvalues().map(|z| z.norm()).sum(),
+        );
+        assert!(((e1 - e2) / e1).abs() < 1e-12);
+    }
+}
