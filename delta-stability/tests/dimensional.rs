@@ -776,3 +776,45 @@ fn the_alternative_forms_of_the_trim_and_the_reference_are_the_same_set() {
     let err = stderr(&run_ok(&["quartic", path(&f)]));
     assert!(err.contains("[flight] W0 not given: taken as 0"), "{err}");
 }
+
+/// The engineer's outputs of a dimensional set (damp(), mode shapes, the
+/// short-period frequency requirement) are those of the same aircraft typed
+/// in another notation: Etkin & Reid's 747 as dimensional derivatives (SI,
+/// stability axes) and as American coefficients give the same mode shapes
+/// to the rounding of their printed data (the American route's shapes are
+/// tested against Etkin & Reid's printed matrix in tests/engineering.rs).
+#[test]
+fn a_dimensional_set_has_the_mode_shapes_of_the_same_aircraft_in_american_notation() {
+    let dim = quartic("examples/aircraft/boeing-747-etkin-reid.toml");
+    let american = quartic("examples/boeing-747-american.toml");
+    for key in ["damp", "mode_shapes", "short_period_frequency"] {
+        assert!(!dim[key].is_null(), "no {key} for a dimensional set");
+    }
+    let shape = |v: &Value, mode: &str, state: &str| {
+        let m = v["mode_shapes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["mode"] == mode)
+            .unwrap_or_else(|| panic!("no {mode}"));
+        let c = &m[state];
+        (
+            c["magnitude"].as_f64().unwrap(),
+            c["phase_deg"].as_f64().unwrap(),
+        )
+    };
+    for mode in ["short_period", "phugoid"] {
+        for state in ["u_over_v", "alpha", "q", "theta"] {
+            let (a, pa) = shape(&dim, mode, state);
+            let (b, pb) = shape(&american, mode, state);
+            assert!(
+                (a - b).abs() <= 5e-3 * b.abs().max(1e-3) && (pa - pb).abs() < 0.5,
+                "{mode} {state}: {a} ∠{pa}° vs {b} ∠{pb}°"
+            );
+        }
+    }
+    let cap = |v: &Value| v["short_period_frequency"]["cap"].as_f64();
+    let (c1, c2) = (cap(&dim), cap(&american));
+    assert!(c1.is_some() && c2.is_some(), "{dim:#?}");
+    assert!((c1.unwrap() - c2.unwrap()).abs() < 2e-3 * c2.unwrap());
+}
