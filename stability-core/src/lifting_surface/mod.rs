@@ -58,15 +58,19 @@
 //! derivatives carry Desmarais' approximation error (up to 1 %): ask for
 //! ω̄ = 0 for quasi-steady values, which are exact.
 
+pub mod cache;
 mod derivatives;
 pub mod doublet_line;
 pub mod figures;
+pub mod frequency;
 pub mod kernel;
 mod lattice;
 mod solve;
 
 pub use crate::geometry::Trapezoid;
+pub use cache::Harmonic;
 pub use derivatives::LiftingSurfaceDerivatives;
+pub use frequency::FrequencyTable;
 pub use doublet_line::LineRule;
 pub use kernel::I1Approximation;
 pub use lattice::{Box, Extrapolation, Lattice, LatticeSpec, Spacing};
@@ -129,4 +133,18 @@ pub struct Solution {
     pub lift_q: f64,
     /// μ_q: in-phase moment (h = 0) per unit rate.
     pub moment_q: f64,
+}
+
+/// The quasi-steady [`Solution`] at one Mach number with the exact Mach
+/// derivatives of its in-phase numbers ([`Lattice::solve_steady`]): what the
+/// aerodynamic model's lift slope and aerodynamic centre, and their d/dM in
+/// eqs (27)–(29), come from.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Steady {
+    pub solution: Solution,
+    /// dℓ_α/dM, dμ_α/dM, dℓ_q/dM, dμ_q/dM.
+    pub d_lift_alpha: f64,
+    pub d_moment_alpha: f64,
+    pub d_lift_q: f64,
+    pub d_moment_q: f64,
 }
