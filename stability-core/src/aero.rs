@@ -11,6 +11,7 @@
 
 use crate::display::Num;
 use crate::geometry::Planform;
+use crate::lifting_surface::{LiftingSurfaceError, Steady, cache};
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -60,6 +61,13 @@ pub enum AeroError {
         Num(*.0), defaults::MACH_MAX
     )]
     OutsideDefaults(f64),
+    #[error(
+        "the lifting-surface lift slope and aerodynamic centre (aero = \"lifting-surface\") come from a subsonic theory: they need 0 ≤ M < 1, not M = {}; at and above M = 1 use the default model",
+        Num(*.0)
+    )]
+    LatticeMach(f64),
+    #[error("the lifting-surface lift slope and aerodynamic centre: {0}")]
+    LiftingSurface(LiftingSurfaceError),
 }
 
 /// A table of a coefficient against Mach number, interpolated by the
@@ -357,6 +365,51 @@ pub enum Source {
     Default,
     /// The user's table.
     Table(Table),
+    /// The doublet lattice's steady solution ([`lifting_surface_steady`]),
+    /// 0 ≤ M < 1 (an error at and above M = 1): for the lift slope and the
+    /// aerodynamic centre, with their exact Mach derivatives. It gives no
+    /// drag: for C_D0 and K it means [`Source::Default`] (K = 1/a with the
+    /// lattice's a).
+    LiftingSurface,
+}
+
+/// The named aerodynamic models of configs (`[model] aero = …`) and of the
+/// command line (`--aero`): where the lift slope and aerodynamic centre
+/// come from when no table gives them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AeroModelName {
+    /// The methods of [`defaults`] (docs/models.md).
+    Default,
+    /// The doublet lattice below M = 1 ([`Source::LiftingSurface`]).
+    LiftingSurface,
+}
+
+impl AeroModelName {
+    pub const ALL: [AeroModelName; 2] = [AeroModelName::Default, AeroModelName::LiftingSurface];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            AeroModelName::Default => "default",
+            AeroModelName::LiftingSurface => "lifting-surface",
+        }
+    }
+
+    /// The model of this name, or `None`.
+    pub fn parse(s: &str) -> Option<AeroModelName> {
+        Self::ALL.into_iter().find(|m| m.name() == s)
+    }
+}
+
+/// The lattice's steady solution of the planform's shape at Mach `m`, with
+/// its Mach derivatives: one solve per (shape, M), cached
+/// ([`cache::steady`]).
+pub fn lifting_surface_steady(p: &Planform, m: f64) -> Result<Steady, AeroError> {
+    if !(m < 1.0) {
+        return Err(AeroError::LatticeMach(m));
+    }
+    let wing = cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)
+        .map_err(AeroError::LiftingSurface)?;
+    cache::steady(&wing, m).map_err(AeroError::LiftingSurface)
 }
 
 /// The aerodynamic model: one source per coefficient.
@@ -383,11 +436,32 @@ pub struct Coefficients {
 }
 
 impl AeroModel {
+    /// The model named `name`: the lift slope and aerodynamic centre from
+    /// it, unless a table of this model gives them (a table wins); the
+    /// other coefficients as they are.
+    pub fn with_name(self, name: AeroModelName) -> AeroModel {
+        let named = |s: Source| match (s, name) {
+            (Source::Table(t), _) => Source::Table(t),
+            (_, AeroModelName::Default) => Source::Default,
+            (_, AeroModelName::LiftingSurface) => Source::LiftingSurface,
+        };
+        AeroModel {
+            lift_slope: named(self.lift_slope),
+            aerodynamic_centre: named(self.aerodynamic_centre),
+            ..self
+        }
+    }
+
     /// The coefficients of `p` at Mach `m`.
     pub fn at(&self, p: &Planform, m: f64) -> Result<Coefficients, AeroError> {
-        let get = |s: &Source, f: fn(&Planform, f64) -> Value| match s {
-            Source::Table(t) => t.at(m),
-            Source::Default => {
+        type Of = fn(&Steady) -> (f64, f64);
+        let get = |s: &Source, f: fn(&Planform, f64) -> Value, lattice: Option<Of>| match (s, lattice) {
+            (Source::Table(t), _) => t.at(m),
+            (Source::LiftingSurface, Some(g)) => {
+                let (v, d) = g(&lifting_surface_steady(p, m)?);
+                Ok(Value::new(v, d))
+            }
+            (Source::Default | Source::LiftingSurface, _) => {
                 if (0.0..=defaults::MACH_MAX).contains(&m) {
                     Ok(f(p, m))
                 } else {
@@ -395,18 +469,22 @@ impl AeroModel {
                 }
             }
         };
-        let lift_slope = get(&self.lift_slope, defaults::lift_slope)?;
+        let lift_slope = get(&self.lift_slope, defaults::lift_slope, Some(Steady::lift_slope))?;
         let drag_due_to_lift = match &self.drag_due_to_lift {
             Source::Table(t) => t.at(m)?,
             // K = 1/a with the model's own lift slope (tables included)
-            Source::Default => defaults::no_suction(lift_slope),
+            Source::Default | Source::LiftingSurface => defaults::no_suction(lift_slope),
         };
         Ok(Coefficients {
             mach: m,
             lift_slope,
-            zero_lift_drag: get(&self.zero_lift_drag, defaults::zero_lift_drag)?,
+            zero_lift_drag: get(&self.zero_lift_drag, defaults::zero_lift_drag, None)?,
             drag_due_to_lift,
-            aerodynamic_centre: get(&self.aerodynamic_centre, defaults::aerodynamic_centre)?,
+            aerodynamic_centre: get(
+                &self.aerodynamic_centre,
+                defaults::aerodynamic_centre,
+                Some(Steady::aerodynamic_centre),
+            )?,
         })
     }
 }
