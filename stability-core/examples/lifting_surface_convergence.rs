@@ -98,17 +98,34 @@ const FIXTURE: &str = concat!(
 /// (in the same order): the cases that differ by more than 1e-9, relative.
 fn stale(computed: &[[f64; 12]]) -> Result<Vec<String>, String> {
     let text = std::fs::read_to_string(FIXTURE).map_err(|e| format!("{FIXTURE}: {e}"))?;
-    let f: serde_json::Value = serde_json::from_str(&text).map_err(|e| format!("{FIXTURE}: {e}"))?;
+    let f: serde_json::Value =
+        serde_json::from_str(&text).map_err(|e| format!("{FIXTURE}: {e}"))?;
     let cases = f["cases"].as_array().ok_or("no cases")?;
     if cases.len() != computed.len() {
-        return Ok(vec![format!("{} cases, not {}", cases.len(), computed.len())]);
+        return Ok(vec![format!(
+            "{} cases, not {}",
+            cases.len(),
+            computed.len()
+        )]);
     }
     let mut out = Vec::new();
     for (c, fine) in cases.iter().zip(computed) {
-        let dense: Vec<f64> = c["dense"].as_array().ok_or("no dense")?.iter().filter_map(|v| v.as_f64()).collect();
-        let same = dense.len() == 12 && dense.iter().zip(fine).all(|(y, x)| (x - y).abs() <= 1e-9 * (1.0 + y.abs()));
+        let dense: Vec<f64> = c["dense"]
+            .as_array()
+            .ok_or("no dense")?
+            .iter()
+            .filter_map(|v| v.as_f64())
+            .collect();
+        let same = dense.len() == 12
+            && dense
+                .iter()
+                .zip(fine)
+                .all(|(y, x)| (x - y).abs() <= 1e-9 * (1.0 + y.abs()));
         if !same {
-            out.push(format!("{} at M = {}, ω̄ = {}", c["wing"], c["mach"], c["omega_bar"]));
+            out.push(format!(
+                "{} at M = {}, ω̄ = {}",
+                c["wing"], c["mach"], c["omega_bar"]
+            ));
         }
     }
     Ok(out)
@@ -152,7 +169,10 @@ fn main() {
         match stale(&computed) {
             Ok(bad) if bad.is_empty() => eprintln!("{FIXTURE} is the dense lattice's"),
             Ok(bad) => {
-                eprintln!("{FIXTURE} differs from the dense lattice for:\n  {}", bad.join("\n  "));
+                eprintln!(
+                    "{FIXTURE} differs from the dense lattice for:\n  {}",
+                    bad.join("\n  ")
+                );
                 std::process::exit(1);
             }
             Err(e) => {

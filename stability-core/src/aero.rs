@@ -455,21 +455,26 @@ impl AeroModel {
     /// The coefficients of `p` at Mach `m`.
     pub fn at(&self, p: &Planform, m: f64) -> Result<Coefficients, AeroError> {
         type Of = fn(&Steady) -> (f64, f64);
-        let get = |s: &Source, f: fn(&Planform, f64) -> Value, lattice: Option<Of>| match (s, lattice) {
-            (Source::Table(t), _) => t.at(m),
-            (Source::LiftingSurface, Some(g)) => {
-                let (v, d) = g(&lifting_surface_steady(p, m)?);
-                Ok(Value::new(v, d))
-            }
-            (Source::Default | Source::LiftingSurface, _) => {
-                if (0.0..=defaults::MACH_MAX).contains(&m) {
-                    Ok(f(p, m))
-                } else {
-                    Err(AeroError::OutsideDefaults(m))
+        let get =
+            |s: &Source, f: fn(&Planform, f64) -> Value, lattice: Option<Of>| match (s, lattice) {
+                (Source::Table(t), _) => t.at(m),
+                (Source::LiftingSurface, Some(g)) => {
+                    let (v, d) = g(&lifting_surface_steady(p, m)?);
+                    Ok(Value::new(v, d))
                 }
-            }
-        };
-        let lift_slope = get(&self.lift_slope, defaults::lift_slope, Some(Steady::lift_slope))?;
+                (Source::Default | Source::LiftingSurface, _) => {
+                    if (0.0..=defaults::MACH_MAX).contains(&m) {
+                        Ok(f(p, m))
+                    } else {
+                        Err(AeroError::OutsideDefaults(m))
+                    }
+                }
+            };
+        let lift_slope = get(
+            &self.lift_slope,
+            defaults::lift_slope,
+            Some(Steady::lift_slope),
+        )?;
         let drag_due_to_lift = match &self.drag_due_to_lift {
             Source::Table(t) => t.at(m)?,
             // K = 1/a with the model's own lift slope (tables included)

@@ -244,7 +244,9 @@ fn damping_at(
             case.omega_bar,
             harmonic,
         )?),
-        DampingModel::Theory(t) => Ok(damping_derivatives_with(t, wing, h, m, omega_bar, harmonic)?),
+        DampingModel::Theory(t) => Ok(damping_derivatives_with(
+            t, wing, h, m, omega_bar, harmonic,
+        )?),
         DampingModel::Faired => faired(wing, h, m),
     }
 }
@@ -302,7 +304,11 @@ pub fn evaluate_point_with(case: &Case, harmonic: Harmonic) -> Result<CaseResult
     evaluate_with(case, false, harmonic)
 }
 
-fn evaluate_with(case: &Case, classical: bool, harmonic: Harmonic) -> Result<CaseResult, CaseError> {
+fn evaluate_with(
+    case: &Case,
+    classical: bool,
+    harmonic: Harmonic,
+) -> Result<CaseResult, CaseError> {
     case.check()?;
     let point = Point::new(case, classical, harmonic)?;
     let (run, frequency) = if case.damping.uses_frequency() {
@@ -499,4 +505,3 @@ fn next_iterate(w: f64, r: f64, previous: Option<(f64, f64)>) -> f64 {
         relaxed
     }
 }
-

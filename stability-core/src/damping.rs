@@ -394,7 +394,8 @@ fn lifting_surface(
         out.warnings.push(Warning::LatticeNearSonic { mach });
     }
     if w > LATTICE_OMEGA_BAR {
-        out.warnings.push(Warning::LatticeHighFrequency { omega_bar: w });
+        out.warnings
+            .push(Warning::LatticeHighFrequency { omega_bar: w });
     }
     Ok(solution.derivatives(h, 0.0)?.damping())
 }

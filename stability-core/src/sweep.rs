@@ -137,7 +137,10 @@ impl Sweep {
                 ..base.planform
             });
         }
-        let points = axes.lens().iter().try_fold(1usize, |a, &d| a.checked_mul(d));
+        let points = axes
+            .lens()
+            .iter()
+            .try_fold(1usize, |a, &d| a.checked_mul(d));
         if !points.is_some_and(|n| n <= MAX_POINTS) {
             return Err(SweepError::TooLarge { points });
         }
@@ -210,9 +213,12 @@ impl Sweep {
     /// Whether the model needs the lifting surface's solves.
     fn uses_lattice(&self) -> bool {
         use crate::aero::Source;
-        let lattice_aero = [&self.base.aero.lift_slope, &self.base.aero.aerodynamic_centre]
-            .iter()
-            .any(|s| matches!(s, Source::LiftingSurface));
+        let lattice_aero = [
+            &self.base.aero.lift_slope,
+            &self.base.aero.aerodynamic_centre,
+        ]
+        .iter()
+        .any(|s| matches!(s, Source::LiftingSurface));
         let lattice_damping =
             matches!(self.base.damping, DampingModel::Theory(t) if t.is_lifting_surface());
         lattice_aero || lattice_damping
@@ -249,6 +255,11 @@ impl Sweep {
             let key = i / per_aero;
             match &last {
                 Some((k, r)) if reuse && *k == key => {
+                    // the point's own values checked as `evaluate_point` would
+                    if let Err(e) = case.check() {
+                        out.push_err(e.into());
+                        continue;
+                    }
                     let d = Derivatives {
                         mu1: case.mu1,
                         i_b: case.i_b,
@@ -390,13 +401,17 @@ impl Points {
         self.verdict.push(Some(a.verdict));
         self.sp_re.push(or_nan(sp.map(|m| m.re)));
         self.sp_im.push(or_nan(sp.map(|m| m.im)));
-        self.sp_cycles_to_half.push(or_nan(sp.and_then(|m| m.cycles_to_half)));
-        self.sp_damping_ratio.push(or_nan(sp.and_then(|m| m.damping_ratio)));
-        self.sp_omega_bar.push(or_nan(sp.and_then(|m| m.frequency_parameter)));
+        self.sp_cycles_to_half
+            .push(or_nan(sp.and_then(|m| m.cycles_to_half)));
+        self.sp_damping_ratio
+            .push(or_nan(sp.and_then(|m| m.damping_ratio)));
+        self.sp_omega_bar
+            .push(or_nan(sp.and_then(|m| m.frequency_parameter)));
         self.ph_re.push(or_nan(ph.map(|m| m.re)));
         self.ph_im.push(or_nan(ph.map(|m| m.im)));
         self.m_thetadot.push(a.damping_standard.m_thetadot);
-        self.delta_m_thetadot.push(or_nan(a.damping_standard.margin));
+        self.delta_m_thetadot
+            .push(or_nan(a.damping_standard.margin));
         if let Some(ds) = &mut self.derivatives {
             ds.push(*d);
         }
@@ -432,8 +447,22 @@ impl Points {
             ($($c:ident),*) => { $( self.$c.append(&mut other.$c); )* };
         }
         columns!(
-            mach, sweep_deg, cg, mu1, i_b, stable, verdict, sp_re, sp_im, sp_cycles_to_half,
-            sp_damping_ratio, sp_omega_bar, ph_re, ph_im, m_thetadot, delta_m_thetadot
+            mach,
+            sweep_deg,
+            cg,
+            mu1,
+            i_b,
+            stable,
+            verdict,
+            sp_re,
+            sp_im,
+            sp_cycles_to_half,
+            sp_damping_ratio,
+            sp_omega_bar,
+            ph_re,
+            ph_im,
+            m_thetadot,
+            delta_m_thetadot
         );
         if let (Some(a), Some(b)) = (&mut self.derivatives, &mut other.derivatives) {
             a.append(b);

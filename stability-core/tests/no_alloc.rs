@@ -2,9 +2,12 @@
 //! functions, the quartic's roots and a derivative set's whole analysis
 //! (roots at any scale, modes, Routh, §8 criteria, eq 7 check), and a
 //! design point's evaluation from its planform (coefficients, derivatives
-//! of every theory, the frequency iteration, warnings). A counting global
-//! allocator sees no allocation while they run. (One test, so that no
-//! other test's allocations run beside it.)
+//! of every theory, the frequency iteration, warnings) — the lifting
+//! surface's included once its solves are in the cache (allocation on
+//! first use is allowed; after it, a design point is a cache lookup and an
+//! axis transfer, and a sweep's frequency iteration an interpolation). A
+//! counting global allocator sees no allocation while they run. (One test,
+//! so that no other test's allocations run beside it.)
 
 use stability_core::{Quartic, QuarticGradient};
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -32,9 +35,50 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static GLOBAL: Counting = Counting;
 
+/// The lifting surface's design points: damping and coefficients, at a
+/// given ω̄, and iterated (directly and interpolated).
+fn lifting_surface_cases() -> Vec<(
+    stability_core::case::Case,
+    stability_core::lifting_surface::Harmonic,
+)> {
+    use stability_core::aero::{AeroModel, AeroModelName};
+    use stability_core::case::{Case, DampingModel};
+    use stability_core::damping::Theory;
+    use stability_core::lifting_surface::Harmonic;
+    let at = |deg: f64, mach: f64, t: Theory, omega_bar: Option<f64>| Case {
+        damping: DampingModel::Theory(t),
+        aero: AeroModel::default().with_name(AeroModelName::LiftingSurface),
+        omega_bar,
+        ..stability_core::study::report_wing(deg, mach)
+    };
+    vec![
+        (
+            at(45.0, 0.6, Theory::LiftingSurface, None),
+            Harmonic::Direct,
+        ),
+        (
+            at(60.0, 0.5, Theory::LiftingSurface, Some(0.3)),
+            Harmonic::Direct,
+        ),
+        (
+            at(60.0, 0.8, Theory::LiftingSurfaceFrequency, None),
+            Harmonic::Direct,
+        ),
+        (
+            at(45.0, 0.7, Theory::LiftingSurfaceFrequency, None),
+            Harmonic::Interpolated,
+        ),
+    ]
+}
+
 #[test]
 fn the_hot_path_does_not_allocate() {
     let d = stability_core::examples::tailless_delta_45_coupled();
+    // the lifting surface's solves, into the cache (allocating, once)
+    let lifting = lifting_surface_cases();
+    for (case, harmonic) in &lifting {
+        stability_core::case::evaluate_point_with(case, *harmonic).expect("a design point");
+    }
     let before = ALLOCATIONS.load(Ordering::SeqCst);
     let mut acc = 0.0;
     for i in 0..1000 {
@@ -73,6 +117,11 @@ fn the_hot_path_does_not_allocate() {
         acc += r.analysis.quartic.e;
     }
     assert!(warned > 0, "the cases raise warnings too");
+    for (case, harmonic) in &lifting {
+        let r = stability_core::case::evaluate_point_with(black_box(case), *harmonic)
+            .expect("a design point");
+        acc += r.analysis.quartic.e + r.derivatives.m_q;
+    }
     let after = ALLOCATIONS.load(Ordering::SeqCst);
     black_box(acc);
     assert_eq!(after - before, 0, "allocations in the hot path");

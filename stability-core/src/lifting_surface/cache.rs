@@ -37,7 +37,11 @@ pub const CAPACITY: usize = 1 << 14;
 
 /// The wing of aspect ratio A, taper λ and leading-edge sweep Λ (rad) with
 /// root chord 1: the shape the cache is keyed by.
-pub fn unit_wing(aspect_ratio: f64, taper: f64, sweep_le: f64) -> Result<Trapezoid, LiftingSurfaceError> {
+pub fn unit_wing(
+    aspect_ratio: f64,
+    taper: f64,
+    sweep_le: f64,
+) -> Result<Trapezoid, LiftingSurfaceError> {
     Trapezoid::from_aspect_ratio(aspect_ratio, taper, sweep_le, 1.0)
         .map_err(|e| LiftingSurfaceError::Planform(e.to_string()))
 }
@@ -103,8 +107,14 @@ pub fn clear() {
         .write()
         .unwrap_or_else(PoisonError::into_inner)
         .clear();
-    c.steady.write().unwrap_or_else(PoisonError::into_inner).clear();
-    c.tables.write().unwrap_or_else(PoisonError::into_inner).clear();
+    c.steady
+        .write()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clear();
+    c.tables
+        .write()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clear();
     SOLVES.store(0, Ordering::SeqCst);
 }
 

@@ -434,13 +434,22 @@ mod tests {
     fn the_horseshoes_stretching_rate_is_its_derivative() {
         // against a central difference of `horseshoe` with every x stretched
         let (a, b) = ((0.1, 0.05), (0.35, 0.3));
-        for (x, y) in [(0.6, 0.2), (0.2, 0.18), (-0.3, 0.1), (0.9, -0.4), (0.3, 0.3)] {
+        for (x, y) in [
+            (0.6, 0.2),
+            (0.2, 0.18),
+            (-0.3, 0.1),
+            (0.9, -0.4),
+            (0.3, 0.3),
+        ] {
             let (g, g_s) = horseshoe_x_rate(x, y, a, b);
             assert_eq!(g, horseshoe(x, y, a, b));
             let at = |s: f64| horseshoe(s * x, y, (s * a.0, a.1), (s * b.0, b.1));
             let d = 1e-5;
             let fd = (at(1.0 + d) - at(1.0 - d)) / (2.0 * d);
-            assert!((g_s - fd).abs() < 1e-7 * (1.0 + fd.abs()), "({x}, {y}): {g_s} {fd}");
+            assert!(
+                (g_s - fd).abs() < 1e-7 * (1.0 + fd.abs()),
+                "({x}, {y}): {g_s} {fd}"
+            );
         }
     }
 
@@ -459,7 +468,10 @@ mod tests {
                 let d = 1e-5;
                 let fd = (at(m + d) - at(m - d)) / (2.0 * d);
                 let rate = line.steady_mach_rate(x, y, m);
-                assert!((rate - fd).abs() < 1e-7 * (1.0 + fd.abs()), "{m} ({x}, {y}): {rate} {fd}");
+                assert!(
+                    (rate - fd).abs() < 1e-7 * (1.0 + fd.abs()),
+                    "{m} ({x}, {y}): {rate} {fd}"
+                );
             }
         }
     }

@@ -135,7 +135,9 @@ mod tests {
         for j in [0, 5, 20, NODES.len() - 4] {
             let x = 0.5 * (NODES[j + 1] + NODES[j + 2]);
             for p in 0..4 {
-                let s: f64 = (0..4).map(|m| lagrange(j, m, x) * NODES[j + m].powi(p)).sum();
+                let s: f64 = (0..4)
+                    .map(|m| lagrange(j, m, x) * NODES[j + m].powi(p))
+                    .sum();
                 assert!((s - x.powi(p)).abs() < 1e-12 * (1.0 + x.powi(p)), "{j} {p}");
             }
         }

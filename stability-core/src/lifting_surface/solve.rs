@@ -16,10 +16,10 @@
 //! (x̄ the M.A.C.'s leading edge), pitch about any axis is
 //! (1 + iω̄(x̄ − x_a)/c̄)·incidence + iω̄·rate: two solves serve every axis.
 
+use super::derivatives::Extrapolate;
 use super::doublet_line::{DoubletLine, FRAC_1_SQRT_3, GAUSS_BEYOND, LineRule};
 use super::kernel::{self, KernelFlow, Radial};
 use super::lattice::{Box, Grid, Lattice};
-use super::derivatives::Extrapolate;
 use super::{LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution, Steady};
 use nalgebra::{DMatrix, Dyn, LU};
 use num_complex::Complex64;
@@ -71,7 +71,10 @@ impl Lattice {
             steady.d_moment_q,
         ];
         if rates.iter().all(|r| r.is_finite()) {
-            Ok(Steady { solution: s, ..steady })
+            Ok(Steady {
+                solution: s,
+                ..steady
+            })
         } else {
             Err(LiftingSurfaceError::NotFinite {
                 mach,
