@@ -11,8 +11,8 @@ use serde::Serialize;
 use stability_core::Derivatives;
 use stability_core::aero::AeroModelName;
 use stability_core::case::{CaseResult, DampingModel, FrequencyIteration, evaluate};
-use stability_core::damping::Theory;
 use stability_core::criteria::Margins;
+use stability_core::damping::Theory;
 use stability_core::json::CaseView;
 use std::fmt::Write;
 
@@ -43,7 +43,9 @@ pub fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> 
         cfg.overridden_by("[model] aero", format!("--aero {}", a.name()));
     }
     if let Some(w) = o.omega_bar {
-        let w = limits::OMEGA_BAR.check(w).map_err(|e| bad("--omega-bar", e))?;
+        let w = limits::OMEGA_BAR
+            .check(w)
+            .map_err(|e| bad("--omega-bar", e))?;
         if !cfg.case.damping.takes_omega_bar() {
             return Err(bad("--omega-bar", no_omega_bar(cfg.case.damping)));
         }
@@ -186,7 +188,10 @@ fn design_point(s: &mut String, cfg: &config::Config, r: &CaseResult) {
             s,
             "  frequency parameter: {}",
             c.omega_bar
-                .map_or("quasi-steady (ω̄ → 0)".into(), |w| format!("ω̄ = {}", sig(w, 4)))
+                .map_or("quasi-steady (ω̄ → 0)".into(), |w| format!(
+                    "ω̄ = {}",
+                    sig(w, 4)
+                ))
         );
     }
 }
