@@ -62,7 +62,7 @@ pub enum AeroError {
     )]
     OutsideDefaults(f64),
     #[error(
-        "the lifting-surface lift slope and aerodynamic centre (aero = \"lifting-surface\") come from a subsonic theory: they need 0 ≤ M < 1, not M = {}; at and above M = 1 use the default model",
+        "the lifting-surface model's lift slope and aerodynamic centre come from a subsonic theory: they need 0 ≤ M < 1, not M = {}; at and above M = 1 use the default model",
         Num(*.0)
     )]
     LatticeMach(f64),
