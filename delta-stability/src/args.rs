@@ -29,10 +29,10 @@ fn theory_meaning(t: Theory) -> &'static str {
             "the same with its frequency terms, ω̄ iterated to the short period's own"
         }
         Theory::LiftingSurface => {
-            "lifting-surface theory (Multhopp–Garner, Lehrian) as a doublet lattice, any straight-tapered wing, M < 1: quasi-steady, or at --omega-bar W"
+            "Multhopp–Garner and Lehrian's lifting-surface theory for any straight-tapered wing, M < 1, quasi-steady or at --omega-bar W"
         }
         Theory::LiftingSurfaceFrequency => {
-            "the same at the short period's own ω̄, iterated (a sweep interpolates between 38 solved ω̄)"
+            "the same at the short period's own ω̄, iterated (a sweep interpolates between solved ω̄)"
         }
     }
 }

@@ -212,6 +212,10 @@ enum Command {
     /// period's root, cycles to half amplitude, damping ratio and ω̄, the
     /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
     /// outside a theory's validity. Roots are in units of 1/τ, τ = m/(½ρSV).
+    /// The damping theory and aerodynamic model are CONFIG's unless --damping
+    /// or --aero replace them (listed in `analyze --help`); the lifting
+    /// surface is solved once per sweep and Mach number, whatever the c.g.,
+    /// μ₁ and i_B.
     ///
     /// Example: the 60° delta from Mach 0.5 to 2, c.g. 0.20 to 0.30, μ₁ 50 to
     /// 450, 31 × 11 × 5 points:

@@ -404,7 +404,8 @@ impl AeroModelName {
 /// its Mach derivatives: one solve per (shape, M), cached
 /// ([`cache::steady`]).
 pub fn lifting_surface_steady(p: &Planform, m: f64) -> Result<Steady, AeroError> {
-    if !(m < 1.0) {
+    // (NaN too)
+    if m.is_nan() || m >= 1.0 {
         return Err(AeroError::LatticeMach(m));
     }
     let wing = cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)

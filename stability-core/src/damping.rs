@@ -145,8 +145,8 @@ pub enum DampingError {
     )]
     Taper { taper: f64 },
     #[error(
-        "{theory} ({}) needs a frequency parameter ω̄ > 0, not {}",
-        theory.equations(),
+        "{theory} {} needs a frequency parameter ω̄ > 0, not {}",
+        theory.cited(),
         OptNum(*omega_bar)
     )]
     Frequency {

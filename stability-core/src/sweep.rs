@@ -141,7 +141,7 @@ impl Sweep {
             .lens()
             .iter()
             .try_fold(1usize, |a, &d| a.checked_mul(d));
-        if !points.is_some_and(|n| n <= MAX_POINTS) {
+        if points.is_none_or(|n| n > MAX_POINTS) {
             return Err(SweepError::TooLarge { points });
         }
         let harmonic = if base.damping.uses_frequency() {

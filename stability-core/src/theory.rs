@@ -62,6 +62,15 @@ impl Theory {
         }
     }
 
+    /// The equations as messages cite them, in parentheses: `(39)–(40)`,
+    /// `(§7, doublet lattice)`.
+    pub fn cited(self) -> &'static str {
+        match self {
+            Theory::LiftingSurface | Theory::LiftingSurfaceFrequency => "(§7, doublet lattice)",
+            t => t.equations(),
+        }
+    }
+
     /// Whether the derivatives depend on the frequency parameter ω̄ and it
     /// is iterated to the short period's own (ω̄ = s/μ₁).
     pub fn uses_frequency(self) -> bool {

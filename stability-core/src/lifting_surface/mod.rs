@@ -41,6 +41,15 @@
 //! dozen flops); a frequency iteration calls [`Lattice::solve`] with each
 //! new ω̄ on the same lattice.
 //!
+//! # In the program
+//! The damping theories `lifting-surface` and `lifting-surface-frequency`
+//! and the aerodynamic model `lifting-surface` (`crate::damping`,
+//! `crate::aero`) take their solutions from [`cache`], which solves each
+//! (wing shape, M, ω̄) once per process; the aerodynamic model's lift slope
+//! and aerodynamic centre, with the exact Mach derivatives eqs (27)–(29)
+//! need, from [`Lattice::solve_steady`]; a sweep's frequency iterations
+//! interpolate in a [`FrequencyTable`] ([`Harmonic::Interpolated`]).
+//!
 //! # Notation
 //! The report's (§3): forces on ½ρSV, moments with a further c̄ (the
 //! M.A.C.), rates per qc̄/V and α̇c̄/V, ω̄ = ωc̄/V, h the c.g. aft of the
