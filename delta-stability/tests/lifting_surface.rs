@@ -328,7 +328,63 @@ fn sweep_rows_are_what_analyze_gives_each_point() {
             }
         }
     }
-    // past M = 1 the lattice's aerodynamic model is each point's error
+}
+
+#[test]
+fn a_sweep_at_a_fixed_frequency_is_analyze_at_it() {
+    let dir = Scratch::new();
+    let csv = dir.path().join("fixed.csv");
+    run_ok(&[
+        "sweep",
+        "examples/delta-45.toml",
+        "--mach",
+        "0.6",
+        "--damping",
+        "lifting-surface-frequency",
+        "--omega-bar",
+        "0.3",
+        "--derivatives",
+        "-o",
+        path(&csv),
+    ]);
+    let row = &rows(&csv)[0];
+    let v = json(&run_ok(&[
+        "analyze",
+        "examples/delta-45.toml",
+        "--mach",
+        "0.6",
+        "--damping",
+        "lifting-surface-frequency",
+        "--omega-bar",
+        "0.3",
+        "--json",
+    ]));
+    // the 11th quartic input, m_wdot, after the 16 grid and result columns
+    let m_wdot: f64 = row[16 + 10].parse().unwrap();
+    assert!(close(
+        m_wdot,
+        v["derivatives"]["m_wdot"].as_f64().unwrap(),
+        0.0
+    ));
+    let out = run_err(
+        &[
+            "sweep",
+            "examples/delta-45.toml",
+            "--mach",
+            "0.6",
+            "--omega-bar",
+            "0.3",
+            "-o",
+            path(&csv),
+        ],
+        2,
+    );
+    assert!(stderr(&out).contains("--omega-bar: the damping model `faired`"));
+}
+
+#[test]
+fn past_mach_one_the_lattices_aerodynamic_model_is_each_points_error() {
+    let dir = Scratch::new();
     let csv = dir.path().join("supersonic.csv");
     run_ok(&[
         "sweep",

@@ -144,7 +144,9 @@ impl Sweep {
         if points.is_none_or(|n| n > MAX_POINTS) {
             return Err(SweepError::TooLarge { points });
         }
-        let harmonic = if base.damping.uses_frequency() {
+        // interpolated where each point iterates its own ω̄; a fixed ω̄ is
+        // one direct solve per planform and Mach number, as `analyze`'s
+        let harmonic = if base.damping.uses_frequency() && base.iterate_frequency {
             Harmonic::Interpolated
         } else {
             Harmonic::Direct
