@@ -195,16 +195,25 @@ impl Sweep {
         idx
     }
 
+    /// The axes' indices of points `range`, in order (counted on, not
+    /// divided out, point by point).
+    pub fn indices(&self, range: Range<usize>) -> Indices {
+        Indices {
+            dims: self.axes.lens(),
+            next: self.index(range.start),
+            left: range.len(),
+        }
+    }
+
     /// Design point `i`, as [`Sweep::evaluate`] evaluates it.
     pub fn case(&self, i: usize) -> Case {
         let mut case = self.base.clone();
-        self.set_point(i, &mut case);
+        self.set_point(self.index(i), &mut case);
         case
     }
 
-    /// Makes `case` point `i` (no clone per point).
-    fn set_point(&self, i: usize, case: &mut Case) {
-        let [m, s, h, mu, ib] = self.index(i);
+    /// Makes `case` the point of indices `idx` (no clone per point).
+    fn set_point(&self, [m, s, h, mu, ib]: [usize; 5], case: &mut Case) {
         case.planform = self.planforms[s];
         case.mach = self.axes.mach[m];
         case.h = self.axes.cg[h];
@@ -251,8 +260,8 @@ impl Sweep {
         let reuse = !self.base.damping.depends_on_mass();
         let mut last: Option<(usize, CaseResult)> = None;
         let mut case = self.base.clone();
-        for i in range {
-            self.set_point(i, &mut case);
+        for (i, idx) in range.clone().zip(self.indices(range)) {
+            self.set_point(idx, &mut case);
             out.push_head(&case);
             let key = i / per_aero;
             match &last {
@@ -300,6 +309,35 @@ impl Sweep {
             out.append(b);
         }
         out
+    }
+}
+
+/// The axes' indices of consecutive points ([`Sweep::indices`]): the last
+/// varies fastest.
+#[derive(Debug, Clone)]
+pub struct Indices {
+    dims: [usize; 5],
+    next: [usize; 5],
+    left: usize,
+}
+
+impl Iterator for Indices {
+    type Item = [usize; 5];
+
+    fn next(&mut self) -> Option<[usize; 5]> {
+        if self.left == 0 {
+            return None;
+        }
+        self.left -= 1;
+        let out = self.next;
+        for d in (0..5).rev() {
+            self.next[d] += 1;
+            if self.next[d] < self.dims[d] {
+                break;
+            }
+            self.next[d] = 0;
+        }
+        Some(out)
     }
 }
 

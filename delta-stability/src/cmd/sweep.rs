@@ -121,9 +121,8 @@ impl Grid {
         self.sweep.len()
     }
 
-    /// Point `i`'s grid values as written.
-    fn head(&self, i: usize) -> [&str; 5] {
-        let idx = self.sweep.index(i);
+    /// The grid values as written of the point of indices `idx`.
+    fn head(&self, idx: [usize; 5]) -> [&str; 5] {
         std::array::from_fn(|k| &*self.text[k][idx[k]])
     }
 }
@@ -291,7 +290,8 @@ fn block(grid: &Grid, range: std::ops::Range<usize>, options: (bool, bool)) -> V
     let mut out = Vec::with_capacity(range.len() * 280);
     let points = grid.sweep.evaluate(range.clone(), options.1);
     let mut errors = points.errors.iter().peekable();
-    for (k, i) in range.enumerate() {
+    let indices = grid.sweep.indices(range.clone());
+    for (k, (i, idx)) in range.zip(indices).enumerate() {
         if options.0 && i > 0 {
             out.extend_from_slice(b",\n");
         }
@@ -302,7 +302,7 @@ fn block(grid: &Grid, range: std::ops::Range<usize>, options: (bool, bool)) -> V
             }
             _ => Ok((&points, k)),
         };
-        write_point(&mut out, grid.head(i), r, options);
+        write_point(&mut out, grid.head(idx), r, options);
         if !options.0 {
             out.push(b'\n');
         }
