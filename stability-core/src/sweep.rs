@@ -257,7 +257,11 @@ impl Sweep {
     pub fn evaluate(&self, range: Range<usize>, derivatives: bool) -> Points {
         let mut out = Points::with_capacity(range.start, range.len(), derivatives);
         let per_aero = self.axes.mu1.len() * self.axes.i_b.len();
-        let reuse = !self.base.damping.depends_on_mass();
+        // a fixed ω̄ (not iterated, given) makes the derivatives independent
+        // of μ₁ and i_B again
+        let b = &self.base;
+        let fixed = !b.iterate_frequency && b.omega_bar.is_some();
+        let reuse = !b.damping.depends_on_mass() || fixed;
         let mut last: Option<(usize, CaseResult)> = None;
         let mut case = self.base.clone();
         for (i, idx) in range.clone().zip(self.indices(range)) {
