@@ -152,6 +152,27 @@ fn the_frequency_iteration_in_a_sweep() {
     let points = sweep.run(true);
     assert_alone(&sweep, &points, Harmonic::Interpolated, 0.0);
     assert_alone(&sweep, &points, Harmonic::Direct, 2e-4);
+    // at a fixed ω̄ the derivatives are shared across μ₁ and i_B, and each
+    // point is still the design point alone (a direct solve at that ω̄)
+    let fixed = Case {
+        omega_bar: Some(0.25),
+        iterate_frequency: false,
+        ..b.clone()
+    };
+    let many = Axes {
+        i_b: vec![0.05, 0.1],
+        ..Sweep::new(b.clone(), Axes::around(&b))
+            .unwrap()
+            .axes()
+            .clone()
+    };
+    let many = Axes {
+        mach: vec![0.7],
+        mu1: vec![40.0, 200.0],
+        ..many
+    };
+    let s = Sweep::new(fixed, many).unwrap();
+    assert_alone(&s, &s.run(true), Harmonic::Direct, 0.0);
     for i in 0..points.len() {
         // the short period's ω̄ is the converged one
         let r = evaluate_point_with(&sweep.case(i), Harmonic::Interpolated).unwrap();
