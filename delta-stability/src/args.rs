@@ -5,6 +5,7 @@
 use crate::input::dimensional_notation::DIMENSIONAL;
 use clap::ValueEnum;
 use clap::builder::PossibleValue;
+use stability_core::aero::AeroModelName;
 use stability_core::cap::AirplaneClass;
 use stability_core::case::DampingModel;
 use stability_core::damping::Theory;
@@ -29,6 +30,12 @@ fn theory_meaning(t: Theory) -> &'static str {
         Theory::TransonicFrequency => {
             "the same with its frequency terms, ω̄ iterated to the short period's own"
         }
+        Theory::LiftingSurface => {
+            "Multhopp–Garner and Lehrian's lifting-surface theory for any straight-tapered wing, M < 1, quasi-steady or at --omega-bar W"
+        }
+        Theory::LiftingSurfaceFrequency => {
+            "the same at the short period's own ω̄, iterated (a sweep interpolates between solved ω̄)"
+        }
     }
 }
 
@@ -49,12 +56,14 @@ impl ValueEnum for DampingArg {
                     .to_string()
             }
             DampingModel::Theory(t) => {
-                let eqs = if t.equations().contains('–') {
-                    "eqs"
+                let eqs = if !t.equations().starts_with('(') {
+                    ""
+                } else if t.equations().contains('–') {
+                    "eqs "
                 } else {
-                    "eq"
+                    "eq "
                 };
-                format!("{}: {eqs} {}", theory_meaning(t), t.equations())
+                format!("{}: {eqs}{}", theory_meaning(t), t.equations())
             }
         };
         Some(PossibleValue::new(self.0.name()).help(help))
@@ -81,6 +90,33 @@ impl ValueEnum for ClassArg {
             AirplaneClass::IV => "high manoeuvrability (fighters, attack): the default",
         };
         Some(PossibleValue::new(self.0.name()).help(help))
+    }
+}
+
+/// An aerodynamic model (`--aero`): the library's named models.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AeroArg(pub AeroModelName);
+
+/// What each aerodynamic model is, in a line.
+fn aero_meaning(m: AeroModelName) -> &'static str {
+    match m {
+        AeroModelName::Default => {
+            "the default: DATCOM lift slope and a slender-to-2-D aerodynamic centre subsonic, linear conical-flow theory supersonic, faired between (docs/models.md)"
+        }
+        AeroModelName::LiftingSurface => {
+            "lift slope and aerodynamic centre from the doublet lattice, with exact Mach derivatives; subsonic only (M ≥ 1 is an error)"
+        }
+    }
+}
+
+impl ValueEnum for AeroArg {
+    fn value_variants<'a>() -> &'a [Self] {
+        static ALL: OnceLock<Vec<AeroArg>> = OnceLock::new();
+        ALL.get_or_init(|| AeroModelName::ALL.map(AeroArg).to_vec())
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(PossibleValue::new(self.0.name()).help(aero_meaning(self.0)))
     }
 }
 
@@ -208,6 +244,14 @@ mod tests {
             assert_eq!(parsed.0, DampingModel::parse(m.name()).unwrap());
             assert_eq!(parsed.0, m);
         }
+    }
+
+    #[test]
+    fn every_aerodynamic_model_of_the_library_is_a_choice() {
+        for m in AeroModelName::ALL {
+            assert_eq!(AeroArg::from_str(m.name(), false).unwrap().0, m);
+        }
+        assert_eq!(AeroArg::value_variants().len(), AeroModelName::ALL.len());
     }
 
     #[test]

@@ -7,7 +7,7 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 use delta_stability::args::{
-    ClassArg, DampingArg, NotationArg, ResponseInput, TargetNotation, finite, positive,
+    AeroArg, ClassArg, DampingArg, NotationArg, ResponseInput, TargetNotation, finite, positive,
 };
 use delta_stability::cmd;
 use stability_core::response::MAX_STEPS;
@@ -160,7 +160,13 @@ enum Command {
     /// (eqs 9–14, 25–29), the damping derivatives of a §7 theory, then the
     /// quartic, its modes and the criteria. See examples/delta-45.toml and
     /// examples/delta-60.toml, commented. The damping theories are listed
-    /// under --damping.
+    /// under --damping, the aerodynamic models under --aero; docs/models.md
+    /// says how to choose.
+    ///
+    /// Example: the 45° delta at M = 0.5 by lifting-surface theory throughout
+    /// (slender-wing theory gives it two real short-period roots there):
+    ///
+    /// delta-stability analyze examples/delta-45.toml --mach 0.5 --damping lifting-surface --aero lifting-surface
     ///
     /// The flight condition is non-dimensional (mu1, i_b, cl_m2) or
     /// physical, when the results come in seconds and rad/s too:
@@ -187,6 +193,12 @@ enum Command {
         /// Override the damping model.
         #[arg(long, value_enum)]
         damping: Option<DampingArg>,
+        /// Override the aerodynamic model (lift slope and aerodynamic centre; a table in the config still wins).
+        #[arg(long, value_enum)]
+        aero: Option<AeroArg>,
+        /// Evaluate a frequency-dependent damping theory at ω̄ = ωc̄/V = W, not iterated: lifting-surface (else quasi-steady), lifting-surface-frequency, transonic-frequency.
+        #[arg(long = "omega-bar", value_name = "W", value_parser = positive)]
+        omega_bar: Option<f64>,
         /// Override the Mach number.
         #[arg(long, value_parser = finite)]
         mach: Option<f64>,
@@ -272,6 +284,10 @@ enum Command {
     /// period's root, cycles to half amplitude, damping ratio and ω̄, the
     /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
     /// outside a theory's validity. Roots are in units of 1/τ, τ = m/(½ρSV).
+    /// The damping theory and aerodynamic model are CONFIG's unless --damping
+    /// or --aero replace them (listed in `analyze --help`); the lifting
+    /// surface is solved once per sweep and Mach number, whatever the c.g.,
+    /// μ₁ and i_B.
     ///
     /// With a physical flight condition in CONFIG (units, altitude, mass,
     /// I_y: see `analyze --help`), μ₁, i_B and C_L·M² follow from it and each
@@ -353,6 +369,8 @@ fn main() -> ExitCode {
         Command::Analyze {
             config,
             damping,
+            aero,
+            omega_bar,
             mach,
             cg,
             json,
@@ -361,6 +379,8 @@ fn main() -> ExitCode {
             &config,
             &cmd::analyze::Overrides {
                 damping: damping.map(|d| d.0),
+                aero: aero.map(|a| a.0),
+                omega_bar,
                 mach,
                 cg,
             },

@@ -2,14 +2,17 @@
 //! number: the harmonic solve (M = 0.5, ω̄ = 0.5) and the quasi-steady one
 //! (M = 0.5, ω̄ = 0), every derivative included, at the default lattice and
 //! at the next coarser and denser ones (all extrapolated as the default is:
-//! 8×12, 12×16 (default), 16×24 boxes per strip × strips); and
-//! `Solution::derivatives`, what a sweep calls per design point.
+//! 8×12, 12×16 (default), 16×24 boxes per strip × strips); the steady
+//! solve with its exact Mach derivatives (`Lattice::solve_steady`, what
+//! `aero = "lifting-surface"` takes); and, per design point of a sweep,
+//! `Solution::derivatives` and one interpolation in a solved
+//! `FrequencyTable` (a frequency iteration's cost per iterate).
 //!
 //! `cargo bench -p stability-core --bench lifting_surface`
 
 use divan::{AllocProfiler, Bencher, black_box};
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::{Lattice, LatticeSpec, Solution};
+use stability_core::lifting_surface::{FrequencyTable, Lattice, LatticeSpec, Solution};
 
 #[global_allocator]
 static ALLOC: AllocProfiler = AllocProfiler::system();
@@ -62,5 +65,29 @@ fn derivatives_per_point(bencher: Bencher) {
     bencher.bench_local(|| {
         h += 1e-6;
         black_box(&s).derivatives(black_box(h), 0.01).unwrap()
+    });
+}
+
+#[divan::bench(args = LATTICES, sample_count = 20)]
+fn steady_with_mach_derivative(bencher: Bencher, name: &str) {
+    let l = lattice(name);
+    bencher.bench_local(|| {
+        let s = black_box(&l).solve_steady(black_box(0.5)).unwrap();
+        s.lift_slope().1 + s.aerodynamic_centre().1 + all_derivatives(&s.solution)
+    });
+}
+
+/// One interpolation in a table whose nodes around ω̄ = 0.3 are solved
+/// (allocation-free).
+#[divan::bench]
+fn interpolated_per_iterate(bencher: Bencher) {
+    let table = FrequencyTable::new(lattice("coarser 8x12"), 0.5).unwrap();
+    // the nodes of both stencils the iterates use (0.2 … 0.4)
+    table.at(0.3).unwrap();
+    table.at(0.32).unwrap();
+    let mut w = 0.3;
+    bencher.bench_local(|| {
+        w = if w > 0.34 { 0.3 } else { w + 1e-4 };
+        black_box(&table).at(black_box(w)).unwrap()
     });
 }

@@ -11,7 +11,9 @@
 //! prints the table (docs/damping-theories.md); with `--write` it also
 //! writes the dense lattice's values to
 //! `stability-core/tests/data/lifting_surface/convergence.json`, which
-//! `tests/lifting_surface_convergence.rs` holds the default lattice to.
+//! `tests/lifting_surface_convergence.rs` holds the default lattice to;
+//! with `--check` it compares the dense values it computed with the
+//! committed fixture instead (to 1e-9, relative) and fails if they differ.
 
 use stability_core::geometry::Trapezoid;
 use stability_core::lifting_surface::{Lattice, LatticeSpec};
@@ -86,8 +88,53 @@ pub fn outputs(wing: &Trapezoid, spec: LatticeSpec, mach: f64, omega_bar: f64) -
     ]
 }
 
+/// The fixture's path.
+const FIXTURE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/data/lifting_surface/convergence.json"
+);
+
+/// The committed fixture's dense values, case by case, against `computed`
+/// (in the same order): the cases that differ by more than 1e-9, relative.
+fn stale(computed: &[[f64; 12]]) -> Result<Vec<String>, String> {
+    let text = std::fs::read_to_string(FIXTURE).map_err(|e| format!("{FIXTURE}: {e}"))?;
+    let f: serde_json::Value =
+        serde_json::from_str(&text).map_err(|e| format!("{FIXTURE}: {e}"))?;
+    let cases = f["cases"].as_array().ok_or("no cases")?;
+    if cases.len() != computed.len() {
+        return Ok(vec![format!(
+            "{} cases, not {}",
+            cases.len(),
+            computed.len()
+        )]);
+    }
+    let mut out = Vec::new();
+    for (c, fine) in cases.iter().zip(computed) {
+        let dense: Vec<f64> = c["dense"]
+            .as_array()
+            .ok_or("no dense")?
+            .iter()
+            .filter_map(|v| v.as_f64())
+            .collect();
+        let same = dense.len() == 12
+            && dense
+                .iter()
+                .zip(fine)
+                .all(|(y, x)| (x - y).abs() <= 1e-9 * (1.0 + y.abs()));
+        if !same {
+            out.push(format!(
+                "{} at M = {}, ω̄ = {}",
+                c["wing"], c["mach"], c["omega_bar"]
+            ));
+        }
+    }
+    Ok(out)
+}
+
 fn main() {
     let write = std::env::args().any(|a| a == "--write");
+    let check = std::env::args().any(|a| a == "--check");
+    let mut computed = Vec::new();
     let mut fixture = Vec::new();
     println!("| wing | M | ω̄ | lattice | {} | worst |", NAMES.join(" | "));
     println!("|{}", " --- |".repeat(NAMES.len() + 5));
@@ -110,6 +157,7 @@ fn main() {
                 row(&coarse)
             );
             println!("| | | | ×2 | {} | |", row(&fine));
+            computed.push(fine);
             fixture.push(format!(
                 "  {{\"wing\": \"{name}\", \"root_chord\": {}, \"tip_chord\": {}, \"semi_span\": {}, \"sweep_le\": {}, \"mach\": {mach}, \"omega_bar\": {omega_bar}, \"dense\": [{}]}}",
                 wing.root_chord, wing.tip_chord, wing.semi_span, wing.sweep_le,
@@ -117,11 +165,24 @@ fn main() {
             ));
         }
     }
+    if check {
+        match stale(&computed) {
+            Ok(bad) if bad.is_empty() => eprintln!("{FIXTURE} is the dense lattice's"),
+            Ok(bad) => {
+                eprintln!(
+                    "{FIXTURE} differs from the dense lattice for:\n  {}",
+                    bad.join("\n  ")
+                );
+                std::process::exit(1);
+            }
+            Err(e) => {
+                eprintln!("{e}");
+                std::process::exit(1);
+            }
+        }
+    }
     if write {
-        let path = concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/tests/data/lifting_surface/convergence.json"
-        );
+        let path = FIXTURE;
         let text = format!(
             "{{\"source\": \"cargo run --release -p stability-core --example lifting_surface_convergence -- --write: the default lattice scaled 2x\",\n \"names\": [{}],\n \"cases\": [\n{}\n ]}}\n",
             NAMES.map(|n| format!("\"{n}\"")).join(", "),

@@ -11,6 +11,7 @@
 
 use crate::display::Num;
 use crate::geometry::Planform;
+use crate::lifting_surface::{LiftingSurfaceError, Steady, cache};
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -60,6 +61,13 @@ pub enum AeroError {
         Num(*.0), defaults::MACH_MAX
     )]
     OutsideDefaults(f64),
+    #[error(
+        "the lifting-surface model's lift slope and aerodynamic centre come from a subsonic theory: they need 0 ≤ M < 1, not M = {}; at and above M = 1 use the default model",
+        Num(*.0)
+    )]
+    LatticeMach(f64),
+    #[error("the lifting-surface lift slope and aerodynamic centre: {0}")]
+    LiftingSurface(LiftingSurfaceError),
 }
 
 /// A table of a coefficient against Mach number, interpolated by the
@@ -368,6 +376,52 @@ pub enum Source {
     Method,
     /// The user's table: wins over every other source.
     Table(Table),
+    /// The doublet lattice's steady solution ([`lifting_surface_steady`]),
+    /// 0 ≤ M < 1 (an error at and above M = 1): for the lift slope and the
+    /// aerodynamic centre, with their exact Mach derivatives. It gives no
+    /// drag: for C_D0 and K it means [`Source::Default`] (K = 1/a with the
+    /// lattice's a).
+    LiftingSurface,
+}
+
+/// The named aerodynamic models of configs (`[model] aero = …`) and of the
+/// command line (`--aero`): where the lift slope and aerodynamic centre
+/// come from when no table gives them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AeroModelName {
+    /// The methods of [`defaults`] (docs/models.md).
+    Default,
+    /// The doublet lattice below M = 1 ([`Source::LiftingSurface`]).
+    LiftingSurface,
+}
+
+impl AeroModelName {
+    pub const ALL: [AeroModelName; 2] = [AeroModelName::Default, AeroModelName::LiftingSurface];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            AeroModelName::Default => "default",
+            AeroModelName::LiftingSurface => "lifting-surface",
+        }
+    }
+
+    /// The model of this name, or `None`.
+    pub fn parse(s: &str) -> Option<AeroModelName> {
+        Self::ALL.into_iter().find(|m| m.name() == s)
+    }
+}
+
+/// The lattice's steady solution of the planform's shape at Mach `m`, with
+/// its Mach derivatives: one solve per (shape, M), cached
+/// ([`cache::steady`]).
+pub fn lifting_surface_steady(p: &Planform, m: f64) -> Result<Steady, AeroError> {
+    // (NaN too)
+    if m.is_nan() || m >= 1.0 {
+        return Err(AeroError::LatticeMach(m));
+    }
+    let wing = cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)
+        .map_err(AeroError::LiftingSurface)?;
+    cache::steady(&wing, m).map_err(AeroError::LiftingSurface)
 }
 
 /// The aerodynamic model: one source per coefficient.
@@ -395,7 +449,7 @@ pub struct TheoryCoefficients {
 }
 
 /// Where one coefficient of [`Coefficients`] came from; serializes as
-/// `"table"`, `"method"` or the damping model's name.
+/// `"table"`, `"method"`, `"lifting-surface"` or the damping model's name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Origin {
     /// The user's table.
@@ -405,6 +459,8 @@ pub enum Origin {
     Method,
     /// The damping model's own theory, by name.
     DampingModel(&'static str),
+    /// The doublet lattice's steady solution ([`Source::LiftingSurface`]).
+    LiftingSurface,
 }
 
 impl Serialize for Origin {
@@ -413,6 +469,7 @@ impl Serialize for Origin {
             Origin::Table => "table",
             Origin::Method => "method",
             Origin::DampingModel(name) => name,
+            Origin::LiftingSurface => "lifting-surface",
         })
     }
 }
@@ -463,25 +520,52 @@ fn method(f: fn(&Planform, f64) -> Value, p: &Planform, m: f64) -> Result<Value,
     }
 }
 
-/// The rule of precedence for one coefficient: the table; else the damping
-/// model's own value (`own`, under [`Source::Default`] only); else the
-/// method.
+/// Which of the lattice's steady values a coefficient is, with its Mach
+/// derivative ([`Steady::lift_slope`], [`Steady::aerodynamic_centre`]).
+type SteadyValue = fn(&Steady) -> (f64, f64);
+
+/// The rule of precedence for one coefficient: the table; else the
+/// lattice, under [`Source::LiftingSurface`] for a coefficient it gives
+/// (`lattice`: the planform and which of its steady values); else the
+/// damping model's own value (`own`, under [`Source::Default`] only); else
+/// the method.
 fn resolve(
     source: &Source,
     m: f64,
     own: Option<(Value, &'static str)>,
+    lattice: Option<(&Planform, SteadyValue)>,
     method: impl FnOnce() -> Result<Value, AeroError>,
 ) -> Result<(Value, Origin), AeroError> {
-    match (source, own) {
-        (Source::Table(t), _) => Ok((t.at(m)?, Origin::Table)),
-        (Source::Default, Some((v, model))) => Ok((v, Origin::DampingModel(model))),
+    match (source, own, lattice) {
+        (Source::Table(t), _, _) => Ok((t.at(m)?, Origin::Table)),
+        (Source::LiftingSurface, _, Some((p, of))) => {
+            let (v, d) = of(&lifting_surface_steady(p, m)?);
+            Ok((Value::new(v, d), Origin::LiftingSurface))
+        }
+        (Source::Default, Some((v, model)), _) => Ok((v, Origin::DampingModel(model))),
         _ => Ok((method()?, Origin::Method)),
     }
 }
 
 impl AeroModel {
-    /// The coefficients of `p` at Mach `m` from tables and the methods of
-    /// [`defaults`] (no damping model's own coefficients).
+    /// The model named `name`: the lift slope and aerodynamic centre from
+    /// it, unless a table of this model gives them (a table wins); the
+    /// other coefficients as they are.
+    pub fn with_name(self, name: AeroModelName) -> AeroModel {
+        let named = |s: Source| match (s, name) {
+            (Source::Table(t), _) => Source::Table(t),
+            (_, AeroModelName::Default) => Source::Default,
+            (_, AeroModelName::LiftingSurface) => Source::LiftingSurface,
+        };
+        AeroModel {
+            lift_slope: named(self.lift_slope),
+            aerodynamic_centre: named(self.aerodynamic_centre),
+            ..self
+        }
+    }
+
+    /// The coefficients of `p` at Mach `m` from tables, the lattice and the
+    /// methods of [`defaults`] (no damping model's own coefficients).
     pub fn at(&self, p: &Planform, m: f64) -> Result<Coefficients, AeroError> {
         self.at_with(p, m, None)
     }
@@ -499,19 +583,21 @@ impl AeroModel {
             &self.lift_slope,
             m,
             own.map(|t| (t.lift_slope, t.model)),
+            Some((p, Steady::lift_slope)),
             || method(defaults::lift_slope, p, m),
         )?;
         let (aerodynamic_centre, ac) = resolve(
             &self.aerodynamic_centre,
             m,
             own.map(|t| (t.aerodynamic_centre, t.model)),
+            Some((p, Steady::aerodynamic_centre)),
             || method(defaults::aerodynamic_centre, p, m),
         )?;
-        let (zero_lift_drag, cd0) = resolve(&self.zero_lift_drag, m, None, || {
+        let (zero_lift_drag, cd0) = resolve(&self.zero_lift_drag, m, None, None, || {
             method(defaults::zero_lift_drag, p, m)
         })?;
-        // K = 1/a with the model's own lift slope (tables included)
-        let (drag_due_to_lift, k) = resolve(&self.drag_due_to_lift, m, None, || {
+        // K = 1/a with the model's own lift slope (tables and lattice included)
+        let (drag_due_to_lift, k) = resolve(&self.drag_due_to_lift, m, None, None, || {
             Ok(defaults::no_suction(lift_slope))
         })?;
         Ok(Coefficients {

@@ -3,21 +3,24 @@
 //! derivative set (§5–7) → the quartic, its modes and criteria (§4, §8).
 //!
 //! Where the damping theory depends on the frequency parameter ω̄ (Mangler's
-//! (39)–(40)), ω̄ is iterated to the short-period frequency it produces,
-//! ω̄ = s/μ₁ — the consistency the report could not afford ("quasi-static
-//! derivatives are used in cases where frequency effects should properly be
-//! included", Summary); the result records the starting and converged ω̄
-//! and what the iteration changed.
+//! (39)–(40), the lifting surface's `lifting-surface-frequency`), ω̄ is
+//! iterated to the short-period frequency it produces, ω̄ = s/μ₁ — the
+//! consistency the report could not afford ("quasi-static derivatives are
+//! used in cases where frequency effects should properly be included",
+//! Summary); the result records the starting and converged ω̄ and what the
+//! iteration changed. One iteration serves every such theory
+//! ([`Point::iterate_frequency`]).
 
 use crate::Derivatives;
 use crate::aero::{AeroError, AeroModel, Coefficients, TheoryCoefficients, level_flight_lift};
 use crate::analysis::{Analysis, AnalysisError};
 use crate::damping::{
     Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,
-    damping_derivatives, theory_coefficients, x_q, x_wdot,
+    damping_derivatives, damping_derivatives_with, theory_coefficients, x_q, x_wdot,
 };
 use crate::display::Num;
 use crate::geometry::Planform;
+use crate::lifting_surface::Harmonic;
 use crate::stiffness::{Stiffness, stiffness};
 use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
@@ -62,22 +65,31 @@ impl DampingModel {
     }
 
     /// Whether the model's derivatives depend on the frequency parameter ω̄
-    /// (Mangler's (39)–(40)).
+    /// and it is iterated (Mangler's (39)–(40), `lifting-surface-frequency`).
     pub fn uses_frequency(self) -> bool {
         matches!(self, DampingModel::Theory(t) if t.uses_frequency())
     }
 
-    /// Every model: the two fairings, then the theories.
-    pub const ALL: [DampingModel; 8] = [
+    /// Every model: the two fairings, then the theories (in the order of
+    /// [`Theory::ALL`]; a test checks that none is missing).
+    pub const ALL: [DampingModel; 2 + Theory::ALL.len()] = [
         DampingModel::Faired,
         DampingModel::FairedSlender,
-        DampingModel::Theory(Theory::Garrick),
-        DampingModel::Theory(Theory::GarnerTaper),
-        DampingModel::Theory(Theory::Slender),
-        DampingModel::Theory(Theory::Supersonic),
-        DampingModel::Theory(Theory::Transonic),
-        DampingModel::Theory(Theory::TransonicFrequency),
+        DampingModel::Theory(Theory::ALL[0]),
+        DampingModel::Theory(Theory::ALL[1]),
+        DampingModel::Theory(Theory::ALL[2]),
+        DampingModel::Theory(Theory::ALL[3]),
+        DampingModel::Theory(Theory::ALL[4]),
+        DampingModel::Theory(Theory::ALL[5]),
+        DampingModel::Theory(Theory::ALL[6]),
+        DampingModel::Theory(Theory::ALL[7]),
     ];
+
+    /// Whether the model takes a frequency parameter ω̄ at all
+    /// ([`Theory::takes_omega_bar`]).
+    pub fn takes_omega_bar(self) -> bool {
+        matches!(self, DampingModel::Theory(t) if t.takes_omega_bar())
+    }
 
     pub fn name(self) -> &'static str {
         match self {
@@ -135,7 +147,8 @@ pub struct Case {
     pub damping: DampingModel,
     /// A starting (or fixed) frequency parameter for frequency-dependent
     /// theories, and the short period's ω̄ at which `supersonic` checks its
-    /// low-frequency rule; `None`: §9's √(−m_w/(μ₁i_B)).
+    /// low-frequency rule; `None`: §9's √(−m_w/(μ₁i_B)). For
+    /// `lifting-surface` the ω̄ it is evaluated at; `None`: quasi-steady.
     pub omega_bar: Option<f64>,
     /// Iterate ω̄ to consistency (frequency-dependent theories only).
     pub iterate_frequency: bool,
@@ -252,13 +265,31 @@ impl Case {
 pub const FAIRING_WIDTH: f64 = 0.2;
 
 /// The damping derivatives of the case's model at ω̄ (used by the
-/// frequency-dependent theory, and by `supersonic` for its low-frequency
-/// warning).
-fn damping_at(case: &Case, wing: &WingInput, omega_bar: Option<f64>) -> Result<Damping, CaseError> {
+/// frequency-dependent theories, and by `supersonic` for its low-frequency
+/// warning), the lifting surface's harmonic solutions had as `harmonic`
+/// says.
+fn damping_at(
+    case: &Case,
+    wing: &WingInput,
+    omega_bar: Option<f64>,
+    harmonic: Harmonic,
+) -> Result<Damping, CaseError> {
+    let (h, m) = (case.h, case.mach);
     match case.damping {
-        DampingModel::Theory(t) => Ok(damping_derivatives(t, wing, case.h, case.mach, omega_bar)?),
-        DampingModel::Faired => faired(wing, case.h, case.mach),
-        DampingModel::FairedSlender => faired_slender(wing, case.h, case.mach),
+        // its ω̄ is the case's own (fixed), or none (quasi-steady)
+        DampingModel::Theory(t @ Theory::LiftingSurface) => Ok(damping_derivatives_with(
+            t,
+            wing,
+            h,
+            m,
+            case.omega_bar,
+            harmonic,
+        )?),
+        DampingModel::Theory(t) => Ok(damping_derivatives_with(
+            t, wing, h, m, omega_bar, harmonic,
+        )?),
+        DampingModel::Faired => faired(wing, h, m),
+        DampingModel::FairedSlender => faired_slender(wing, h, m),
     }
 }
 
@@ -316,18 +347,30 @@ fn fair(slender: &Damping, sup: &Damping, m: f64, warnings: Warnings) -> Damping
 
 /// Evaluate a design point.
 pub fn evaluate(case: &Case) -> Result<CaseResult, CaseError> {
-    evaluate_with(case, true)
+    evaluate_with(case, true, Harmonic::Direct)
 }
 
 /// As [`evaluate`], without the eq (7) check (`analysis.classical` is
 /// `None`): the lean path of `delta-stability sweep`.
 pub fn evaluate_point(case: &Case) -> Result<CaseResult, CaseError> {
-    evaluate_with(case, false)
+    evaluate_with(case, false, Harmonic::Direct)
 }
 
-fn evaluate_with(case: &Case, classical: bool) -> Result<CaseResult, CaseError> {
+/// As [`evaluate_point`], the lifting surface's harmonic solutions had as
+/// `harmonic` says: [`Harmonic::Interpolated`] is the library sweep's, whose
+/// frequency iterations would otherwise solve the lattice at every iterate
+/// of every point.
+pub fn evaluate_point_with(case: &Case, harmonic: Harmonic) -> Result<CaseResult, CaseError> {
+    evaluate_with(case, false, harmonic)
+}
+
+fn evaluate_with(
+    case: &Case,
+    classical: bool,
+    harmonic: Harmonic,
+) -> Result<CaseResult, CaseError> {
     case.check()?;
-    let point = Point::new(case, classical)?;
+    let point = Point::new(case, classical, harmonic)?;
     let (run, frequency) = if case.damping.uses_frequency() {
         let (run, f) = point.iterate_frequency()?;
         (run, Some(f))
@@ -364,6 +407,7 @@ struct Point<'a> {
     stiffness: Stiffness,
     wing: WingInput,
     classical: bool,
+    harmonic: Harmonic,
 }
 
 /// The damping derivatives at one ω̄, the derivative set they complete and
@@ -376,7 +420,7 @@ struct Run {
 }
 
 impl<'a> Point<'a> {
-    fn new(case: &'a Case, classical: bool) -> Result<Self, CaseError> {
+    fn new(case: &'a Case, classical: bool, harmonic: Harmonic) -> Result<Self, CaseError> {
         let own = case.damping.own_coefficients(&case.planform, case.mach)?;
         let coefficients = case.aero.at_with(&case.planform, case.mach, own.as_ref())?;
         let c_l = level_flight_lift(case.cl_m2, case.mach).value;
@@ -387,6 +431,7 @@ impl<'a> Point<'a> {
             stiffness: stiffness(&coefficients, c_l, case.h),
             wing: WingInput::from(&case.planform),
             classical,
+            harmonic,
         })
     }
 
@@ -414,7 +459,7 @@ impl<'a> Point<'a> {
     }
 
     fn run(&self, omega_bar: Option<f64>) -> Result<Run, CaseError> {
-        let damping = damping_at(self.case, &self.wing, omega_bar)?;
+        let damping = damping_at(self.case, &self.wing, omega_bar, self.harmonic)?;
         let derivatives = self.derivatives(&damping.derivatives);
         let analysis = if self.classical {
             Analysis::of(&derivatives)?
@@ -437,34 +482,18 @@ impl<'a> Point<'a> {
             .or_else(|| (m_w < 0.0).then(|| (-m_w / (case.mu1 * case.i_b)).sqrt()))
     }
 
-    /// ω̄ iterated to the short period it produces, ω̄ = s/μ₁, by an
-    /// under-relaxed fixed point (the map can overshoot), from the case's
-    /// ω̄ or §9's √(−m_w/(μ₁i_B)).
+    /// ω̄ iterated to the short period it produces, ω̄ = s/μ₁, from the
+    /// case's ω̄ or §9's √(−m_w/(μ₁i_B)) ([`Point::converge`]); with
+    /// `iterate_frequency` off, the derivatives at the starting ω̄.
     fn iterate_frequency(&self) -> Result<(Run, FrequencyIteration), CaseError> {
         let case = self.case;
         let start = self.omega_bar_estimate().unwrap_or(0.1);
         let first = self.run(Some(start))?;
-        let (mut w, mut current, mut iterations) = (start, first.clone(), 0);
-        let mut ok = !case.iterate_frequency;
-        while case.iterate_frequency && iterations < 200 {
-            let Some(sp) = current.analysis.modes.short_period() else {
-                break;
-            };
-            let target = sp.im / case.mu1;
-            if !(target > 0.0 && target.is_finite()) {
-                break;
-            }
-            iterations += 1;
-            let next = 0.5 * (w + target);
-            if (next - w).abs() <= 1e-12 * w {
-                ok = true;
-                break;
-            }
-            match self.run(Some(next)) {
-                Ok(r) => (w, current) = (next, r),
-                Err(_) => break,
-            }
-        }
+        let (w, current, iterations, ok) = if case.iterate_frequency {
+            self.converge(start, first.clone())
+        } else {
+            (start, first.clone(), 0, true)
+        };
         let cycles = |r: &Run| {
             r.analysis
                 .modes
@@ -482,5 +511,60 @@ impl<'a> Point<'a> {
             m_thetadot_converged: current.damping.derivatives.m_thetadot(),
         };
         Ok((current, f))
+    }
+
+    /// The fixed point of g(ω̄) = s(ω̄)/μ₁, s the short period's frequency
+    /// with the derivatives at ω̄: the residual r = g(ω̄) − ω̄ driven below
+    /// 2·10⁻¹²ω̄ by the secant method ([`next_iterate`]), from `start`
+    /// (whose run is `first`). Returns the last ω̄ and its run, the
+    /// iterations (residuals evaluated) and whether it converged; it stops
+    /// unconverged where the short period does not oscillate, where a run
+    /// fails, or after [`MAX_FREQUENCY_ITERATIONS`].
+    fn converge(&self, start: f64, first: Run) -> (f64, Run, usize, bool) {
+        let mu1 = self.case.mu1;
+        let (mut w, mut current) = (start, first);
+        let mut previous = None;
+        for iterations in 1..=MAX_FREQUENCY_ITERATIONS {
+            let target = current.analysis.modes.short_period().map(|sp| sp.im / mu1);
+            let Some(target) = target.filter(|t| *t > 0.0 && t.is_finite()) else {
+                return (w, current, iterations - 1, false);
+            };
+            let r = target - w;
+            if r.abs() <= 2e-12 * w {
+                return (w, current, iterations, true);
+            }
+            let next = next_iterate(w, r, previous);
+            previous = Some((w, r));
+            match self.run(Some(next)) {
+                Ok(run) => (w, current) = (next, run),
+                Err(_) => return (w, current, iterations, false),
+            }
+        }
+        (w, current, MAX_FREQUENCY_ITERATIONS, false)
+    }
+}
+
+/// The frequency iteration gives up after this many residuals.
+pub const MAX_FREQUENCY_ITERATIONS: usize = 200;
+
+/// The next ω̄ from the residual r = g(ω̄) − ω̄ at ω̄ = `w` and the previous
+/// (ω̄, r): the secant step ω̄ − r/r′, r′ from the two, where r′ is that of
+/// a contraction (g′ = r′ + 1 within (−9, 0.75): a step between 0.1|r| and
+/// 4|r|) and the step stays positive; else — the first step, or a slope the
+/// secant cannot trust — the under-relaxed fixed point ω̄ + r/2, which
+/// converges for −3 < g′ < 1 (the map can overshoot). The secant converges
+/// superlinearly near the fixed point: the lattice's frequency iteration
+/// then needs a handful of solves, not the relaxation's forty.
+fn next_iterate(w: f64, r: f64, previous: Option<(f64, f64)>) -> f64 {
+    let relaxed = w + 0.5 * r;
+    let Some((wp, rp)) = previous else {
+        return relaxed;
+    };
+    let slope = (r - rp) / (w - wp);
+    let secant = w - r / slope;
+    if slope.is_finite() && slope > -10.0 && slope < -0.25 && secant > 0.0 {
+        secant
+    } else {
+        relaxed
     }
 }

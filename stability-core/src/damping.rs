@@ -13,6 +13,8 @@
 //! | `supersonic` | (36) | K.W. Mangler; H.S. Ribner & F.S. Malvestuto, NACA Rep. 908 (1948): subsonic leading edges; beyond, linear theory for supersonic leading edges ([`supersonic`]) |
 //! | `transonic` | (38) | K.W. Mangler's low-frequency theory at M = 1, steady |
 //! | `transonic-frequency` | (39)–(40) | the same, with the frequency-dependent terms |
+//! | `lifting-surface` | §7 | lifting-surface theory (Multhopp–Garner, Lehrian) as a doublet lattice ([`crate::lifting_surface`]): any straight-tapered wing, 0 ≤ M < 1, quasi-steady or at a given ω̄ |
+//! | `lifting-surface-frequency` | §7 | the same at the short period's own ω̄ |
 
 pub use crate::derivatives::DampingDerivatives;
 pub use crate::supersonic::eq36::{Fig18, eq36};
@@ -21,6 +23,7 @@ pub use crate::theory::{Theory, UnknownTheory};
 use crate::aero::TheoryCoefficients;
 use crate::display::{Num, OptNum};
 use crate::geometry::Planform;
+use crate::lifting_surface::{Harmonic, LiftingSurfaceError, cache};
 use crate::supersonic::{self, EdgeRegime, SupersonicError, Wing, transonic};
 use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
@@ -88,10 +91,16 @@ pub enum DampingError {
     )]
     Taper { taper: f64 },
     #[error(
-        "transonic-frequency (39)–(40) needs a frequency parameter ω̄ > 0, not {}",
+        "{theory} {} needs a frequency parameter ω̄ > 0, not {}",
+        theory.cited(),
         OptNum(*omega_bar)
     )]
-    Frequency { omega_bar: Option<f64> },
+    Frequency {
+        theory: Theory,
+        omega_bar: Option<f64>,
+    },
+    #[error("lifting-surface theory: {0}")]
+    LiftingSurface(#[from] LiftingSurfaceError),
 }
 
 /// The derivatives of one theory, and what is worth a warning.
@@ -107,14 +116,30 @@ pub struct Damping {
 
 /// The damping derivatives of `theory` for the wing at c.g. `h` and Mach
 /// number `mach`; `omega_bar` is the frequency parameter ω̄ = ωc̄/V, used by
-/// `transonic-frequency` and, for the low-frequency rule's warning
-/// (`low_frequency`), by `supersonic`.
+/// the theories that take one ([`Theory::takes_omega_bar`]: for
+/// `lifting-surface` `None` is the quasi-steady limit) and, for the
+/// low-frequency rule's warning (`low_frequency`), by `supersonic`. The
+/// lifting surface's harmonic solutions are solved at ω̄
+/// ([`Harmonic::Direct`]).
 pub fn damping_derivatives(
     theory: Theory,
     wing: &WingInput,
     h: f64,
     mach: f64,
     omega_bar: Option<f64>,
+) -> Result<Damping, DampingError> {
+    damping_derivatives_with(theory, wing, h, mach, omega_bar, Harmonic::Direct)
+}
+
+/// As [`damping_derivatives`], the lifting surface's harmonic solutions had
+/// as `harmonic` says (interpolated between frequencies, for a sweep).
+pub fn damping_derivatives_with(
+    theory: Theory,
+    wing: &WingInput,
+    h: f64,
+    mach: f64,
+    omega_bar: Option<f64>,
+    harmonic: Harmonic,
 ) -> Result<Damping, DampingError> {
     for (quantity, value) in [("the c.g. position h", h), ("the Mach number", mach)] {
         if !value.is_finite() {
@@ -142,10 +167,14 @@ pub fn damping_derivatives(
         Theory::GarnerTaper => garner_taper(wing, h, mach, &mut out)?,
         Theory::Supersonic => supersonic(wing, h, mach, omega_bar, &mut out)?,
         Theory::TransonicFrequency => transonic_frequency(wing, h, mach, omega_bar, &mut out)?,
+        Theory::LiftingSurface | Theory::LiftingSurfaceFrequency => {
+            lifting_surface(wing, h, mach, omega_bar, harmonic, &mut out)?
+        }
     };
     // garner-taper is for taper 1/7; supersonic says where it applies a
-    // true-delta formula itself
-    if wing.taper > 0.0 && !matches!(theory, Theory::GarnerTaper | Theory::Supersonic) {
+    // true-delta formula itself; the lifting surface is for any taper
+    let own_rule = matches!(theory, Theory::GarnerTaper | Theory::Supersonic);
+    if wing.taper > 0.0 && !own_rule && !theory.is_lifting_surface() {
         out.warnings.push(Warning::TrueDeltaOnly {
             theory,
             taper: wing.taper,
@@ -331,7 +360,12 @@ fn transonic_frequency(
 ) -> Result<DampingDerivatives, DampingError> {
     let w = match omega_bar {
         Some(w) if w.is_finite() && w > 0.0 => w,
-        omega_bar => return Err(DampingError::Frequency { omega_bar }),
+        omega_bar => {
+            return Err(DampingError::Frequency {
+                theory: out.theory,
+                omega_bar,
+            });
+        }
     };
     if (mach - 1.0).abs() > TRANSONIC_RANGE {
         out.warnings.push(Warning::AwayFromSonic {
@@ -351,6 +385,49 @@ fn transonic_frequency(
         m_wdot: z_wdot * (5.0 / 8.0 - h) - extra,
     })
 }
+
+/// The doublet lattice ([`crate::lifting_surface`]) of the wing's shape, one
+/// cached solve per (wing, M, ω̄) ([`cache::solution`]): at ω̄ for
+/// `lifting-surface-frequency`, which needs it; at the ω̄ given, or
+/// quasi-steady (ω̄ = 0) when none is, for `lifting-surface`. The damping
+/// four about `h` by axis transfer ([`crate::lifting_surface::Solution::derivatives`]).
+fn lifting_surface(
+    wing: &WingInput,
+    h: f64,
+    mach: f64,
+    omega_bar: Option<f64>,
+    harmonic: Harmonic,
+    out: &mut Damping,
+) -> Result<DampingDerivatives, DampingError> {
+    let w = match (out.theory, omega_bar) {
+        (Theory::LiftingSurfaceFrequency, Some(w)) if w.is_finite() && w > 0.0 => w,
+        (Theory::LiftingSurfaceFrequency, omega_bar) => {
+            return Err(DampingError::Frequency {
+                theory: out.theory,
+                omega_bar,
+            });
+        }
+        (_, w) => w.unwrap_or(0.0),
+    };
+    let shape = cache::unit_wing(wing.aspect_ratio, wing.taper, wing.sweep_le)?;
+    let solution = cache::solution(&shape, mach, w, harmonic)?;
+    if mach > LATTICE_MACH {
+        out.warnings.push(Warning::LatticeNearSonic { mach });
+    }
+    if w > LATTICE_OMEGA_BAR {
+        out.warnings
+            .push(Warning::LatticeHighFrequency { omega_bar: w });
+    }
+    Ok(solution.derivatives(h, 0.0)?.damping())
+}
+
+/// Above this Mach number the default lattice's chordwise boxes are long
+/// against the Prandtl–Glauert stretched chord (warned).
+pub const LATTICE_MACH: f64 = 0.9;
+
+/// Above this ω̄ the default lattice's boxes are long against the
+/// wavelength (warned; `docs/damping-theories.md`, limits).
+pub const LATTICE_OMEGA_BAR: f64 = 2.0;
 
 /// The transonic theories (38)–(40) warn further than this from M = 1.
 pub const TRANSONIC_RANGE: f64 = 0.2;

@@ -11,12 +11,12 @@
 //! | --- | --- |
 //! | §2.2 the planform | [`geometry`] |
 //! | §5–6 aerodynamic coefficients, stiffness derivatives | [`aero`], [`stiffness`] |
-//! | §7 the damping derivatives and their theories | [`theory`], [`damping`], [`supersonic`] (supersonic leading edges) |
+//! | §7 the damping derivatives and their theories | [`theory`], [`damping`], [`supersonic`] (supersonic leading edges), [`lifting_surface`] (subsonic lifting surface) |
 //! | §3 the derivative set | [`derivatives`] |
 //! | §3–4, eqs (4)–(6) the stability quartic; its roots | [`quartic`], [`roots`] |
 //! | §4, eqs (7)–(8) the modes; the report's own method | [`modes`], [`classical`] |
 //! | §4 Routh, §8 the damping standard, §9 margins | [`criteria`] |
-//! | a derivative set's analysis; a design point; the study | [`analysis`], [`case`], [`study`] |
+//! | a derivative set's analysis; a design point; a grid of them; the study | [`analysis`], [`case`], [`sweep`], [`study`] |
 //! | §10 which derivative drives the damping | [`sensitivity`] |
 //! | §11 responses | [`response`] |
 //! | the appendix's notations | [`notation`] |
@@ -57,6 +57,7 @@ pub mod sensitivity;
 pub mod stiffness;
 pub mod study;
 pub mod supersonic;
+pub mod sweep;
 pub mod theory;
 pub mod units;
 pub mod warnings;

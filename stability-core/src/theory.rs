@@ -18,16 +18,20 @@ pub enum Theory {
     Supersonic,
     Transonic,
     TransonicFrequency,
+    LiftingSurface,
+    LiftingSurfaceFrequency,
 }
 
 impl Theory {
-    pub const ALL: [Theory; 6] = [
+    pub const ALL: [Theory; 8] = [
         Theory::Garrick,
         Theory::GarnerTaper,
         Theory::Slender,
         Theory::Supersonic,
         Theory::Transonic,
         Theory::TransonicFrequency,
+        Theory::LiftingSurface,
+        Theory::LiftingSurfaceFrequency,
     ];
 
     /// The theory's name in configs and on the command line.
@@ -39,10 +43,13 @@ impl Theory {
             Theory::Supersonic => "supersonic",
             Theory::Transonic => "transonic",
             Theory::TransonicFrequency => "transonic-frequency",
+            Theory::LiftingSurface => "lifting-surface",
+            Theory::LiftingSurfaceFrequency => "lifting-surface-frequency",
         }
     }
 
-    /// The report's equations.
+    /// The report's equations (for the lifting surface, which the report
+    /// quotes but does not print, its section and method).
     pub fn equations(self) -> &'static str {
         match self {
             Theory::Garrick => "(32)–(33)",
@@ -51,12 +58,42 @@ impl Theory {
             Theory::Supersonic => "(36)",
             Theory::Transonic => "(38)",
             Theory::TransonicFrequency => "(39)–(40)",
+            Theory::LiftingSurface | Theory::LiftingSurfaceFrequency => "§7, doublet lattice",
         }
     }
 
-    /// Whether the derivatives depend on the frequency parameter ω̄.
+    /// The equations as messages cite them, in parentheses: `(39)–(40)`,
+    /// `(§7, doublet lattice)`.
+    pub fn cited(self) -> &'static str {
+        match self {
+            Theory::LiftingSurface | Theory::LiftingSurfaceFrequency => "(§7, doublet lattice)",
+            t => t.equations(),
+        }
+    }
+
+    /// Whether the derivatives depend on the frequency parameter ω̄ and it
+    /// is iterated to the short period's own (ω̄ = s/μ₁).
     pub fn uses_frequency(self) -> bool {
-        self == Theory::TransonicFrequency
+        matches!(
+            self,
+            Theory::TransonicFrequency | Theory::LiftingSurfaceFrequency
+        )
+    }
+
+    /// Whether the theory takes a frequency parameter ω̄ at all: the
+    /// iterated ones, and `lifting-surface` (quasi-steady, or at a given
+    /// ω̄).
+    pub fn takes_omega_bar(self) -> bool {
+        self.uses_frequency() || self == Theory::LiftingSurface
+    }
+
+    /// Whether the theory is the doublet lattice's
+    /// ([`crate::lifting_surface`]), for any straight-tapered wing.
+    pub fn is_lifting_surface(self) -> bool {
+        matches!(
+            self,
+            Theory::LiftingSurface | Theory::LiftingSurfaceFrequency
+        )
     }
 }
 

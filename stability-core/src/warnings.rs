@@ -44,6 +44,10 @@ pub enum Warning {
     FairedHeldAtSonicEdge { sonic: f64 },
     /// The frequency iteration did not converge.
     FrequencyNotConverged { iterations: usize, last: f64 },
+    /// The doublet lattice close to M = 1.
+    LatticeNearSonic { mach: f64 },
+    /// The doublet lattice at a frequency its boxes barely resolve.
+    LatticeHighFrequency { omega_bar: f64 },
 }
 
 impl fmt::Display for Warning {
@@ -104,6 +108,16 @@ impl fmt::Display for Warning {
             Warning::FrequencyNotConverged { iterations, last } => write!(
                 f,
                 "the frequency parameter did not converge in {iterations} iterations (last ω̄ = {last:.6})"
+            ),
+            Warning::LatticeNearSonic { mach } => write!(
+                f,
+                "lifting surface at M = {}: the default lattice's boxes are long against the chord stretched by 1/β = {:.2}, and linear theory fails towards M = 1",
+                Num(mach),
+                1.0 / (1.0 - mach * mach).sqrt()
+            ),
+            Warning::LatticeHighFrequency { omega_bar } => write!(
+                f,
+                "lifting surface at ω̄ = {omega_bar:.3}: the default lattice resolves ω̄ ≲ 2 (boxes short against the wavelength)"
             ),
         }
     }

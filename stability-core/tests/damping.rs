@@ -304,11 +304,17 @@ fn theories_outside_their_validity_are_errors_not_nan() {
     ));
     assert!(matches!(
         damping_derivatives(Theory::TransonicFrequency, &w, 0.25, 1.0, None),
-        Err(DampingError::Frequency { omega_bar: None })
+        Err(DampingError::Frequency {
+            omega_bar: None,
+            ..
+        })
     ));
     assert!(matches!(
         damping_derivatives(Theory::TransonicFrequency, &w, 0.25, 1.0, Some(-1.0)),
-        Err(DampingError::Frequency { omega_bar: Some(_) })
+        Err(DampingError::Frequency {
+            omega_bar: Some(_),
+            ..
+        })
     ));
     let bad = WingInput { sweep_le: 0.0, ..w };
     assert!(matches!(

@@ -3,10 +3,10 @@
 //! zero — of a lattice twice as dense in each direction, for the note's
 //! wings, cropped deltas and aspect ratios 0.5 to 8, at M = 0, 0.8
 //! (quasi-steady) and M = 0.5, ω̄ = 0.5. The dense lattice's values are a
-//! fixture (`examples/lifting_surface_convergence.rs --write`, release, a
-//! few seconds; debug-mode CI could not afford them); the ignored test
-//! recomputes them: `cargo test --release -p stability-core --test
-//! lifting_surface_convergence -- --ignored`.
+//! fixture, which debug-mode CI could not afford to recompute: the example
+//! writes it, and checks it against a fresh computation —
+//! `cargo run --release -p stability-core --example
+//! lifting_surface_convergence -- --write` (or `-- --check`, a few seconds).
 
 #[path = "../examples/lifting_surface_convergence.rs"]
 #[allow(dead_code)]
@@ -63,21 +63,6 @@ fn the_default_lattice_is_within_half_a_percent_of_one_twice_as_dense() {
                 (x - y).abs() <= tol,
                 "{name}, M = {mach}, ω̄ = {omega_bar}: {} = {x} against {y} twice as dense",
                 convergence::NAMES[k]
-            );
-        }
-    }
-}
-
-#[test]
-#[ignore = "release only: recomputes the dense lattices of the fixture"]
-fn the_fixture_is_the_dense_lattice() {
-    for (name, wing, mach, omega_bar, dense) in cases() {
-        let spec = LatticeSpec::for_wing(&wing).scaled(2);
-        let again = convergence::outputs(&wing, spec, mach, omega_bar);
-        for (x, y) in again.iter().zip(&dense) {
-            assert!(
-                (x - y).abs() <= 1e-9 * (1.0 + y.abs()),
-                "{name}: {x} vs {y}"
             );
         }
     }

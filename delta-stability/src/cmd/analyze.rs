@@ -12,8 +12,10 @@ use crate::output::print;
 use crate::page::analysis_page;
 use serde::Serialize;
 use stability_core::Derivatives;
+use stability_core::aero::AeroModelName;
 use stability_core::case::{CaseResult, DampingModel, FrequencyIteration, evaluate};
 use stability_core::criteria::Margins;
+use stability_core::damping::Theory;
 use stability_core::engineering::Engineering;
 use stability_core::flight::{FlightJson, FlightPoint, PhysicalFlight};
 use stability_core::json::CaseView;
@@ -27,11 +29,15 @@ pub struct Overrides {
     pub damping: Option<DampingModel>,
     pub mach: Option<f64>,
     pub cg: Option<f64>,
+    pub aero: Option<AeroModelName>,
+    /// `--omega-bar W`: the frequency-dependent theories at ω̄ = W (not
+    /// iterated).
+    pub omega_bar: Option<f64>,
 }
 
 /// The config with the command line's overrides applied, each within its
-/// range.
-fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
+/// range (`analyze`'s and `sweep`'s).
+pub fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
     let mut cfg = config::read(path)?;
     let bad =
         |flag: &str, m: String| Failure::Input(InputError::file(path, format!("{flag}: {m}")));
@@ -47,7 +53,36 @@ fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
         cfg.case.h = limits::CG.check(h).map_err(|e| bad("--cg", e))?;
         cfg.overridden_by("[flight] cg", format!("--cg {}", num(h)));
     }
+    if let Some(a) = o.aero {
+        cfg.case.aero = cfg.case.aero.clone().with_name(a);
+        cfg.overridden_by("[model] aero", format!("--aero {}", a.name()));
+    }
+    if let Some(w) = o.omega_bar {
+        let w = limits::OMEGA_BAR
+            .check(w)
+            .map_err(|e| bad("--omega-bar", e))?;
+        if !cfg.case.damping.takes_omega_bar() {
+            return Err(bad("--omega-bar", no_omega_bar(cfg.case.damping)));
+        }
+        cfg.case.omega_bar = Some(w);
+        cfg.case.iterate_frequency = false;
+        cfg.overridden_by("[model] omega_bar", format!("--omega-bar {}", num(w)));
+    }
     Ok(cfg)
+}
+
+/// Why `--omega-bar` does not apply to `model`.
+fn no_omega_bar(model: DampingModel) -> String {
+    let takers: Vec<&str> = Theory::ALL
+        .into_iter()
+        .filter(|t| t.takes_omega_bar())
+        .map(Theory::name)
+        .collect();
+    format!(
+        "the damping model `{}` takes no frequency parameter; the theories that do: {}",
+        model.name(),
+        takers.join(", ")
+    )
 }
 
 /// A design point's results: the library's, and the engineer's.
@@ -280,6 +315,16 @@ fn design_point(s: &mut String, cfg: &config::Config, r: &CaseResult) {
     );
     if let Some(f) = &r.frequency {
         frequency(s, f);
+    } else if c.damping == DampingModel::Theory(Theory::LiftingSurface) {
+        let _ = writeln!(
+            s,
+            "  frequency parameter: {}",
+            c.omega_bar
+                .map_or("quasi-steady (ω̄ → 0)".into(), |w| format!(
+                    "ω̄ = {}",
+                    sig(w, 4)
+                ))
+        );
     }
 }
 

@@ -2,23 +2,25 @@
 //! design points over a Cartesian grid, evaluated in parallel (rayon),
 //! written atomically.
 //!
-//! The grid is evaluated in chunks; within a chunk, blocks of points are
-//! formatted in parallel into their own buffers, and a chunk is written while
-//! the next is computed. Each point takes the lean path
-//! ([`stability_core::case::evaluate_point`]: no eq (7) check).
+//! The computation is the library's ([`stability_core::sweep`]); this
+//! command parses the ranges and writes the rows. The grid is evaluated in
+//! chunks; within a chunk, blocks of points are evaluated and formatted in
+//! parallel into their own buffers, and a chunk is written while the next
+//! is computed.
 
 use crate::Failure;
-use crate::config::{self, limits};
+use crate::args::{AeroArg, DampingArg};
+use crate::cmd::analyze::{Overrides, overridden};
+use crate::config::limits;
 use crate::diag::InputError;
 use crate::files::write_error;
 use crate::output::AtomicFile;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 use stability_core::Derivatives;
-use stability_core::analysis::Analysis;
-use stability_core::case::{Case, CaseResult, evaluate_point};
-use stability_core::geometry::{Planform, Size};
+use stability_core::case::Case;
 use stability_core::study::grid as values;
+use stability_core::sweep::{Axes, PointError, Points, Sweep, SweepError};
 use std::io::Write as _;
 use std::path::Path;
 
@@ -91,68 +93,45 @@ pub struct Options {
     /// notation) to each row, e.g. to feed another tool.
     #[arg(long)]
     pub derivatives: bool,
+    /// Override the config's damping model (see `analyze --help`). With
+    /// lifting-surface the lattice is solved once per sweep and Mach number;
+    /// with lifting-surface-frequency each point's ω̄ is interpolated between
+    /// solved frequencies.
+    #[arg(long, value_enum)]
+    pub damping: Option<DampingArg>,
+    /// Override the config's aerodynamic model (see `analyze --help`).
+    #[arg(long, value_enum)]
+    pub aero: Option<AeroArg>,
+    /// Evaluate a frequency-dependent damping theory at ω̄ = W at every
+    /// point, not iterated (as `analyze --omega-bar`).
+    #[arg(long = "omega-bar", value_name = "W", value_parser = crate::args::positive)]
+    pub omega_bar: Option<f64>,
 }
 
-/// The grid's axes, in output order; the last varies fastest.
+/// The library's grid, and each axis's values as written (formatted once,
+/// not once per row).
 pub struct Grid {
-    pub mach: Vec<f64>,
-    pub sweep_deg: Vec<f64>,
-    pub cg: Vec<f64>,
-    pub mu1: Vec<f64>,
-    pub i_b: Vec<f64>,
-    planforms: Vec<Planform>,
-    /// Each axis's values as written (formatted once, not once per row).
+    pub sweep: Sweep,
     text: [Vec<Box<str>>; 5],
-    base: Case,
-    /// The physical flight condition of each planform, when the config's
-    /// is physical.
+    /// With a physical flight condition, each planform's μ₁ and i_B as
+    /// written.
     physical: Option<super::sweep_physical::PhysicalAxis>,
 }
 
 impl Grid {
-    fn dims(&self) -> [usize; 5] {
-        [
-            self.mach.len(),
-            self.sweep_deg.len(),
-            self.cg.len(),
-            self.mu1.len(),
-            self.i_b.len(),
-        ]
+    /// The number of design points.
+    pub fn points(&self) -> usize {
+        self.sweep.len()
     }
 
-    /// The number of design points, if it fits in a `usize`.
-    pub fn points(&self) -> Option<usize> {
-        self.dims()
-            .iter()
-            .try_fold(1usize, |acc, &d| acc.checked_mul(d))
-    }
-
-    /// Makes `case` the `i`-th design point (from the base point, whose other
-    /// fields it keeps; no clone per point) and returns its grid values as
-    /// written, and the index of its planform.
-    fn set_point(&self, i: usize, case: &mut Case) -> ([&str; 5], usize) {
-        let dims = self.dims();
-        let mut k = i;
-        let mut idx = [0usize; 5];
-        for d in (0..5).rev() {
-            idx[d] = k % dims[d];
-            k /= dims[d];
-        }
-        let head = [
-            self.mach[idx[0]],
-            self.sweep_deg[idx[1]],
-            self.cg[idx[2]],
-            self.mu1[idx[3]],
-            self.i_b[idx[4]],
-        ];
-        case.planform = self.planforms[idx[1]];
-        [case.mach, _, case.h, case.mu1, case.i_b] = head;
+    /// The grid values as written of the point of indices `idx` (μ₁ and
+    /// i_B the planform's, with a physical flight condition).
+    fn head(&self, idx: [usize; 5]) -> [&str; 5] {
         let mut text: [&str; 5] = std::array::from_fn(|k| &*self.text[k][idx[k]]);
         if let Some(p) = &self.physical {
-            p.apply(idx[1], case);
             [text[3], text[4]] = p.text(idx[1]);
         }
-        (text, idx[1])
+        text
     }
 }
 
@@ -251,27 +230,14 @@ impl Row<'_> {
     }
 }
 
-/// Whether every number a point's row would carry is finite (a point
-/// whose numbers overflow is written as an error, not as blanks).
-fn finite(d: &Derivatives, a: &Analysis) -> bool {
-    d.quartic_input_values().iter().all(|v| v.is_finite())
-        && a.quartic.to_array().iter().all(|v| v.is_finite())
-        && a.roots.iter().all(|z| z.re.is_finite() && z.im.is_finite())
-        && a.routh.discriminant.is_finite()
-        && a.damping_standard.m_thetadot.is_finite()
-}
-
-/// The error of a point whose numbers overflow.
-const OVERFLOW: &str = "the design point's numbers overflow f64";
-
 /// The modes in seconds of a physical flight condition's point (`None`
 /// without one).
-type Seconds = Option<[Option<f64>; super::sweep_physical::COLUMNS.len()]>;
+type Seconds = Option<super::sweep_physical::Seconds>;
 
 fn write_point(
     out: &mut Vec<u8>,
     head: [&str; 5],
-    r: Result<(&Derivatives, &Analysis), &dyn std::fmt::Display>,
+    r: Result<(&Points, usize), &PointError>,
     options: (bool, bool),
     seconds: Seconds,
 ) {
@@ -289,13 +255,9 @@ fn write_point(
         row.key(name);
         row.out.extend_from_slice(v.as_bytes());
     }
-    let r = match r {
-        Ok((d, a)) if !finite(d, a) => Err(&OVERFLOW as &dyn std::fmt::Display),
-        other => other,
-    };
     match r {
-        Ok((d, a)) => {
-            results(&mut row, d, a, with_derivatives, seconds);
+        Ok((p, k)) => {
+            results(&mut row, p, k, with_derivatives, seconds);
             if !json {
                 row.key("error");
             }
@@ -317,90 +279,58 @@ fn write_point(
     }
 }
 
-/// A point's results: Routh, the verdict, the modes, eq (41), and the
+/// Point `k`'s results: Routh, the verdict, the modes, eq (41), and the
 /// derivatives when asked for.
-fn results(
-    row: &mut Row<'_>,
-    d: &Derivatives,
-    a: &Analysis,
-    with_derivatives: bool,
-    seconds: Seconds,
-) {
-    let sp = a.modes.short_period();
-    let ph = a.modes.phugoid();
-    row.boolean("stable", a.routh.stable);
-    row.word("verdict", a.verdict.as_str());
-    row.number("sp_re", sp.map(|m| m.re));
-    row.number("sp_im", sp.map(|m| m.im));
-    row.number("sp_cycles_to_half", sp.and_then(|m| m.cycles_to_half));
-    row.number("sp_damping_ratio", sp.and_then(|m| m.damping_ratio));
-    row.number("sp_omega_bar", sp.and_then(|m| m.frequency_parameter));
-    row.number("ph_re", ph.map(|m| m.re));
-    row.number("ph_im", ph.map(|m| m.im));
-    row.number("m_thetadot", Some(a.damping_standard.m_thetadot));
-    row.number("delta_m_thetadot", a.damping_standard.margin);
+fn results(row: &mut Row<'_>, p: &Points, k: usize, with_derivatives: bool, seconds: Seconds) {
+    let some = |v: f64| Some(v);
+    row.boolean("stable", p.stable[k] == Some(true));
+    row.word("verdict", p.verdict[k].map_or("", |v| v.as_str()));
+    row.number("sp_re", some(p.sp_re[k]));
+    row.number("sp_im", some(p.sp_im[k]));
+    row.number("sp_cycles_to_half", some(p.sp_cycles_to_half[k]));
+    row.number("sp_damping_ratio", some(p.sp_damping_ratio[k]));
+    row.number("sp_omega_bar", some(p.sp_omega_bar[k]));
+    row.number("ph_re", some(p.ph_re[k]));
+    row.number("ph_im", some(p.ph_im[k]));
+    row.number("m_thetadot", some(p.m_thetadot[k]));
+    row.number("delta_m_thetadot", some(p.delta_m_thetadot[k]));
     if let Some(values) = seconds {
         for (name, v) in super::sweep_physical::COLUMNS.iter().zip(values) {
             row.number(name, v);
         }
     }
-    if with_derivatives {
-        let values = d.quartic_input_values();
+    if let (true, Some(ds)) = (with_derivatives, &p.derivatives) {
+        let values = ds[k].quartic_input_values();
         for (name, v) in Derivatives::QUARTIC_INPUTS.iter().zip(values) {
             row.number(name, Some(v));
         }
     }
 }
 
-/// Evaluates points `range` of the grid into one buffer. Consecutive points
-/// that differ in μ₁ and i_B only share their derivatives
-/// ([`stability_core::case::DampingModel::depends_on_mass`]): the
-/// aerodynamics are evaluated once and the quartic again.
+/// Evaluates points `range` of the grid (the library's lean path, reusing
+/// the aerodynamics across μ₁ and i_B where the model allows) and formats
+/// them into one buffer.
 fn block(grid: &Grid, range: std::ops::Range<usize>, options: (bool, bool)) -> Vec<u8> {
     let mut out = Vec::with_capacity(range.len() * 280);
-    let per_aero = grid.mu1.len() * grid.i_b.len();
-    let reuse = !grid.base.damping.depends_on_mass();
-    let mut last: Option<(usize, CaseResult)> = None;
-    let mut case = grid.base.clone();
-    for i in range {
+    let points = grid.sweep.evaluate(range.clone(), options.1);
+    let mut errors = points.errors.iter().peekable();
+    let indices = grid.sweep.indices(range.clone());
+    for (k, (i, idx)) in range.zip(indices).enumerate() {
         if options.0 && i > 0 {
             out.extend_from_slice(b",\n");
         }
-        let (head, k) = grid.set_point(i, &mut case);
-        let key = i / per_aero;
-        let seconds = |a: Option<&Analysis>| {
-            grid.physical.as_ref().map(|p| match a {
-                Some(a) => p.seconds(k, case.mach, a),
-                None => [None; super::sweep_physical::COLUMNS.len()],
-            })
-        };
-        match &last {
-            Some((k, r)) if reuse && *k == key => {
-                let d = Derivatives {
-                    mu1: case.mu1,
-                    i_b: case.i_b,
-                    ..r.derivatives
-                };
-                match Analysis::without_classical(&d) {
-                    Ok(a) => write_point(&mut out, head, Ok((&d, &a)), options, seconds(Some(&a))),
-                    Err(e) => write_point(&mut out, head, Err(&e), options, seconds(None)),
-                }
+        let r = match errors.peek() {
+            Some((at, e)) if *at == k => {
+                errors.next();
+                Err(e)
             }
-            _ => match evaluate_point(&case) {
-                Ok(r) => {
-                    let sec = seconds(Some(&r.analysis));
-                    write_point(
-                        &mut out,
-                        head,
-                        Ok((&r.derivatives, &r.analysis)),
-                        options,
-                        sec,
-                    );
-                    last = Some((key, r));
-                }
-                Err(e) => write_point(&mut out, head, Err(&e), options, seconds(None)),
-            },
-        }
+            _ => Ok((&points, k)),
+        };
+        let seconds = grid.physical.as_ref().map(|_| {
+            let point = r.is_ok().then(|| grid.sweep.flight_point(i)).flatten();
+            super::sweep_physical::seconds(point, &points, k)
+        });
+        write_point(&mut out, grid.head(idx), r, options, seconds);
         if !options.0 {
             out.push(b'\n');
         }
@@ -415,6 +345,9 @@ pub fn grid(
     base: Case,
     physical: Option<&crate::config::physical::Physical>,
 ) -> Result<Grid, String> {
+    if physical.is_some() {
+        super::sweep_physical::refuse_ranges([("mu1", o.mu1.is_some()), ("ib", o.ib.is_some())])?;
+    }
     let or_base = |flag: &str, v: &Option<String>, base: f64| match v {
         Some(t) => parse_range(flag, t),
         None => Ok(vec![clean(base)]),
@@ -425,54 +358,41 @@ pub fn grid(
         }
         Ok(v)
     };
-    let mach = within("mach", parse_range("mach", &o.mach)?, &limits::MACH)?;
-    let sweep_deg = or_base("sweep", &o.sweep, base.planform.sweep_le.to_degrees())?;
-    let cg = within("cg", or_base("cg", &o.cg, base.h)?, &limits::CG)?;
-    let mu1 = within("mu1", or_base("mu1", &o.mu1, base.mu1)?, &limits::MU1)?;
-    let i_b = within("ib", or_base("ib", &o.ib, base.i_b)?, &limits::I_B)?;
-    let mut planforms = Vec::with_capacity(sweep_deg.len());
-    for &s in &sweep_deg {
-        let p = Planform::new(s.to_radians(), base.planform.taper, Size::RootChord(1.0))
-            .map_err(|e| format!("--sweep {s}: {e}"))?;
-        planforms.push(Planform {
-            sweep_le: p.sweep_le,
-            ..base.planform
-        });
-    }
-    let physical = match physical {
-        Some(p) => Some(super::sweep_physical::PhysicalAxis::new(
-            p,
-            &planforms,
-            [("mu1", o.mu1.is_some()), ("ib", o.ib.is_some())],
-        )?),
-        None => None,
+    let axes = Axes {
+        mach: within("mach", parse_range("mach", &o.mach)?, &limits::MACH)?,
+        sweep_deg: or_base("sweep", &o.sweep, base.planform.sweep_le.to_degrees())?,
+        cg: within("cg", or_base("cg", &o.cg, base.h)?, &limits::CG)?,
+        mu1: within("mu1", or_base("mu1", &o.mu1, base.mu1)?, &limits::MU1)?,
+        i_b: within("ib", or_base("ib", &o.ib, base.i_b)?, &limits::I_B)?,
     };
     let mut num = zmij::Buffer::new();
     let mut text =
         |v: &[f64]| -> Vec<Box<str>> { v.iter().map(|&x| num.format(x).into()).collect() };
     let text = [
-        text(&mach),
-        text(&sweep_deg),
-        text(&cg),
-        text(&mu1),
-        text(&i_b),
+        text(&axes.mach),
+        text(&axes.sweep_deg),
+        text(&axes.cg),
+        text(&axes.mu1),
+        text(&axes.i_b),
     ];
-    let g = Grid {
-        mach,
-        sweep_deg,
-        cg,
-        mu1,
-        i_b,
-        planforms,
-        text,
-        base,
-        physical,
+    let sweep = Sweep::new(base, axes).map_err(|e| match e {
+        SweepError::Planform { sweep_deg, error } => format!("--sweep {sweep_deg}: {error}"),
+        SweepError::TooLarge { points: Some(n) } => {
+            format!("the grid has {n} points; the limit is 2e8")
+        }
+        SweepError::TooLarge { points: None } => "the grid is too large".into(),
+        e => e.to_string(),
+    })?;
+    let sweep = match physical {
+        Some(p) => sweep.with_flight(&p.condition).map_err(|e| e.to_string())?,
+        None => sweep,
     };
-    match g.points() {
-        Some(n) if n <= 200_000_000 => Ok(g),
-        Some(n) => Err(format!("the grid has {n} points; the limit is 2e8")),
-        None => Err("the grid is too large".into()),
-    }
+    let physical = super::sweep_physical::PhysicalAxis::of(&sweep);
+    Ok(Grid {
+        sweep,
+        text,
+        physical,
+    })
 }
 
 /// Whether the output is JSON (`.json`) or CSV (`.csv`).
@@ -500,15 +420,23 @@ fn progress_bar(total: usize) -> ProgressBar {
 }
 
 pub fn run(o: &Options) -> Result<(), Failure> {
-    let cfg = config::read(&o.config)?;
+    let overrides = Overrides {
+        damping: o.damping.map(|d| d.0),
+        aero: o.aero.map(|a| a.0),
+        omega_bar: o.omega_bar,
+        ..Overrides::default()
+    };
+    let cfg = overridden(&o.config, &overrides)?;
     let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
     let json = is_json(o).map_err(&bad)?;
     let grid = grid(o, cfg.case, cfg.physical.as_ref()).map_err(&bad)?;
     let out = Path::new(&o.output);
     let write_err = |e: std::io::Error| Failure::Io(write_error(out, &e));
     let mut file = AtomicFile::create(out).map_err(write_err)?;
-    let total = grid.points().unwrap_or(0);
+    let total = grid.points();
     let bar = progress_bar(total);
+    // the lifting surface's solves, once per (planform, Mach), in parallel
+    grid.sweep.prepare();
     if json {
         file.write_all(b"[\n").map_err(write_err)?;
     } else {
@@ -539,7 +467,7 @@ fn write_points(
 ) -> std::io::Result<()> {
     const CHUNK: usize = 1 << 16;
     const BLOCK: usize = 1 << 10;
-    let total = grid.points().unwrap_or(0);
+    let total = grid.points();
     let compute = |start: usize| -> Vec<Vec<u8>> {
         let end = (start + CHUNK).min(total);
         (start..end)

@@ -18,8 +18,11 @@
 //! # or rho with speed_of_sound), mass (or weight), I_y
 //!
 //! [model]               # optional
-//! damping = "faired"    # or garrick, garner-taper, slender, supersonic, transonic, transonic-frequency
-//! omega_bar = 0.3       # starting ω̄ for transonic-frequency (default: √(−m_w/(μ₁i_B)))
+//! damping = "faired"    # or garrick, garner-taper, slender, supersonic, transonic, transonic-frequency,
+//!                       # lifting-surface, lifting-surface-frequency
+//! aero = "default"      # or lifting-surface: lift slope and aerodynamic centre from the lattice (M < 1)
+//! omega_bar = 0.3       # lifting-surface: the ω̄ it is evaluated at (default 0, quasi-steady);
+//!                       # the iterated theories: the starting ω̄ (default √(−m_w/(μ₁i_B)))
 //! iterate_frequency = true
 //! [model.tables]        # optional: the user's curves instead of the defaults
 //! lift_slope = { mach = [0.5, 0.9, 1.2], value = [3.1, 3.6, 3.4] }
@@ -40,10 +43,11 @@ use crate::Failure;
 use crate::diag::{InputError, quote};
 use crate::input::toml_error;
 use raw::{RawConfig, RawModel, RawPlanform};
-use stability_core::aero::{AeroError, AeroModel, Source};
+use stability_core::aero::{AeroError, AeroModel, AeroModelName, Source};
 use stability_core::case::{Case, CaseError, DampingModel};
 use stability_core::damping::DampingError;
 use stability_core::geometry::{GeometryError, Planform, Size};
+use stability_core::lifting_surface::LiftingSurfaceError;
 use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
@@ -278,6 +282,24 @@ fn model(r: &mut Reader<'_>, m: &RawModel, case: &mut Case) -> Result<(), Failur
             aerodynamic_centre: get("aerodynamic_centre", &t.aerodynamic_centre)?,
         };
     }
+    if let Some(a) = &m.aero {
+        r.spans.push(("[model] aero".into(), a.span()));
+        let name = AeroModelName::parse(a.get_ref()).ok_or_else(|| {
+            let names = AeroModelName::ALL.map(AeroModelName::name);
+            r.err(
+                a.span(),
+                "[model] aero",
+                format!(
+                    "unknown aerodynamic model `{}`{}; the models are: {}",
+                    quote(a.get_ref()),
+                    crate::input::suggest::did_you_mean(a.get_ref(), names.iter().copied()),
+                    names.join(", ")
+                ),
+            )
+        })?;
+        // a table wins over the named model for its coefficient
+        case.aero = case.aero.clone().with_name(name);
+    }
     Ok(())
 }
 
@@ -319,10 +341,17 @@ impl Config {
     /// The design point's failure, at the field it arises from.
     pub fn explain(&self, e: &CaseError) -> InputError {
         let field = match e {
-            CaseError::Aero(AeroError::OutsideTable { .. } | AeroError::OutsideDefaults(_)) => {
+            CaseError::Aero(
+                AeroError::OutsideTable { .. }
+                | AeroError::OutsideDefaults(_)
+                | AeroError::LatticeMach(_),
+            ) => "[flight] mach",
+            CaseError::Aero(AeroError::LiftingSurface(_)) => "[model] aero",
+            CaseError::Aero(_) => "[model.tables]",
+            CaseError::Damping(DampingError::LiftingSurface(LiftingSurfaceError::Mach(_))) => {
                 "[flight] mach"
             }
-            CaseError::Aero(_) => "[model.tables]",
+            CaseError::Damping(DampingError::Frequency { .. }) => "[model] omega_bar",
             CaseError::Damping(DampingError::Taper { .. }) => "[planform] taper",
             CaseError::Damping(DampingError::Sweep { .. }) => "[planform] sweep",
             CaseError::Damping(DampingError::NonFinite { .. }) => "[flight] cg",

@@ -51,6 +51,7 @@ pub struct RawFlight {
 #[serde(deny_unknown_fields)]
 pub struct RawModel {
     pub damping: Option<Spanned<String>>,
+    pub aero: Option<Spanned<String>>,
     pub omega_bar: Option<Spanned<f64>>,
     pub iterate_frequency: Option<bool>,
     pub tables: Option<Spanned<RawTables>>,

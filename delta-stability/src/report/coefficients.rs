@@ -1,5 +1,6 @@
 //! §6: the aerodynamic coefficients and the stiffness derivatives of the
-//! two wings across Mach number (Figs 2–3, 5–12).
+//! two wings across Mach number (Figs 2–3, 5–12), and Fig 4 (the lift slope
+//! against aspect ratio, [`super::lifting_surface`]).
 
 use super::{Plate, Study};
 use stability_core::case::CaseResult;
@@ -81,10 +82,13 @@ const FIGURES: [(&str, &str, &str, Of, &str); 10] = [
 ];
 
 pub fn plates(study: &Study) -> Vec<Plate> {
-    FIGURES
+    let mut out: Vec<Plate> = FIGURES
         .iter()
         .map(|&(id, title, y, f, caption)| {
             Plate::new(study.pair(id, title, y, &|r| Some(f(r))), caption)
         })
-        .collect()
+        .collect();
+    // Fig 4 after Fig 3: the lift slope against aspect ratio
+    out.insert(2, super::lifting_surface::fig4());
+    out
 }

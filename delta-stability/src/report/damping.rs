@@ -1,6 +1,7 @@
-//! §7: the damping theories (Figs 13, 16–18) and the faired damping
-//! derivatives (Figs 19–24), with Mangler's frequency-consistent theory
-//! near M = 1 beside them.
+//! §7: the damping theories (Figs 13, 16–18; Figs 14–15, Garrick beside
+//! the lifting surface, from [`super::lifting_surface`]) and the faired
+//! damping derivatives (Figs 19–24), with Mangler's frequency-consistent
+//! theory near M = 1 beside them.
 
 use super::study::{WINGS, curve, label, mach_fig};
 use super::{Plate, Study};
@@ -11,6 +12,7 @@ use stability_core::study::{grid, intervals};
 
 pub fn plates(study: &Study) -> Vec<Plate> {
     let mut out = vec![fig13()];
+    out.extend(super::lifting_surface::figs_14_15());
     out.extend(supersonic(study));
     out.push(fig18());
     out.extend(faired(study));

@@ -15,7 +15,7 @@
 //! The ω̄² terms of the pitch response's in-phase part (the q̇ derivatives)
 //! are not in the report's set and are not returned.
 
-use super::{LiftingSurfaceError, Solution};
+use super::{LiftingSurfaceError, Solution, Steady};
 use crate::damping::DampingDerivatives;
 use serde::Serialize;
 
@@ -48,6 +48,75 @@ impl LiftingSurfaceDerivatives {
     }
 }
 
+/// What the lattice's extrapolation combines number by number
+/// ([`super::Extrapolation`]).
+pub(super) trait Extrapolate: Sized {
+    /// a·self + b·other, number by number.
+    fn combine(&self, other: &Self, a: f64, b: f64) -> Self;
+
+    /// Itself if every number is finite, or the error.
+    fn checked(self) -> Result<Self, LiftingSurfaceError>;
+
+    /// Richardson's extrapolation (8X_N − 6X_{N/2} + X_{N/4})/3 of each
+    /// number, from the solutions of N, N/2 and N/4 boxes per strip.
+    fn richardson(&self, half: &Self, quarter: &Self) -> Self {
+        self.combine(half, 8.0 / 3.0, -2.0)
+            .combine(quarter, 1.0, 1.0 / 3.0)
+    }
+}
+
+impl Extrapolate for Solution {
+    fn checked(self) -> Result<Solution, LiftingSurfaceError> {
+        Solution::checked(self)
+    }
+
+    fn combine(&self, other: &Solution, a: f64, b: f64) -> Solution {
+        let c = |x: f64, y: f64| a * x + b * y;
+        Solution {
+            mach: self.mach,
+            omega_bar: self.omega_bar,
+            lift_alpha: c(self.lift_alpha, other.lift_alpha),
+            moment_alpha: c(self.moment_alpha, other.moment_alpha),
+            lift_alphadot: c(self.lift_alphadot, other.lift_alphadot),
+            moment_alphadot: c(self.moment_alphadot, other.moment_alphadot),
+            lift_q: c(self.lift_q, other.lift_q),
+            moment_q: c(self.moment_q, other.moment_q),
+        }
+    }
+}
+
+impl Extrapolate for Steady {
+    /// The solution checked; the rates by [`super::Lattice::solve_steady`].
+    fn checked(self) -> Result<Steady, LiftingSurfaceError> {
+        Ok(self)
+    }
+
+    fn combine(&self, other: &Steady, a: f64, b: f64) -> Steady {
+        let c = |x: f64, y: f64| a * x + b * y;
+        Steady {
+            solution: self.solution.combine(&other.solution, a, b),
+            d_lift_alpha: c(self.d_lift_alpha, other.d_lift_alpha),
+            d_moment_alpha: c(self.d_moment_alpha, other.d_moment_alpha),
+            d_lift_q: c(self.d_lift_q, other.d_lift_q),
+            d_moment_q: c(self.d_moment_q, other.d_moment_q),
+        }
+    }
+}
+
+impl Steady {
+    /// C_Lα and dC_Lα/dM (steady).
+    pub fn lift_slope(&self) -> (f64, f64) {
+        (self.solution.lift_alpha, self.d_lift_alpha)
+    }
+
+    /// H₀ = −μ_α/ℓ_α and dH₀/dM = −(μ_α′ℓ_α − μ_αℓ_α′)/ℓ_α² (steady).
+    pub fn aerodynamic_centre(&self) -> (f64, f64) {
+        let (l, m) = (self.solution.lift_alpha, self.solution.moment_alpha);
+        let d = -(self.d_moment_alpha * l - m * self.d_lift_alpha) / (l * l);
+        (-m / l, d)
+    }
+}
+
 impl Solution {
     /// A solution whose every number is finite, or the error.
     pub(super) fn checked(s: Solution) -> Result<Solution, LiftingSurfaceError> {
@@ -66,28 +135,6 @@ impl Solution {
                 mach: s.mach,
                 omega_bar: s.omega_bar,
             })
-        }
-    }
-
-    /// Richardson's extrapolation (8X_N − 6X_{N/2} + X_{N/4})/3 of each
-    /// number, from the solutions of N, N/2 and N/4 boxes per strip.
-    pub(super) fn richardson(&self, half: &Solution, quarter: &Solution) -> Solution {
-        self.combine(half, 8.0 / 3.0, -2.0)
-            .combine(quarter, 1.0, 1.0 / 3.0)
-    }
-
-    /// a·self + b·other, number by number.
-    pub(super) fn combine(&self, other: &Solution, a: f64, b: f64) -> Solution {
-        let c = |x: f64, y: f64| a * x + b * y;
-        Solution {
-            mach: self.mach,
-            omega_bar: self.omega_bar,
-            lift_alpha: c(self.lift_alpha, other.lift_alpha),
-            moment_alpha: c(self.moment_alpha, other.moment_alpha),
-            lift_alphadot: c(self.lift_alphadot, other.lift_alphadot),
-            moment_alphadot: c(self.moment_alphadot, other.moment_alphadot),
-            lift_q: c(self.lift_q, other.lift_q),
-            moment_q: c(self.moment_q, other.moment_q),
         }
     }
 

@@ -162,6 +162,45 @@ pub fn horseshoe(x: f64, y: f64, a: (f64, f64), b: (f64, f64)) -> f64 {
     -(bound + leg_b + leg_a)
 }
 
+/// [`horseshoe`] and its rate under a stretching of every streamwise
+/// coordinate: with g(s) = horseshoe(s·x, y, (s·xₐ, yₐ), (s·x_b, y_b)),
+/// returns (g(1), dg/ds at s = 1). Differentiated by hand term by term (each
+/// x-difference rₓ scales with s, so r′ = rₓ²/r, (rₓ/r)′ = (rₓ/r)(r_y/r)²,
+/// (r_y/r)′ = −(r_y/r)(rₓ/r)², and the cross product r₁ × r₂ scales as s);
+/// the same branches as [`horseshoe`]. The Prandtl–Glauert coordinates x/β
+/// are such a stretching, so this is what the lattice's Mach derivative
+/// needs ([`DoubletLine::steady_mach_rate`]).
+pub fn horseshoe_x_rate(x: f64, y: f64, a: (f64, f64), b: (f64, f64)) -> (f64, f64) {
+    let (r1x, r1y) = (x - a.0, y - a.1);
+    let (r2x, r2y) = (x - b.0, y - b.1);
+    let r1 = (r1x * r1x + r1y * r1y).sqrt();
+    let r2 = (r2x * r2x + r2y * r2y).sqrt();
+    let (u1, v1, u2, v2) = (r1x / r1, r1y / r1, r2x / r2, r2y / r2);
+    let (du1, dv1) = (u1 * v1 * v1, -v1 * u1 * u1);
+    let (du2, dv2) = (u2 * v2 * v2, -v2 * u2 * u2);
+    let cz = r1x * r2y - r1y * r2x;
+    let (r0x, r0y) = (b.0 - a.0, b.1 - a.1);
+    let (bound, d_bound) = if cz.abs() > 1e-14 * r1 * r2 {
+        let n = r0x * (u1 - u2) + r0y * (v1 - v2);
+        let dn = r0x * (u1 - u2) + r0x * (du1 - du2) + r0y * (dv1 - dv2);
+        // (N/cz)′ = (N′ − N)/cz, since cz′ = cz
+        (n / cz, (dn - n) / cz)
+    } else {
+        (0.0, 0.0)
+    };
+    let (leg_b, d_leg_b) = if r2y != 0.0 {
+        ((1.0 + u2) / r2y, du2 / r2y)
+    } else {
+        (0.0, 0.0)
+    };
+    let (leg_a, d_leg_a) = if r1y != 0.0 {
+        (-(1.0 + u1) / r1y, -du1 / r1y)
+    } else {
+        (0.0, 0.0)
+    };
+    (-(bound + leg_b + leg_a), -(d_bound + d_leg_b + d_leg_a))
+}
+
 impl DoubletLine {
     /// The line's ends, inner (smaller η) first.
     pub fn ends(&self) -> ((f64, f64), (f64, f64)) {
@@ -193,6 +232,20 @@ impl DoubletLine {
         let ((xa, ya), (xb, yb)) = self.ends();
         let g = horseshoe(x / beta, y, (xa / beta, ya), (xb / beta, yb));
         self.factor() * g
+    }
+
+    /// d[`Self::steady`]/dM at Mach `mach` (0 ≤ M < 1): with X = x/β the
+    /// horseshoe g(X) gives dg/dβ = −g_s/β (g_s its rate under a stretching
+    /// of X, [`horseshoe_x_rate`]) and dβ/dM = −M/β, so
+    /// dD₀/dM = (Δx/8π)·g_s·M/β². The exact derivative of the lattice's
+    /// steady matrix: what the aerodynamic model's da/dM and dH₀/dM (eqs
+    /// 27–29) are made of.
+    pub fn steady_mach_rate(&self, x: f64, y: f64, mach: f64) -> f64 {
+        let beta2 = 1.0 - mach * mach;
+        let beta = beta2.sqrt();
+        let ((xa, ya), (xb, yb)) = self.ends();
+        let (_, g_s) = horseshoe_x_rate(x / beta, y, (xa / beta, ya), (xb / beta, yb));
+        self.factor() * g_s * mach / beta2
     }
 
     /// The sub-line of half-width `e` centred `c` from this line's centre.
@@ -375,6 +428,52 @@ mod tests {
         assert!((g - 4.0).abs() < 1e-6, "{g}");
         let g = horseshoe(-0.25, 0.0, (0.0, -1e7), (0.0, 1e7));
         assert!((g + 8.0).abs() < 1e-6, "{g}");
+    }
+
+    #[test]
+    fn the_horseshoes_stretching_rate_is_its_derivative() {
+        // against a central difference of `horseshoe` with every x stretched
+        let (a, b) = ((0.1, 0.05), (0.35, 0.3));
+        for (x, y) in [
+            (0.6, 0.2),
+            (0.2, 0.18),
+            (-0.3, 0.1),
+            (0.9, -0.4),
+            (0.3, 0.3),
+        ] {
+            let (g, g_s) = horseshoe_x_rate(x, y, a, b);
+            assert_eq!(g, horseshoe(x, y, a, b));
+            let at = |s: f64| horseshoe(s * x, y, (s * a.0, a.1), (s * b.0, b.1));
+            let d = 1e-5;
+            let fd = (at(1.0 + d) - at(1.0 - d)) / (2.0 * d);
+            assert!(
+                (g_s - fd).abs() < 1e-7 * (1.0 + fd.abs()),
+                "({x}, {y}): {g_s} {fd}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_lines_mach_rate_is_the_derivative_of_its_steady_factor() {
+        let line = DoubletLine {
+            xi: 0.1,
+            eta: 0.2,
+            e: 0.15,
+            tan_sweep: 0.8,
+            chord: 0.2,
+        };
+        for m in [0.0, 0.3, 0.85] {
+            for (x, y) in [(0.25, 0.2), (0.3, 0.33), (0.9, 0.1), (-0.4, 0.25)] {
+                let at = |m: f64| line.steady(x, y, (1.0 - m * m).sqrt());
+                let d = 1e-5;
+                let fd = (at(m + d) - at(m - d)) / (2.0 * d);
+                let rate = line.steady_mach_rate(x, y, m);
+                assert!(
+                    (rate - fd).abs() < 1e-7 * (1.0 + fd.abs()),
+                    "{m} ({x}, {y}): {rate} {fd}"
+                );
+            }
+        }
     }
 
     #[test]

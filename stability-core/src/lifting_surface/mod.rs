@@ -41,6 +41,15 @@
 //! dozen flops); a frequency iteration calls [`Lattice::solve`] with each
 //! new ω̄ on the same lattice.
 //!
+//! # In the program
+//! The damping theories `lifting-surface` and `lifting-surface-frequency`
+//! and the aerodynamic model `lifting-surface` (`crate::damping`,
+//! `crate::aero`) take their solutions from [`cache`], which solves each
+//! (wing shape, M, ω̄) once per process; the aerodynamic model's lift slope
+//! and aerodynamic centre, with the exact Mach derivatives eqs (27)–(29)
+//! need, from [`Lattice::solve_steady`]; a sweep's frequency iterations
+//! interpolate in a [`FrequencyTable`] ([`Harmonic::Interpolated`]).
+//!
 //! # Notation
 //! The report's (§3): forces on ½ρSV, moments with a further c̄ (the
 //! M.A.C.), rates per qc̄/V and α̇c̄/V, ω̄ = ωc̄/V, h the c.g. aft of the
@@ -58,16 +67,20 @@
 //! derivatives carry Desmarais' approximation error (up to 1 %): ask for
 //! ω̄ = 0 for quasi-steady values, which are exact.
 
+pub mod cache;
 mod derivatives;
 pub mod doublet_line;
 pub mod figures;
+pub mod frequency;
 pub mod kernel;
 mod lattice;
 mod solve;
 
 pub use crate::geometry::Trapezoid;
+pub use cache::Harmonic;
 pub use derivatives::LiftingSurfaceDerivatives;
 pub use doublet_line::LineRule;
+pub use frequency::FrequencyTable;
 pub use kernel::I1Approximation;
 pub use lattice::{Box, Extrapolation, Lattice, LatticeSpec, Spacing};
 use serde::Serialize;
@@ -129,4 +142,18 @@ pub struct Solution {
     pub lift_q: f64,
     /// μ_q: in-phase moment (h = 0) per unit rate.
     pub moment_q: f64,
+}
+
+/// The quasi-steady [`Solution`] at one Mach number with the exact Mach
+/// derivatives of its in-phase numbers ([`Lattice::solve_steady`]): what the
+/// aerodynamic model's lift slope and aerodynamic centre, and their d/dM in
+/// eqs (27)–(29), come from.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Steady {
+    pub solution: Solution,
+    /// dℓ_α/dM, dμ_α/dM, dℓ_q/dM, dμ_q/dM.
+    pub d_lift_alpha: f64,
+    pub d_moment_alpha: f64,
+    pub d_lift_q: f64,
+    pub d_moment_q: f64,
 }

@@ -16,10 +16,11 @@
 //! (x̄ the M.A.C.'s leading edge), pitch about any axis is
 //! (1 + iω̄(x̄ − x_a)/c̄)·incidence + iω̄·rate: two solves serve every axis.
 
+use super::derivatives::Extrapolate;
 use super::doublet_line::{DoubletLine, FRAC_1_SQRT_3, GAUSS_BEYOND, LineRule};
 use super::kernel::{self, KernelFlow, Radial};
 use super::lattice::{Box, Grid, Lattice};
-use super::{LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution};
+use super::{LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution, Steady};
 use nalgebra::{DMatrix, Dyn, LU};
 use num_complex::Complex64;
 
@@ -38,33 +39,70 @@ impl Lattice {
     /// With [`super::Extrapolation::Richardson`] each number of the
     /// [`Solution`] is extrapolated over the three lattices.
     pub fn solve(&self, mach: f64, omega_bar: f64) -> Result<Solution, LiftingSurfaceError> {
-        if !(mach.is_finite() && (0.0..1.0).contains(&mach)) {
-            return Err(LiftingSurfaceError::Mach(mach));
-        }
+        check_mach(mach)?;
         if !(omega_bar.is_finite() && omega_bar >= 0.0) {
             return Err(LiftingSurfaceError::Frequency(omega_bar));
         }
-        let solve = |grid: &Grid| {
+        self.extrapolated(|grid| {
             if omega_bar < OMEGA_BAR_QUASI_STEADY {
                 self.solve_quasi_steady(grid, mach)
             } else {
                 self.solve_harmonic(grid, mach, omega_bar)
             }
-        };
-        let grids = self.grids();
-        let chordwise = |g: &[Grid]| -> Result<Solution, LiftingSurfaceError> {
+        })
+    }
+
+    /// The quasi-steady solution at `mach` ([`Lattice::solve`] at ω̄ = 0)
+    /// with the exact Mach derivatives of its in-phase numbers, from the
+    /// same LU: the steady matrix D₀(M) gives D₀f₀ = w̄ and
+    /// D₀(df₀/dM) = −(dD₀/dM)f₀, dD₀/dM entry by entry in closed form
+    /// ([`super::doublet_line::DoubletLine::steady_mach_rate`]) — the
+    /// Prandtl–Glauert stretching differentiated, not a difference.
+    /// Extrapolated as [`Lattice::solve`] is (the derivative of the
+    /// extrapolated value).
+    pub fn solve_steady(&self, mach: f64) -> Result<Steady, LiftingSurfaceError> {
+        check_mach(mach)?;
+        let steady = self.extrapolated(|grid| self.quasi_steady(grid, mach, true))?;
+        let s = Solution::checked(steady.solution)?;
+        let rates = [
+            steady.d_lift_alpha,
+            steady.d_moment_alpha,
+            steady.d_lift_q,
+            steady.d_moment_q,
+        ];
+        if rates.iter().all(|r| r.is_finite()) {
+            Ok(Steady {
+                solution: s,
+                ..steady
+            })
+        } else {
+            Err(LiftingSurfaceError::NotFinite {
+                mach,
+                omega_bar: 0.0,
+            })
+        }
+    }
+
+    /// `solve` on every lattice, extrapolated as the spec says (each lattice
+    /// solved, finest first; see [`super::Extrapolation`]).
+    fn extrapolated<T: Extrapolate>(
+        &self,
+        solve: impl Fn(&Grid) -> Result<T, LiftingSurfaceError>,
+    ) -> Result<T, LiftingSurfaceError> {
+        let chordwise = |g: &[Grid]| -> Result<T, LiftingSurfaceError> {
             let finest = solve(&g[0])?;
             if g.len() == 1 {
                 return Ok(finest);
             }
             Ok(finest.richardson(&solve(&g[1])?, &solve(&g[2])?))
         };
+        let grids = self.grids();
         if grids.len() < 6 {
-            return Solution::checked(chordwise(grids)?);
+            return chordwise(grids).and_then(T::checked);
         }
         let fine = chordwise(&grids[..3])?;
         let coarse = chordwise(&grids[3..])?;
-        Solution::checked(fine.combine(&coarse, 4.0 / 3.0, -1.0 / 3.0))
+        T::checked(fine.combine(&coarse, 4.0 / 3.0, -1.0 / 3.0))
     }
 
     /// The right-hand sides: unit incidence, and unit rate (x − x̄)/c̄.
@@ -120,6 +158,17 @@ impl Lattice {
     }
 
     fn solve_quasi_steady(&self, grid: &Grid, mach: f64) -> Result<Solution, LiftingSurfaceError> {
+        Ok(self.quasi_steady(grid, mach, false)?.solution)
+    }
+
+    /// The quasi-steady solve of one lattice, and with `rates` the Mach
+    /// derivatives of its in-phase numbers (else zeros).
+    fn quasi_steady(
+        &self,
+        grid: &Grid,
+        mach: f64,
+        rates: bool,
+    ) -> Result<Steady, LiftingSurfaceError> {
         let boxes = &grid.boxes[..];
         let beta2 = 1.0 - mach * mach;
         let beta = beta2.sqrt();
@@ -129,9 +178,43 @@ impl Lattice {
         };
         let lu: LU<f64, Dyn, Dyn> = matrix(boxes, |line, x, y| line.steady(x, y, beta)).lu();
         let f0 = lu.solve(&self.normalwash(boxes)).ok_or(singular.clone())?;
-        // D₁ per unit iω̄ = (1/c̄) × the first-order factor per unit iκ
-        let mac = self.wing().mac();
-        let mut d1 = DMatrix::zeros(boxes.len(), boxes.len());
+        let d1 = self.first_order_matrix(grid, beta2);
+        let f1 = lu.solve(&(-(d1 * f0.column(0)))).ok_or(singular.clone())?;
+        let (l1, m1) = self.loads(boxes, f0.column(0).iter().copied());
+        let (l1dot, m1dot) = self.loads(boxes, f1.iter().copied());
+        let (l2, m2) = self.loads(boxes, f0.column(1).iter().copied());
+        let solution = Solution::checked(Solution {
+            mach,
+            omega_bar: 0.0,
+            lift_alpha: l1,
+            moment_alpha: m1,
+            lift_alphadot: l1dot,
+            moment_alphadot: m1dot,
+            lift_q: l2,
+            moment_q: m2,
+        })?;
+        let [d_lift_alpha, d_moment_alpha, d_lift_q, d_moment_q] = if rates {
+            let dd = matrix(boxes, |line, x, y| line.steady_mach_rate(x, y, mach));
+            let df = lu.solve(&(-(dd * &f0))).ok_or(singular)?;
+            let (dl1, dm1) = self.loads(boxes, df.column(0).iter().copied());
+            let (dl2, dm2) = self.loads(boxes, df.column(1).iter().copied());
+            [dl1, dm1, dl2, dm2]
+        } else {
+            [0.0; 4]
+        };
+        Ok(Steady {
+            solution,
+            d_lift_alpha,
+            d_moment_alpha,
+            d_lift_q,
+            d_moment_q,
+        })
+    }
+
+    /// D₁ per unit iω̄ = (1/c̄) × the first-order factor per unit iκ.
+    fn first_order_matrix(&self, grid: &Grid, beta2: f64) -> DMatrix<f64> {
+        let n = grid.boxes.len();
+        let mut d1 = DMatrix::zeros(n, n);
         let rule = self.spec().line_rule;
         add_blocked(
             &mut d1,
@@ -141,21 +224,16 @@ impl Lattice {
             |x0, y0, _| kernel::first_order_numerator(x0, y0, beta2),
             |line, x, y| line.first_order(x, y, beta2, rule),
         );
-        d1 /= mac;
-        let f1 = lu.solve(&(-(d1 * f0.column(0)))).ok_or(singular)?;
-        let (l1, m1) = self.loads(boxes, f0.column(0).iter().copied());
-        let (l1dot, m1dot) = self.loads(boxes, f1.iter().copied());
-        let (l2, m2) = self.loads(boxes, f0.column(1).iter().copied());
-        Solution::checked(Solution {
-            mach,
-            omega_bar: 0.0,
-            lift_alpha: l1,
-            moment_alpha: m1,
-            lift_alphadot: l1dot,
-            moment_alphadot: m1dot,
-            lift_q: l2,
-            moment_q: m2,
-        })
+        d1 / self.wing().mac()
+    }
+}
+
+/// 0 ≤ M < 1, or the error.
+fn check_mach(mach: f64) -> Result<(), LiftingSurfaceError> {
+    if mach.is_finite() && (0.0..1.0).contains(&mach) {
+        Ok(())
+    } else {
+        Err(LiftingSurfaceError::Mach(mach))
     }
 }
 

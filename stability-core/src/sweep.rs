@@ -1,0 +1,602 @@
+//! A Cartesian grid of design points — Mach × sweep × c.g. × μ₁ × i_B
+//! about a base [`Case`] — evaluated in parallel (rayon), with the results
+//! in columns: what `delta-stability sweep` writes as CSV or JSON and the
+//! Python package returns as arrays.
+//!
+//! ```
+//! use stability_core::study::report_wing;
+//! use stability_core::sweep::{Axes, Sweep};
+//! let base = report_wing(60.0, 0.9);
+//! let axes = Axes {
+//!     mach: vec![0.6, 0.9, 1.5],
+//!     mu1: vec![50.0, 450.0],
+//!     ..Axes::around(&base)
+//! };
+//! let points = Sweep::new(base, axes).unwrap().run(false);
+//! assert_eq!(points.len(), 6);
+//! assert!(points.errors.is_empty() && points.sp_re.iter().all(|re| *re < 0.0));
+//! ```
+//!
+//! # Cost
+//! The last axis varies fastest. The aerodynamics (§5–7) are evaluated once
+//! per (Mach, sweep, c.g.) and only the quartic per μ₁ and i_B — unless the
+//! damping model iterates ω̄, which depends on them
+//! ([`DampingModel::depends_on_mass`]). The lifting surface is solved once
+//! per (planform, Mach, ω̄), whatever the c.g., μ₁ or i_B
+//! ([`crate::lifting_surface::cache`]); [`Sweep::prepare`] solves those in
+//! parallel before the points are evaluated. With
+//! `lifting-surface-frequency` each point's frequency iteration interpolates
+//! in the wing's [`crate::lifting_surface::FrequencyTable`]
+//! ([`Harmonic::Interpolated`]) rather than solving at every iterate;
+//! [`Sweep::with_harmonic`] can ask for direct solves instead.
+//!
+//! # A physical flight condition
+//! [`Sweep::with_flight`] fixes an altitude (or ρ and a), a mass and I_y
+//! ([`crate::flight`]): each planform's μ₁, i_B and C_L·M² then follow from
+//! its area and M.A.C. (they change with the sweep angle at a fixed root
+//! chord), the μ₁ and i_B axes are not used, and [`Sweep::flight_point`]
+//! gives V, C_L and τ at each point's Mach number (C_L·M² is constant at a
+//! fixed altitude and weight, eq 24, so C_L ∝ 1/M² and τ ∝ 1/M).
+
+use crate::Derivatives;
+use crate::analysis::{Analysis, AnalysisError};
+use crate::case::{Case, CaseError, CaseResult, DampingModel, evaluate_point_with};
+use crate::criteria::Verdict;
+use crate::flight::{FlightCondition, FlightError, FlightPoint, PhysicalFlight};
+use crate::geometry::{GeometryError, Planform, Size};
+use crate::lifting_surface::Harmonic;
+use rayon::prelude::*;
+use std::ops::Range;
+
+/// The grid's axes, in output order; the last varies fastest. Sweeps are
+/// leading-edge sweeps in degrees (the base planform's taper and size
+/// kept).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Axes {
+    pub mach: Vec<f64>,
+    pub sweep_deg: Vec<f64>,
+    pub cg: Vec<f64>,
+    pub mu1: Vec<f64>,
+    pub i_b: Vec<f64>,
+}
+
+impl Axes {
+    /// Every axis the one value of `base`.
+    pub fn around(base: &Case) -> Axes {
+        Axes {
+            mach: vec![base.mach],
+            sweep_deg: vec![base.planform.sweep_le.to_degrees()],
+            cg: vec![base.h],
+            mu1: vec![base.mu1],
+            i_b: vec![base.i_b],
+        }
+    }
+
+    /// The axes' names, in order, as the columns are named.
+    pub const NAMES: [&'static str; 5] = ["mach", "sweep_deg", "cg", "mu1", "i_b"];
+
+    fn lens(&self) -> [usize; 5] {
+        [
+            self.mach.len(),
+            self.sweep_deg.len(),
+            self.cg.len(),
+            self.mu1.len(),
+            self.i_b.len(),
+        ]
+    }
+}
+
+/// Most design points in one sweep.
+pub const MAX_POINTS: usize = 200_000_000;
+
+/// Why a grid cannot be swept. (A design point that cannot be evaluated is
+/// not an error of the sweep: it is a [`PointError`] in the results.)
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SweepError {
+    #[error("the axis `{axis}` has no values")]
+    Empty { axis: &'static str },
+    #[error("sweep {sweep_deg}°: {error}")]
+    Planform {
+        sweep_deg: f64,
+        error: GeometryError,
+    },
+    #[error("the grid has {} points; the limit is {MAX_POINTS}", points.map_or("too many".to_string(), |n| n.to_string()))]
+    TooLarge { points: Option<usize> },
+    #[error("the flight condition at a sweep of {sweep_deg}°: {error}")]
+    Flight { sweep_deg: f64, error: FlightError },
+    #[error(
+        "a physical flight condition fixes μ₁ and i_B (from the mass, I_y and the air): the `{axis}` axis must have one value, not {n}"
+    )]
+    FixedByFlight { axis: &'static str, n: usize },
+}
+
+/// Why one design point has no result.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PointError {
+    #[error("{0}")]
+    Case(#[from] CaseError),
+    #[error("{0}")]
+    Analysis(#[from] AnalysisError),
+    #[error("the design point's numbers overflow f64")]
+    Overflow,
+}
+
+/// A grid about a base design point, ready to evaluate.
+#[derive(Debug, Clone)]
+pub struct Sweep {
+    axes: Axes,
+    base: Case,
+    planforms: Vec<Planform>,
+    harmonic: Harmonic,
+    /// With a physical flight condition, that condition with each planform.
+    flights: Option<Vec<PhysicalFlight>>,
+}
+
+impl Sweep {
+    /// The grid of `axes` about `base` (whose other fields every point
+    /// keeps). Every axis needs a value; each sweep must make a planform
+    /// with the base's taper.
+    pub fn new(base: Case, axes: Axes) -> Result<Sweep, SweepError> {
+        for (axis, n) in Axes::NAMES.into_iter().zip(axes.lens()) {
+            if n == 0 {
+                return Err(SweepError::Empty { axis });
+            }
+        }
+        let mut planforms = Vec::with_capacity(axes.sweep_deg.len());
+        for &s in &axes.sweep_deg {
+            let p = Planform::new(s.to_radians(), base.planform.taper, Size::RootChord(1.0))
+                .map_err(|error| SweepError::Planform {
+                    sweep_deg: s,
+                    error,
+                })?;
+            planforms.push(Planform {
+                sweep_le: p.sweep_le,
+                ..base.planform
+            });
+        }
+        let points = axes
+            .lens()
+            .iter()
+            .try_fold(1usize, |a, &d| a.checked_mul(d));
+        if points.is_none_or(|n| n > MAX_POINTS) {
+            return Err(SweepError::TooLarge { points });
+        }
+        // interpolated where each point iterates its own ω̄; a fixed ω̄ is
+        // one direct solve per planform and Mach number, as `analyze`'s
+        let harmonic = if base.damping.uses_frequency() && base.iterate_frequency {
+            Harmonic::Interpolated
+        } else {
+            Harmonic::Direct
+        };
+        Ok(Sweep {
+            axes,
+            base,
+            planforms,
+            harmonic,
+            flights: None,
+        })
+    }
+
+    /// The same grid at the physical flight condition `flight`: each
+    /// planform's μ₁, i_B and C_L·M² from it (the μ₁ and i_B axes must then
+    /// hold one value each, which are not used).
+    pub fn with_flight(self, flight: &FlightCondition) -> Result<Sweep, SweepError> {
+        for (axis, n) in [("mu1", self.axes.mu1.len()), ("i_b", self.axes.i_b.len())] {
+            if n != 1 {
+                return Err(SweepError::FixedByFlight { axis, n });
+            }
+        }
+        let flights = self
+            .planforms
+            .iter()
+            .map(|p| {
+                flight.for_planform(p).map_err(|error| SweepError::Flight {
+                    sweep_deg: p.sweep_le.to_degrees(),
+                    error,
+                })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Sweep {
+            flights: Some(flights),
+            ..self
+        })
+    }
+
+    /// The physical flight condition of each planform (in the order of the
+    /// sweep axis), when the grid has one.
+    pub fn flights(&self) -> Option<&[PhysicalFlight]> {
+        self.flights.as_deref()
+    }
+
+    /// V, C_L and τ of point `i`, when the grid has a physical flight
+    /// condition.
+    pub fn flight_point(&self, i: usize) -> Option<FlightPoint> {
+        let [m, s, ..] = self.index(i);
+        let f = self.flights.as_ref()?.get(s)?;
+        f.at_mach(self.axes.mach[m]).ok()
+    }
+
+    /// The same grid with the lifting surface's harmonic solutions had as
+    /// `harmonic` says ([`Harmonic::Direct`]: each point's frequency
+    /// iteration solves at every iterate, as `analyze` does).
+    pub fn with_harmonic(self, harmonic: Harmonic) -> Sweep {
+        Sweep { harmonic, ..self }
+    }
+
+    pub fn axes(&self) -> &Axes {
+        &self.axes
+    }
+
+    pub fn base(&self) -> &Case {
+        &self.base
+    }
+
+    /// The number of design points.
+    pub fn len(&self) -> usize {
+        self.axes.lens().iter().product()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The axes' indices of point `i`.
+    pub fn index(&self, i: usize) -> [usize; 5] {
+        let dims = self.axes.lens();
+        let mut k = i;
+        let mut idx = [0usize; 5];
+        for d in (0..5).rev() {
+            idx[d] = k % dims[d];
+            k /= dims[d];
+        }
+        idx
+    }
+
+    /// The axes' indices of points `range`, in order (counted on, not
+    /// divided out, point by point).
+    pub fn indices(&self, range: Range<usize>) -> Indices {
+        Indices {
+            dims: self.axes.lens(),
+            next: self.index(range.start),
+            left: range.len(),
+        }
+    }
+
+    /// Design point `i`, as [`Sweep::evaluate`] evaluates it.
+    pub fn case(&self, i: usize) -> Case {
+        let mut case = self.base.clone();
+        self.set_point(self.index(i), &mut case);
+        case
+    }
+
+    /// Makes `case` the point of indices `idx` (no clone per point).
+    fn set_point(&self, [m, s, h, mu, ib]: [usize; 5], case: &mut Case) {
+        case.planform = self.planforms[s];
+        case.mach = self.axes.mach[m];
+        case.h = self.axes.cg[h];
+        case.mu1 = self.axes.mu1[mu];
+        case.i_b = self.axes.i_b[ib];
+        if let Some(f) = &self.flights {
+            f[s].apply(case);
+        }
+    }
+
+    /// Whether the model needs the lifting surface's solves.
+    fn uses_lattice(&self) -> bool {
+        use crate::aero::Source;
+        let lattice_aero = [
+            &self.base.aero.lift_slope,
+            &self.base.aero.aerodynamic_centre,
+        ]
+        .iter()
+        .any(|s| matches!(s, Source::LiftingSurface));
+        let lattice_damping =
+            matches!(self.base.damping, DampingModel::Theory(t) if t.is_lifting_surface());
+        lattice_aero || lattice_damping
+    }
+
+    /// Solves the lifting surface once per (planform, Mach) in parallel —
+    /// the first point of each, whose solves the others share — when the
+    /// model uses it (else nothing). [`Sweep::run`] calls it; a caller of
+    /// [`Sweep::evaluate`] may, or the first point to need a solve makes it.
+    pub fn prepare(&self) {
+        if !self.uses_lattice() {
+            return;
+        }
+        let per_sweep = self.len() / (self.axes.mach.len() * self.axes.sweep_deg.len());
+        let firsts: Vec<usize> = (0..self.axes.mach.len() * self.axes.sweep_deg.len())
+            .map(|k| k * per_sweep)
+            .collect();
+        firsts.par_iter().for_each(|&i| {
+            let _ = evaluate_point_with(&self.case(i), self.harmonic);
+        });
+    }
+
+    /// Points `range` (within `0..len()`), in order, on this thread; with
+    /// `derivatives`, their fifteen quartic inputs too.
+    pub fn evaluate(&self, range: Range<usize>, derivatives: bool) -> Points {
+        let mut out = Points::with_capacity(range.start, range.len(), derivatives);
+        let per_aero = self.axes.mu1.len() * self.axes.i_b.len();
+        // a fixed ω̄ (not iterated, given) makes the derivatives independent
+        // of μ₁ and i_B again
+        let b = &self.base;
+        let fixed = !b.iterate_frequency && b.omega_bar.is_some();
+        let reuse = !b.damping.depends_on_mass() || fixed;
+        let mut last: Option<(usize, CaseResult)> = None;
+        let mut case = self.base.clone();
+        for (i, idx) in range.clone().zip(self.indices(range)) {
+            self.set_point(idx, &mut case);
+            out.push_head(&case);
+            let key = i / per_aero;
+            match &last {
+                Some((k, r)) if reuse && *k == key => {
+                    // the point's own values checked as `evaluate_point` would
+                    if let Err(e) = case.check() {
+                        out.push_err(e.into());
+                        continue;
+                    }
+                    let d = Derivatives {
+                        mu1: case.mu1,
+                        i_b: case.i_b,
+                        ..r.derivatives
+                    };
+                    match Analysis::without_classical(&d) {
+                        Ok(a) => out.push_ok(&d, &a),
+                        Err(e) => out.push_err(e.into()),
+                    }
+                }
+                _ => match evaluate_point_with(&case, self.harmonic) {
+                    Ok(r) => {
+                        out.push_ok(&r.derivatives, &r.analysis);
+                        last = Some((key, r));
+                    }
+                    Err(e) => out.push_err(e.into()),
+                },
+            }
+        }
+        out
+    }
+
+    /// Every point, in parallel (after [`Sweep::prepare`]).
+    pub fn run(&self, derivatives: bool) -> Points {
+        self.prepare();
+        const BLOCK: usize = 1 << 10;
+        let n = self.len();
+        let blocks: Vec<Points> = (0..n)
+            .step_by(BLOCK)
+            .collect::<Vec<_>>()
+            .into_par_iter()
+            .map(|b| self.evaluate(b..(b + BLOCK).min(n), derivatives))
+            .collect();
+        let mut out = Points::with_capacity(0, n, derivatives);
+        for b in blocks {
+            out.append(b);
+        }
+        out
+    }
+}
+
+/// The axes' indices of consecutive points ([`Sweep::indices`]): the last
+/// varies fastest.
+#[derive(Debug, Clone)]
+pub struct Indices {
+    dims: [usize; 5],
+    next: [usize; 5],
+    left: usize,
+}
+
+impl Iterator for Indices {
+    type Item = [usize; 5];
+
+    fn next(&mut self) -> Option<[usize; 5]> {
+        if self.left == 0 {
+            return None;
+        }
+        self.left -= 1;
+        let out = self.next;
+        for d in (0..5).rev() {
+            self.next[d] += 1;
+            if self.next[d] < self.dims[d] {
+                break;
+            }
+            self.next[d] = 0;
+        }
+        Some(out)
+    }
+}
+
+/// The results of consecutive design points, column by column: the grid
+/// values, then what each point yields (not-a-number where a point has no
+/// such value — no oscillatory short period, an error — and `None` for
+/// `stable` and `verdict` where it has an error).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Points {
+    /// The index in the grid of the first point.
+    pub start: usize,
+    pub mach: Vec<f64>,
+    pub sweep_deg: Vec<f64>,
+    pub cg: Vec<f64>,
+    pub mu1: Vec<f64>,
+    pub i_b: Vec<f64>,
+    /// Routh's test (§4).
+    pub stable: Vec<Option<bool>>,
+    /// The one-cycle standard (§8).
+    pub verdict: Vec<Option<Verdict>>,
+    /// The short period's root (units of 1/τ), cycles to half amplitude
+    /// (eq 8), damping ratio and frequency parameter ω̄ = s/μ₁.
+    pub sp_re: Vec<f64>,
+    pub sp_im: Vec<f64>,
+    pub sp_cycles_to_half: Vec<f64>,
+    pub sp_damping_ratio: Vec<f64>,
+    pub sp_omega_bar: Vec<f64>,
+    /// The phugoid's root.
+    pub ph_re: Vec<f64>,
+    pub ph_im: Vec<f64>,
+    /// m_θ̇ and its margin Δm_θ̇ over eq (41)'s requirement.
+    pub m_thetadot: Vec<f64>,
+    pub delta_m_thetadot: Vec<f64>,
+    /// The fifteen quartic inputs, when asked for (NaN where an error).
+    pub derivatives: Option<Vec<Derivatives>>,
+    /// The points with no result, by their position in these columns
+    /// (0-based, increasing).
+    pub errors: Vec<(usize, PointError)>,
+}
+
+impl Points {
+    fn with_capacity(start: usize, n: usize, derivatives: bool) -> Points {
+        let v = || Vec::with_capacity(n);
+        Points {
+            start,
+            mach: v(),
+            sweep_deg: v(),
+            cg: v(),
+            mu1: v(),
+            i_b: v(),
+            stable: Vec::with_capacity(n),
+            verdict: Vec::with_capacity(n),
+            sp_re: v(),
+            sp_im: v(),
+            sp_cycles_to_half: v(),
+            sp_damping_ratio: v(),
+            sp_omega_bar: v(),
+            ph_re: v(),
+            ph_im: v(),
+            m_thetadot: v(),
+            delta_m_thetadot: v(),
+            derivatives: derivatives.then(|| Vec::with_capacity(n)),
+            errors: Vec::new(),
+        }
+    }
+
+    /// The number of points.
+    pub fn len(&self) -> usize {
+        self.mach.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.mach.is_empty()
+    }
+
+    fn push_head(&mut self, c: &Case) {
+        self.mach.push(c.mach);
+        self.sweep_deg.push(c.planform.sweep_le.to_degrees());
+        self.cg.push(c.h);
+        self.mu1.push(c.mu1);
+        self.i_b.push(c.i_b);
+    }
+
+    /// A point's error (after its [`Points::push_head`]).
+    fn push_err(&mut self, e: PointError) {
+        let k = self.len() - 1;
+        self.push_nothing();
+        self.errors.push((k, e));
+    }
+
+    /// A point's results (after its [`Points::push_head`]); a point whose
+    /// numbers overflow is an error, not a row of blanks.
+    fn push_ok(&mut self, d: &Derivatives, a: &Analysis) {
+        if !finite(d, a) {
+            return self.push_err(PointError::Overflow);
+        }
+        let sp = a.modes.short_period();
+        let ph = a.modes.phugoid();
+        let or_nan = |v: Option<f64>| v.unwrap_or(f64::NAN);
+        self.stable.push(Some(a.routh.stable));
+        self.verdict.push(Some(a.verdict));
+        self.sp_re.push(or_nan(sp.map(|m| m.re)));
+        self.sp_im.push(or_nan(sp.map(|m| m.im)));
+        self.sp_cycles_to_half
+            .push(or_nan(sp.and_then(|m| m.cycles_to_half)));
+        self.sp_damping_ratio
+            .push(or_nan(sp.and_then(|m| m.damping_ratio)));
+        self.sp_omega_bar
+            .push(or_nan(sp.and_then(|m| m.frequency_parameter)));
+        self.ph_re.push(or_nan(ph.map(|m| m.re)));
+        self.ph_im.push(or_nan(ph.map(|m| m.im)));
+        self.m_thetadot.push(a.damping_standard.m_thetadot);
+        self.delta_m_thetadot
+            .push(or_nan(a.damping_standard.margin));
+        if let Some(ds) = &mut self.derivatives {
+            ds.push(*d);
+        }
+    }
+
+    fn push_nothing(&mut self) {
+        self.stable.push(None);
+        self.verdict.push(None);
+        for c in [
+            &mut self.sp_re,
+            &mut self.sp_im,
+            &mut self.sp_cycles_to_half,
+            &mut self.sp_damping_ratio,
+            &mut self.sp_omega_bar,
+            &mut self.ph_re,
+            &mut self.ph_im,
+            &mut self.m_thetadot,
+            &mut self.delta_m_thetadot,
+        ] {
+            c.push(f64::NAN);
+        }
+        if let Some(ds) = &mut self.derivatives {
+            ds.push(NAN_DERIVATIVES);
+        }
+    }
+
+    /// `other`'s points after these.
+    fn append(&mut self, mut other: Points) {
+        let n = self.len();
+        self.errors
+            .extend(other.errors.drain(..).map(|(k, e)| (k + n, e)));
+        macro_rules! columns {
+            ($($c:ident),*) => { $( self.$c.append(&mut other.$c); )* };
+        }
+        columns!(
+            mach,
+            sweep_deg,
+            cg,
+            mu1,
+            i_b,
+            stable,
+            verdict,
+            sp_re,
+            sp_im,
+            sp_cycles_to_half,
+            sp_damping_ratio,
+            sp_omega_bar,
+            ph_re,
+            ph_im,
+            m_thetadot,
+            delta_m_thetadot
+        );
+        if let (Some(a), Some(b)) = (&mut self.derivatives, &mut other.derivatives) {
+            a.append(b);
+        }
+    }
+}
+
+const NAN_DERIVATIVES: Derivatives = Derivatives {
+    x_u: f64::NAN,
+    x_w: f64::NAN,
+    x_wdot: f64::NAN,
+    x_q: f64::NAN,
+    z_u: f64::NAN,
+    z_w: f64::NAN,
+    z_wdot: f64::NAN,
+    z_q: f64::NAN,
+    m_u: f64::NAN,
+    m_w: f64::NAN,
+    m_wdot: f64::NAN,
+    m_q: f64::NAN,
+    c_l: f64::NAN,
+    mu1: f64::NAN,
+    i_b: f64::NAN,
+};
+
+/// Whether every number a point's row would carry is finite.
+fn finite(d: &Derivatives, a: &Analysis) -> bool {
+    d.quartic_input_values().iter().all(|v| v.is_finite())
+        && a.quartic.to_array().iter().all(|v| v.is_finite())
+        && a.roots.iter().all(|z| z.re.is_finite() && z.im.is_finite())
+        && a.routh.discriminant.is_finite()
+        && a.damping_standard.m_thetadot.is_finite()
+}
