@@ -26,8 +26,16 @@ pub struct Overrides {
 /// range.
 fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
     let mut cfg = config::read(path)?;
+    apply(&mut cfg, o)?;
+    Ok(cfg)
+}
+
+/// Applies the overrides to a config read, each within its range (the
+/// Python package's `analyze(…, mach=…)` too).
+pub fn apply(cfg: &mut config::Config, o: &Overrides) -> Result<(), Failure> {
+    let path = cfg.path.clone();
     let bad =
-        |flag: &str, m: String| Failure::Input(InputError::file(path, format!("{flag}: {m}")));
+        |flag: &str, m: String| Failure::Input(InputError::file(&path, format!("{flag}: {m}")));
     if let Some(d) = o.damping {
         cfg.case.damping = d;
         cfg.overridden_by("[model] damping", format!("--damping {}", d.name()));
@@ -40,20 +48,12 @@ fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
         cfg.case.h = limits::CG.check(h).map_err(|e| bad("--cg", e))?;
         cfg.overridden_by("[flight] cg", format!("--cg {}", num(h)));
     }
-    Ok(cfg)
+    Ok(())
 }
 
 pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
     let cfg = overridden(path, o)?;
-    let r = evaluate(&cfg.case).map_err(|e| cfg.explain(&e))?;
-    if !crate::cmd::quartic::is_finite(&r.analysis) {
-        return Err(cfg
-            .error_at(
-                "[flight]",
-                "the analysis overflows f64: no result can be written",
-            )
-            .into());
-    }
+    let r = evaluated(&cfg)?;
     for w in &r.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
@@ -66,6 +66,20 @@ pub fn run(path: &str, o: &Overrides, json_out: bool) -> Result<(), Failure> {
         print(&page(&cfg, &r))?;
     }
     Ok(())
+}
+
+/// The design point of a config, every number of its analysis finite, or
+/// the error at the field it arises from (what `analyze` prints; the
+/// Python package raises the same).
+pub fn evaluated(cfg: &config::Config) -> Result<CaseResult, InputError> {
+    let r = evaluate(&cfg.case).map_err(|e| cfg.explain(&e))?;
+    if !crate::cmd::quartic::is_finite(&r.analysis) {
+        return Err(cfg.error_at(
+            "[flight]",
+            "the analysis overflows f64: no result can be written",
+        ));
+    }
+    Ok(r)
 }
 
 /// The `analyze --json` object: the config's path and the design point as

@@ -3,6 +3,7 @@
 //! test, the §8 damping standard and the MIL-F-8785C levels.
 
 use crate::Failure;
+use crate::diag::InputError;
 use crate::input::{self, DerivativeFile, rows};
 use crate::output::print;
 use crate::page::analysis_page;
@@ -16,17 +17,7 @@ pub fn run(file: &str, json: bool) -> Result<(), Failure> {
     for w in &input.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
-    let analysis = Analysis::of(&input.derivatives)
-        .map_err(|e| input.error_at(blame(&input, &e), e.to_string()))?;
-    if !is_finite(&analysis) {
-        let largest = most_extreme_input(&input);
-        return Err(input
-            .error_at(
-                largest,
-                "the analysis overflows f64: no result can be written",
-            )
-            .into());
-    }
+    let analysis = analysis_of(&input)?;
     if json {
         print(&format!(
             "{}\n",
@@ -36,6 +27,22 @@ pub fn run(file: &str, json: bool) -> Result<(), Failure> {
         print(&table(&input, &analysis))?;
     }
     Ok(())
+}
+
+/// The analysis of a derivative file, every number of it finite, or the
+/// error at the input it arises from (what `quartic` prints; the Python
+/// package raises the same).
+pub fn analysis_of(input: &DerivativeFile) -> Result<Analysis, InputError> {
+    let analysis = Analysis::of(&input.derivatives)
+        .map_err(|e| input.error_at(blame(input, &e), e.to_string()))?;
+    if !is_finite(&analysis) {
+        let largest = most_extreme_input(input);
+        return Err(input.error_at(
+            largest,
+            "the analysis overflows f64: no result can be written",
+        ));
+    }
+    Ok(analysis)
 }
 
 /// Whether every number the analysis would print is finite (absent ones,
