@@ -22,7 +22,15 @@ a dict of the same shape, and errors are :class:`InputError` (a
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Optional
+
 import numpy as _np
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+
+    from ._native import Axis, ConfigSource
 
 from . import _native
 from ._native import (
@@ -101,9 +109,9 @@ class SweepResult(dict):
     ``r["sp_cycles_to_half"].reshape(r.shape)`` indexes by axis.
     """
 
-    shape: tuple
+    shape: "tuple[int, ...]"
 
-    def to_pandas(self):
+    def to_pandas(self):  # -> pandas.DataFrame
         """The columns as a ``pandas.DataFrame`` (needs pandas)."""
         try:
             import pandas as pd
@@ -117,15 +125,15 @@ class SweepResult(dict):
 
 
 def sweep(
-    config,
+    config: ConfigSource,
     *,
-    mach=None,
-    sweep=None,
-    cg=None,
-    mu1=None,
-    i_b=None,
-    damping=None,
-    derivatives=False,
+    mach: Axis = None,
+    sweep: Axis = None,
+    cg: Axis = None,
+    mu1: Axis = None,
+    i_b: Axis = None,
+    damping: Optional[str] = None,
+    derivatives: bool = False,
 ) -> SweepResult:
     """Design points over a Cartesian grid of Mach number, leading-edge sweep
     (degrees), c.g. position h, relative density μ₁ and pitching inertia i_B:
@@ -179,7 +187,7 @@ def _argument_error(field: str, message: str) -> InputError:
     return e
 
 
-def batch_roots(coefficients, *, errors: str = "raise"):
+def batch_roots(coefficients: npt.ArrayLike, *, errors: str = "raise") -> npt.NDArray[np.complex128]:
     """The four roots of each quartic Aλ⁴ + Bλ³ + Cλ² + Dλ + E (eq 5): for an
     array of shape (..., 5) of [A, B, C, D, E], a complex array of shape
     (..., 4), each row by descending modulus with a complex pair adjacent
