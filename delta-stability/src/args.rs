@@ -21,7 +21,7 @@ fn theory_meaning(t: Theory) -> &'static str {
         Theory::GarnerTaper => "Garner's version of it for taper 1/7",
         Theory::Slender => "Ribner's slender-wing theory",
         Theory::Supersonic => {
-            "Mangler, Ribner & Malvestuto, supersonic, subsonic leading edges (M > 1)"
+            "supersonic linear theory (M > 1): Mangler, Ribner & Malvestuto for subsonic leading edges, conical flow beyond the sonic edge"
         }
         Theory::Transonic => "Mangler's transonic theory at M = 1, steady",
         Theory::TransonicFrequency => {
@@ -33,18 +33,17 @@ fn theory_meaning(t: Theory) -> &'static str {
 impl ValueEnum for DampingArg {
     fn value_variants<'a>() -> &'a [Self] {
         static ALL: OnceLock<Vec<DampingArg>> = OnceLock::new();
-        ALL.get_or_init(|| {
-            std::iter::once(DampingModel::Faired)
-                .chain(Theory::ALL.map(DampingModel::Theory))
-                .map(DampingArg)
-                .collect()
-        })
+        ALL.get_or_init(|| DampingModel::ALL.into_iter().map(DampingArg).collect())
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
         let help = match self.0 {
             DampingModel::Faired => {
-                "the default: slender-wing theory (37) through M = 1, blended into (36) by M = 1.2"
+                "the default: slender-wing theory (37) through M = 1, blended into the supersonic theory by M = 1.2"
+                    .to_string()
+            }
+            DampingModel::FairedSlender => {
+                "the previous fairing: as `faired`, but (36) held at its sonic-leading-edge values beyond the sonic edge"
                     .to_string()
             }
             DampingModel::Theory(t) => {
@@ -156,16 +155,15 @@ mod tests {
             .filter_map(|v| v.to_possible_value())
             .map(|p| p.get_name().to_string())
             .collect();
-        assert_eq!(names.len(), Theory::ALL.len() + 1);
+        assert_eq!(names.len(), DampingModel::ALL.len());
         for t in Theory::ALL {
             assert!(names.contains(&t.name().to_string()));
-            let parsed = DampingArg::from_str(t.name(), false).unwrap();
-            assert_eq!(parsed.0, DampingModel::parse(t.name()).unwrap());
         }
-        assert_eq!(
-            DampingArg::from_str("faired", false).unwrap().0,
-            DampingModel::Faired
-        );
+        for m in DampingModel::ALL {
+            let parsed = DampingArg::from_str(m.name(), false).unwrap();
+            assert_eq!(parsed.0, DampingModel::parse(m.name()).unwrap());
+            assert_eq!(parsed.0, m);
+        }
     }
 
     #[test]

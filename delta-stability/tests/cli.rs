@@ -12,10 +12,10 @@ fn quartic_json_has_the_coefficients_of_eq6() {
         "examples/tailless-delta-45.toml",
         "--json",
     ]));
-    // The example's values, through eq (6) typed by hand (corrected).
-    let inputs = [
-        -0.03, 0.25, 0.0, 0.0, -0.62, -3.2, -0.6, -1.5, 0.0, -0.55, -0.25, -0.6, 0.3, 50.0, 0.08,
-    ];
+    // The example's values (the file is the library's example aircraft,
+    // tested in stability-core/tests/examples.rs), through eq (6) typed by
+    // hand (corrected).
+    let inputs = stability_core::examples::tailless_delta_45().quartic_input_values();
     let expect = eq6_by_hand(&inputs);
     for (k, name) in ["A", "B", "C", "D", "E"].iter().enumerate() {
         let got = v["coefficients"][name].as_f64().expect("a number");
@@ -378,25 +378,51 @@ fn notations_missing_what_they_need_are_named() {
 fn report_writes_the_figures_summary_and_page() {
     let dir = Scratch::new();
     run_ok(&["report", "--out", path(dir.path())]);
+    assert_figures_are_whole(dir.path());
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("summary.json")).unwrap())
+            .unwrap();
+    assert_summary_findings(&summary);
+    let html = std::fs::read_to_string(dir.path().join("index.html")).unwrap();
+    assert!(
+        html.contains("fig33.svg")
+            && html.contains("0.97 &lt; M &lt; 1.5")
+            && html.contains("about 200")
+    );
+    // README.md shows docs/figures/fig33.*, which `cargo xtask regen` writes
+    // from this library function (its check-mode test keeps them fresh): it
+    // renders exactly the report's files
+    for (rel, contents) in delta_stability::report::readme_figures().unwrap() {
+        let name = std::path::Path::new(&rel).file_name().unwrap();
+        let written = std::fs::read_to_string(dir.path().join(name)).unwrap();
+        assert!(written == contents, "{rel} differs from the report's");
+    }
+    assert_conclusions_are_computed(&html, &summary);
+}
+
+/// Every figure the report draws, as SVG with its title and as CSV, with no
+/// NaN or infinity in either.
+fn assert_figures_are_whole(dir: &std::path::Path) {
     for n in [
         "02", "05", "06", "07", "12", "13", "16", "17", "18", "19", "24", "25", "26", "27", "31",
         "32", "33", "34", "35", "36", "37", "38",
     ] {
-        let svg = std::fs::read_to_string(dir.path().join(format!("fig{n}.svg")))
+        let svg = std::fs::read_to_string(dir.join(format!("fig{n}.svg")))
             .unwrap_or_else(|e| panic!("fig{n}.svg: {e}"));
         assert!(
             svg.contains(&format!("Fig. {}", n.trim_start_matches('0'))) && !svg.contains("NaN"),
             "fig{n}"
         );
-        let csv = std::fs::read_to_string(dir.path().join(format!("fig{n}.csv"))).unwrap();
+        let csv = std::fs::read_to_string(dir.join(format!("fig{n}.csv"))).unwrap();
         assert!(
             csv.lines().count() > 10 && !csv.contains("NaN") && !csv.contains("inf"),
             "fig{n}.csv"
         );
     }
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.path().join("summary.json")).unwrap())
-            .unwrap();
+}
+
+/// summary.json's keys, and the note's findings about the 60° and 45° deltas.
+fn assert_summary_findings(summary: &serde_json::Value) {
     for wing in ["delta_45", "delta_60"] {
         for key in ["unstable_mach", "fails_one_cycle_mach", "max_mu1_one_cycle"] {
             assert!(summary[wing][key].is_array(), "{wing} {key}");
@@ -404,13 +430,10 @@ fn report_writes_the_figures_summary_and_page() {
     }
     // The 60° delta meets the standard at μ₁ = 50 everywhere (as the note
     // says); its largest μ₁ at M = 1.3 is of the note's size (~200).
-    assert_eq!(
-        summary["delta_60"]["fails_one_cycle_mach"]
-            .as_array()
-            .unwrap()
-            .len(),
-        0
-    );
+    let fails_60 = summary["delta_60"]["fails_one_cycle_mach"]
+        .as_array()
+        .unwrap();
+    assert_eq!(fails_60.len(), 0);
     let at = summary["delta_60"]["max_mu1_one_cycle"]
         .as_array()
         .unwrap()
@@ -421,48 +444,15 @@ fn report_writes_the_figures_summary_and_page() {
         .unwrap();
     assert!((100.0..400.0).contains(&at), "{at}");
     // the 45° delta fails it somewhere supersonic
-    assert!(
-        !summary["delta_45"]["fails_one_cycle_mach"]
-            .as_array()
-            .unwrap()
-            .is_empty()
-    );
-    let html = std::fs::read_to_string(dir.path().join("index.html")).unwrap();
-    assert!(
-        html.contains("fig33.svg")
-            && html.contains("0.97 &lt; M &lt; 1.5")
-            && html.contains("about 200")
-    );
-    // README.md shows docs/figures/fig33.svg: it must be the report's
-    let fresh = std::fs::read_to_string(dir.path().join("fig33.csv")).unwrap();
-    let shown = std::fs::read_to_string(root().join("docs/figures/fig33.csv")).unwrap();
-    let cells = |t: &str| -> Vec<String> {
-        t.lines()
-            .filter(|l| !l.starts_with('#'))
-            .flat_map(|l| l.split(',').map(String::from).collect::<Vec<_>>())
-            .collect()
-    };
-    let (a, b) = (cells(&fresh), cells(&shown));
-    let same = a.len() == b.len()
-        && a.iter()
-            .zip(&b)
-            .all(|(x, y)| match (x.parse::<f64>(), y.parse::<f64>()) {
-                (Ok(x), Ok(y)) => (x - y).abs() <= 1e-9 * x.abs().max(1.0),
-                _ => x == y,
-            });
-    assert!(
-        same,
-        "docs/figures/fig33.* are stale: run `cargo xtask regen` (it writes delta_stability::report::readme_figures())"
-    );
-    // and the library function the xtask writes them from renders exactly
-    // the report's files
-    for (rel, contents) in delta_stability::report::readme_figures().unwrap() {
-        let name = std::path::Path::new(&rel).file_name().unwrap();
-        let written = std::fs::read_to_string(dir.path().join(name)).unwrap();
-        assert!(written == contents, "{rel} differs from the report's");
-    }
-    // the conclusions are generated from what was computed: the 45° delta's
-    // intervals in summary.json appear, as numbers, in its row
+    let fails_45 = summary["delta_45"]["fails_one_cycle_mach"]
+        .as_array()
+        .unwrap();
+    assert!(!fails_45.is_empty());
+}
+
+/// The conclusions are generated from what was computed: the 45° delta's
+/// intervals in summary.json appear, as numbers, in its row.
+fn assert_conclusions_are_computed(html: &str, summary: &serde_json::Value) {
     let fails = &summary["delta_45"]["fails_one_cycle_mach"][0];
     let interval = format!(
         "{:.2}–{:.2}",

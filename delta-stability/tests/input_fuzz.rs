@@ -27,23 +27,7 @@ fn fuzz_path() -> String {
 
 /// The 45° example's derivative set in the report's notation.
 fn report_set() -> stability_core::Derivatives {
-    stability_core::Derivatives {
-        x_u: -0.03,
-        x_w: 0.25,
-        x_wdot: 0.0,
-        x_q: 0.0,
-        z_u: -0.62,
-        z_w: -3.2,
-        z_wdot: -0.6,
-        z_q: -1.5,
-        m_u: 0.0,
-        m_w: -0.55,
-        m_wdot: -0.25,
-        m_q: -0.6,
-        c_l: 0.3,
-        mu1: 50.0,
-        i_b: 0.08,
-    }
+    stability_core::examples::tailless_delta_45()
 }
 
 /// A valid derivative file in `notation`, written from the library's

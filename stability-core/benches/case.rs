@@ -106,3 +106,32 @@ fn damping_faired(b: divan::Bencher) {
         }
     });
 }
+
+/// `--damping supersonic` on 64 Mach numbers from 1.05 to 2.5: the 45°
+/// true delta (closed forms) and the same delta cropped to λ = 1/7 (past
+/// the sonic edge, Evvard's integrals at five Mach numbers for the lift
+/// slope and aerodynamic centre with their numerical Mach derivatives, and
+/// once more for the damping derivatives).
+fn supersonic_cases(taper: f64) -> Vec<Case> {
+    use stability_core::case::DampingModel;
+    use stability_core::damping::Theory;
+    use stability_core::geometry::{Planform, Size};
+    (0..64)
+        .map(|i| {
+            let mut c = report_wing(45.0, 1.05 + 1.45 * i as f64 / 63.0);
+            c.planform = Planform::new(45f64.to_radians(), taper, Size::RootChord(10.0)).unwrap();
+            c.damping = DampingModel::Theory(Theory::Supersonic);
+            c
+        })
+        .collect()
+}
+
+#[divan::bench(args = [0.0, 1.0 / 7.0])]
+fn evaluate_supersonic(b: divan::Bencher, taper: f64) {
+    let cs = supersonic_cases(taper);
+    b.bench_local(|| {
+        for c in &cs {
+            let _ = black_box(evaluate_point(black_box(c)));
+        }
+    });
+}

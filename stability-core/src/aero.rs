@@ -349,13 +349,24 @@ pub mod defaults {
     }
 }
 
-/// Where a coefficient comes from.
+/// Where a coefficient comes from. The precedence is one rule
+/// ([`AeroModel::at_with`]): the user's table; else, under
+/// [`Source::Default`], the damping model's own value where it gives one
+/// ([`TheoryCoefficients`]); else the method of [`defaults`].
 #[derive(Debug, Clone, PartialEq, Default)]
 pub enum Source {
-    /// The default method of [`defaults`].
+    /// The default: the theory of the case's damping model where that
+    /// theory gives this coefficient itself — with `--damping supersonic`
+    /// at M > 1 the lift slope and aerodynamic centre of linear supersonic
+    /// theory, eq (36)'s πA/(2E) and H₀ for subsonic leading edges, the
+    /// supersonic-edge theory's beyond (`supersonic::edge_coefficients`) —
+    /// and the method of [`defaults`] otherwise.
     #[default]
     Default,
-    /// The user's table.
+    /// The method of [`defaults`] (docs/models.md), whatever the damping
+    /// model.
+    Method,
+    /// The user's table: wins over every other source.
     Table(Table),
 }
 
@@ -366,6 +377,65 @@ pub struct AeroModel {
     pub zero_lift_drag: Source,
     pub drag_due_to_lift: Source,
     pub aerodynamic_centre: Source,
+}
+
+/// The lift slope and aerodynamic centre a damping model's own theory
+/// gives at one Mach number, each with its exact Mach derivative (eqs
+/// 27–29 need them): what [`Source::Default`] takes in place of the
+/// methods of [`defaults`], so that z_w, m_w come from the same theory as
+/// z_q, m_q, z_ẇ, m_ẇ.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TheoryCoefficients {
+    /// The damping model's name (`supersonic`).
+    pub model: &'static str,
+    /// a = ∂C_L/∂α (per radian).
+    pub lift_slope: Value,
+    /// H₀, fraction of the M.A.C. aft of its leading edge.
+    pub aerodynamic_centre: Value,
+}
+
+/// Where one coefficient of [`Coefficients`] came from; serializes as
+/// `"table"`, `"method"` or the damping model's name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Origin {
+    /// The user's table.
+    Table,
+    /// The method of [`defaults`] (for K = ∂C_D/∂C_L²: 1/a of the lift
+    /// slope used, whatever its origin).
+    Method,
+    /// The damping model's own theory, by name.
+    DampingModel(&'static str),
+}
+
+impl Serialize for Origin {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(match self {
+            Origin::Table => "table",
+            Origin::Method => "method",
+            Origin::DampingModel(name) => name,
+        })
+    }
+}
+
+/// The origin of each coefficient.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Origins {
+    pub lift_slope: Origin,
+    pub zero_lift_drag: Origin,
+    pub drag_due_to_lift: Origin,
+    pub aerodynamic_centre: Origin,
+}
+
+impl Origins {
+    /// One origin for all four.
+    pub fn all(o: Origin) -> Origins {
+        Origins {
+            lift_slope: o,
+            zero_lift_drag: o,
+            drag_due_to_lift: o,
+            aerodynamic_centre: o,
+        }
+    }
 }
 
 /// The coefficients at one Mach number.
@@ -380,33 +450,82 @@ pub struct Coefficients {
     pub drag_due_to_lift: Value,
     /// H₀, fraction of the M.A.C. aft of its leading edge.
     pub aerodynamic_centre: Value,
+    /// Where each came from.
+    pub origin: Origins,
+}
+
+/// The method of [`defaults`] `f`, inside the defaults' Mach range.
+fn method(f: fn(&Planform, f64) -> Value, p: &Planform, m: f64) -> Result<Value, AeroError> {
+    if (0.0..=defaults::MACH_MAX).contains(&m) {
+        Ok(f(p, m))
+    } else {
+        Err(AeroError::OutsideDefaults(m))
+    }
+}
+
+/// The rule of precedence for one coefficient: the table; else the damping
+/// model's own value (`own`, under [`Source::Default`] only); else the
+/// method.
+fn resolve(
+    source: &Source,
+    m: f64,
+    own: Option<(Value, &'static str)>,
+    method: impl FnOnce() -> Result<Value, AeroError>,
+) -> Result<(Value, Origin), AeroError> {
+    match (source, own) {
+        (Source::Table(t), _) => Ok((t.at(m)?, Origin::Table)),
+        (Source::Default, Some((v, model))) => Ok((v, Origin::DampingModel(model))),
+        _ => Ok((method()?, Origin::Method)),
+    }
 }
 
 impl AeroModel {
-    /// The coefficients of `p` at Mach `m`.
+    /// The coefficients of `p` at Mach `m` from tables and the methods of
+    /// [`defaults`] (no damping model's own coefficients).
     pub fn at(&self, p: &Planform, m: f64) -> Result<Coefficients, AeroError> {
-        let get = |s: &Source, f: fn(&Planform, f64) -> Value| match s {
-            Source::Table(t) => t.at(m),
-            Source::Default => {
-                if (0.0..=defaults::MACH_MAX).contains(&m) {
-                    Ok(f(p, m))
-                } else {
-                    Err(AeroError::OutsideDefaults(m))
-                }
-            }
-        };
-        let lift_slope = get(&self.lift_slope, defaults::lift_slope)?;
-        let drag_due_to_lift = match &self.drag_due_to_lift {
-            Source::Table(t) => t.at(m)?,
-            // K = 1/a with the model's own lift slope (tables included)
-            Source::Default => defaults::no_suction(lift_slope),
-        };
+        self.at_with(p, m, None)
+    }
+
+    /// The coefficients of `p` at Mach `m`, with the damping model's own
+    /// lift slope and aerodynamic centre `own` where it gives them
+    /// ([`Source`] states the precedence).
+    pub fn at_with(
+        &self,
+        p: &Planform,
+        m: f64,
+        own: Option<&TheoryCoefficients>,
+    ) -> Result<Coefficients, AeroError> {
+        let (lift_slope, ls) = resolve(
+            &self.lift_slope,
+            m,
+            own.map(|t| (t.lift_slope, t.model)),
+            || method(defaults::lift_slope, p, m),
+        )?;
+        let (aerodynamic_centre, ac) = resolve(
+            &self.aerodynamic_centre,
+            m,
+            own.map(|t| (t.aerodynamic_centre, t.model)),
+            || method(defaults::aerodynamic_centre, p, m),
+        )?;
+        let (zero_lift_drag, cd0) = resolve(&self.zero_lift_drag, m, None, || {
+            method(defaults::zero_lift_drag, p, m)
+        })?;
+        // K = 1/a with the model's own lift slope (tables included)
+        let (drag_due_to_lift, k) = resolve(&self.drag_due_to_lift, m, None, || {
+            Ok(defaults::no_suction(lift_slope))
+        })?;
         Ok(Coefficients {
             mach: m,
             lift_slope,
-            zero_lift_drag: get(&self.zero_lift_drag, defaults::zero_lift_drag)?,
+            zero_lift_drag,
             drag_due_to_lift,
-            aerodynamic_centre: get(&self.aerodynamic_centre, defaults::aerodynamic_centre)?,
+            aerodynamic_centre,
+            origin: Origins {
+                lift_slope: ls,
+                zero_lift_drag: cd0,
+                drag_due_to_lift: k,
+                aerodynamic_centre: ac,
+            },
         })
     }
 }

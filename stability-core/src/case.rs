@@ -10,11 +10,11 @@
 //! and what the iteration changed.
 
 use crate::Derivatives;
-use crate::aero::{AeroError, AeroModel, Coefficients, level_flight_lift};
+use crate::aero::{AeroError, AeroModel, Coefficients, TheoryCoefficients, level_flight_lift};
 use crate::analysis::{Analysis, AnalysisError};
 use crate::damping::{
     Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,
-    damping_derivatives, x_q, x_wdot,
+    damping_derivatives, theory_coefficients, x_q, x_wdot,
 };
 use crate::display::Num;
 use crate::geometry::Planform;
@@ -30,12 +30,17 @@ pub enum DampingModel {
     /// The theories faired through Mach number, as the report faired its
     /// Figs 19–24: slender-wing theory (37) — identical with Garrick's and
     /// with Mangler's steady sonic theory (38) — up to M = 1; blended into
-    /// the supersonic theory (36) over 1 ≤ M ≤ 1.2 by the weight
+    /// the supersonic linear theory over 1 ≤ M ≤ 1.2 by the weight
     /// w = 3x² − 2x³, x = (M − 1)/0.2 (w·(36)'s logarithmic singularity at
-    /// M = 1 vanishes with w); (36) beyond; and, past the Mach number where
-    /// the leading edge turns sonic (where (36) no longer applies), (36)'s
-    /// values at the sonic leading edge, with a warning.
+    /// M = 1 vanishes with w); that theory beyond — (36) while the leading
+    /// edge is subsonic, the supersonic-edge theory past the Mach number
+    /// where it turns sonic (`supersonic::edge_theory`, continuous there).
     Faired,
+    /// The previous slender-wing fairing, `faired-slender`: as
+    /// [`DampingModel::Faired`] up to the Mach number where the leading
+    /// edge turns sonic, and past it (36)'s values at the sonic leading
+    /// edge, held, with a warning.
+    FairedSlender,
 }
 
 impl Serialize for DampingModel {
@@ -49,7 +54,9 @@ impl DampingModel {
     /// through the frequency parameter ω̄ = s/μ₁ of a frequency-dependent
     /// theory: μ₁ and i_B enter the equations of motion (eqs 2, 4), not the
     /// derivatives of §5–7. So a sweep over them need evaluate the
-    /// aerodynamics once per planform, Mach number and c.g.
+    /// aerodynamics once per planform, Mach number and c.g. (The warnings
+    /// may depend on them: `supersonic`'s low-frequency rule is checked at
+    /// the short period's ω̄.)
     pub fn depends_on_mass(self) -> bool {
         self.uses_frequency()
     }
@@ -60,26 +67,55 @@ impl DampingModel {
         matches!(self, DampingModel::Theory(t) if t.uses_frequency())
     }
 
+    /// Every model: the two fairings, then the theories.
+    pub const ALL: [DampingModel; 8] = [
+        DampingModel::Faired,
+        DampingModel::FairedSlender,
+        DampingModel::Theory(Theory::Garrick),
+        DampingModel::Theory(Theory::GarnerTaper),
+        DampingModel::Theory(Theory::Slender),
+        DampingModel::Theory(Theory::Supersonic),
+        DampingModel::Theory(Theory::Transonic),
+        DampingModel::Theory(Theory::TransonicFrequency),
+    ];
+
     pub fn name(self) -> &'static str {
         match self {
             DampingModel::Theory(t) => t.name(),
             DampingModel::Faired => "faired",
+            DampingModel::FairedSlender => "faired-slender",
         }
     }
 
-    /// `faired` or a theory's name.
+    /// `faired`, `faired-slender` or a theory's name.
     pub fn parse(s: &str) -> Result<Self, UnknownDampingModel> {
-        if s == "faired" {
-            Ok(DampingModel::Faired)
-        } else {
-            Ok(DampingModel::Theory(s.parse::<Theory>()?))
+        match s {
+            "faired" => Ok(DampingModel::Faired),
+            "faired-slender" => Ok(DampingModel::FairedSlender),
+            _ => Ok(DampingModel::Theory(s.parse::<Theory>()?)),
+        }
+    }
+
+    /// The lift slope and aerodynamic centre the model's own theory gives
+    /// at `mach`, with their Mach derivatives — taken by
+    /// [`aero::Source::Default`](crate::aero::Source::Default) in place of
+    /// the default methods (`damping::theory_coefficients`: the supersonic
+    /// theory at M > 1). The fairings give none.
+    pub fn own_coefficients(
+        self,
+        planform: &Planform,
+        mach: f64,
+    ) -> Result<Option<TheoryCoefficients>, DampingError> {
+        match self {
+            DampingModel::Theory(t) => theory_coefficients(t, planform, mach),
+            DampingModel::Faired | DampingModel::FairedSlender => Ok(None),
         }
     }
 }
 
-/// A damping model's name that is neither `faired` nor a theory's.
+/// A damping model's name that is neither a fairing's nor a theory's.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{0}, or `faired` (the default)")]
+#[error("{0}; or the fairings `faired` (the default) and `faired-slender`")]
 pub struct UnknownDampingModel(#[from] pub UnknownTheory);
 
 /// A design point.
@@ -98,7 +134,8 @@ pub struct Case {
     pub aero: AeroModel,
     pub damping: DampingModel,
     /// A starting (or fixed) frequency parameter for frequency-dependent
-    /// theories; `None`: start from §9's √(−m_w/(μ₁i_B)).
+    /// theories, and the short period's ω̄ at which `supersonic` checks its
+    /// low-frequency rule; `None`: §9's √(−m_w/(μ₁i_B)).
     pub omega_bar: Option<f64>,
     /// Iterate ω̄ to consistency (frequency-dependent theories only).
     pub iterate_frequency: bool,
@@ -214,19 +251,32 @@ impl Case {
 /// theory (36): w = 3x² − 2x³, x = (M − 1)/[`FAIRING_WIDTH`].
 pub const FAIRING_WIDTH: f64 = 0.2;
 
-/// The damping derivatives of the case's model at ω̄ (frequency-dependent
-/// theories only).
+/// The damping derivatives of the case's model at ω̄ (used by the
+/// frequency-dependent theory, and by `supersonic` for its low-frequency
+/// warning).
 fn damping_at(case: &Case, wing: &WingInput, omega_bar: Option<f64>) -> Result<Damping, CaseError> {
     match case.damping {
         DampingModel::Theory(t) => Ok(damping_derivatives(t, wing, case.h, case.mach, omega_bar)?),
         DampingModel::Faired => faired(wing, case.h, case.mach),
+        DampingModel::FairedSlender => faired_slender(wing, case.h, case.mach),
     }
 }
 
-/// [`DampingModel::Faired`]: (37) to M = 1, blended into (36) over
-/// 1 ≤ M ≤ 1 + [`FAIRING_WIDTH`], (36) beyond — held at its values at the
-/// sonic leading edge past it.
+/// [`DampingModel::Faired`]: (37) to M = 1, blended into the supersonic
+/// linear theory over 1 ≤ M ≤ 1 + [`FAIRING_WIDTH`], that theory beyond.
 fn faired(wing: &WingInput, h: f64, m: f64) -> Result<Damping, CaseError> {
+    let slender = damping_derivatives(Theory::Slender, wing, h, m, None)?;
+    if m <= 1.0 {
+        return Ok(slender);
+    }
+    let sup = damping_derivatives(Theory::Supersonic, wing, h, m, None)?;
+    Ok(fair(&slender, &sup, m, Warnings::default()))
+}
+
+/// [`DampingModel::FairedSlender`], the previous fairing: (37) to M = 1,
+/// blended into (36) over 1 ≤ M ≤ 1 + [`FAIRING_WIDTH`], (36) beyond —
+/// held at its values at the sonic leading edge past it.
+fn faired_slender(wing: &WingInput, h: f64, m: f64) -> Result<Damping, CaseError> {
     let slender = damping_derivatives(Theory::Slender, wing, h, m, None)?;
     if m <= 1.0 {
         return Ok(slender);
@@ -240,11 +290,18 @@ fn faired(wing: &WingInput, h: f64, m: f64) -> Result<Damping, CaseError> {
         m
     };
     let sup = damping_derivatives(Theory::Supersonic, wing, h, m_sup, None)?;
+    Ok(fair(&slender, &sup, m, warnings))
+}
+
+/// (37)'s derivatives blended into the supersonic theory's by the weight
+/// w = 3x² − 2x³, x = (M − 1)/[`FAIRING_WIDTH`] clamped to [0, 1]; the
+/// warnings are the fairing's own (the theories' are not carried).
+fn fair(slender: &Damping, sup: &Damping, m: f64, warnings: Warnings) -> Damping {
     let x = ((m - 1.0) / FAIRING_WIDTH).clamp(0.0, 1.0);
     let w = x * x * (3.0 - 2.0 * x);
     let blend = |a: f64, b: f64| (1.0 - w) * a + w * b;
     let (a, b) = (slender.derivatives, sup.derivatives);
-    Ok(Damping {
+    Damping {
         theory: Theory::Supersonic,
         derivatives: DampingDerivatives {
             z_q: blend(a.z_q, b.z_q),
@@ -254,7 +311,7 @@ fn faired(wing: &WingInput, h: f64, m: f64) -> Result<Damping, CaseError> {
         },
         fig18: sup.fig18,
         warnings,
-    })
+    }
 }
 
 /// Evaluate a design point.
@@ -275,7 +332,7 @@ fn evaluate_with(case: &Case, classical: bool) -> Result<CaseResult, CaseError> 
         let (run, f) = point.iterate_frequency()?;
         (run, Some(f))
     } else {
-        (point.run(case.omega_bar)?, None)
+        (point.run(point.omega_bar_estimate())?, None)
     };
     let mut warnings = run.damping.warnings.clone();
     if let Some(f) = &frequency
@@ -320,7 +377,8 @@ struct Run {
 
 impl<'a> Point<'a> {
     fn new(case: &'a Case, classical: bool) -> Result<Self, CaseError> {
-        let coefficients = case.aero.at(&case.planform, case.mach)?;
+        let own = case.damping.own_coefficients(&case.planform, case.mach)?;
+        let coefficients = case.aero.at_with(&case.planform, case.mach, own.as_ref())?;
         let c_l = level_flight_lift(case.cl_m2, case.mach).value;
         Ok(Point {
             case,
@@ -370,19 +428,21 @@ impl<'a> Point<'a> {
         })
     }
 
+    /// The short period's ω̄ before any iteration: the case's own, else
+    /// §9's √(−m_w/(μ₁i_B)) (Fig 32) where m_w < 0.
+    fn omega_bar_estimate(&self) -> Option<f64> {
+        let case = self.case;
+        let m_w = self.stiffness.m_w;
+        case.omega_bar
+            .or_else(|| (m_w < 0.0).then(|| (-m_w / (case.mu1 * case.i_b)).sqrt()))
+    }
+
     /// ω̄ iterated to the short period it produces, ω̄ = s/μ₁, by an
     /// under-relaxed fixed point (the map can overshoot), from the case's
     /// ω̄ or §9's √(−m_w/(μ₁i_B)).
     fn iterate_frequency(&self) -> Result<(Run, FrequencyIteration), CaseError> {
         let case = self.case;
-        let start = case.omega_bar.unwrap_or_else(|| {
-            let m_w = self.stiffness.m_w;
-            if m_w < 0.0 {
-                (-m_w / (case.mu1 * case.i_b)).sqrt()
-            } else {
-                0.1
-            }
-        });
+        let start = self.omega_bar_estimate().unwrap_or(0.1);
         let first = self.run(Some(start))?;
         let (mut w, mut current, mut iterations) = (start, first.clone(), 0);
         let mut ok = !case.iterate_frequency;

@@ -10,14 +10,18 @@
 //! | `garrick` | (32)–(33) | I.E. Garrick's low-aspect-ratio theory (after R.T. Jones), incompressible |
 //! | `garner-taper` | (34)–(35) | H.C. Garner's taper-1/7 version of the same theory |
 //! | `slender` | (37) | H.S. Ribner, slender-wing theory, NACA TN 1423 (1947) |
-//! | `supersonic` | (36) | K.W. Mangler; H.S. Ribner & F.S. Malvestuto, NACA Rep. 908 (1948): subsonic leading edges |
+//! | `supersonic` | (36) | K.W. Mangler; H.S. Ribner & F.S. Malvestuto, NACA Rep. 908 (1948): subsonic leading edges; beyond, linear theory for supersonic leading edges ([`supersonic`]) |
 //! | `transonic` | (38) | K.W. Mangler's low-frequency theory at M = 1, steady |
 //! | `transonic-frequency` | (39)–(40) | the same, with the frequency-dependent terms |
 
+pub use crate::derivatives::DampingDerivatives;
+pub use crate::supersonic::eq36::{Fig18, eq36};
 pub use crate::theory::{Theory, UnknownTheory};
 
+use crate::aero::TheoryCoefficients;
 use crate::display::{Num, OptNum};
-use crate::geometry::{self, Planform};
+use crate::geometry::Planform;
+use crate::supersonic::{self, EdgeRegime, SupersonicError, Wing, transonic};
 use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -41,26 +45,7 @@ impl From<&Planform> for WingInput {
     }
 }
 
-/// z_q, z_ẇ, m_q, m_ẇ in the report's notation.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
-pub struct DampingDerivatives {
-    pub z_q: f64,
-    pub z_wdot: f64,
-    pub m_q: f64,
-    pub m_wdot: f64,
-}
-
 impl DampingDerivatives {
-    /// z_θ̇ = z_q + z_ẇ (damping in pitch, force).
-    pub fn z_thetadot(&self) -> f64 {
-        self.z_q + self.z_wdot
-    }
-
-    /// m_θ̇ = m_q + m_ẇ (damping in pitch, moment).
-    pub fn m_thetadot(&self) -> f64 {
-        self.m_q + self.m_wdot
-    }
-
     /// Split a damping-in-pitch pair (z_θ̇, m_θ̇) — all Garrick's and Garner's
     /// theory gives — with the acceleration derivatives of slender-wing
     /// theory (37), z_ẇ = −πA/4, m_ẇ = z_ẇ(5/8 − h); for a true delta this
@@ -73,43 +58,6 @@ impl DampingDerivatives {
             z_wdot,
             m_q: m_thetadot - m_wdot,
             m_wdot,
-        }
-    }
-}
-
-/// The functions of Fig 18 (supersonic theory): k² = 1 − β² cot²Λ,
-/// E = E(k), K = K(k), G = k²/((2k² − 1)E + (1 − k²)K), H = E·G.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Fig18 {
-    pub k2: f64,
-    pub e: f64,
-    pub k: f64,
-    pub g: f64,
-    pub h: f64,
-}
-
-impl Fig18 {
-    /// At β cot Λ (< 1); the `ellip` crate takes the parameter m = k².
-    pub fn at(beta_cot: f64) -> Fig18 {
-        let k2 = 1.0 - beta_cot * beta_cot;
-        let e = ellip::ellipe(k2).unwrap_or(f64::NAN);
-        let k = ellip::ellipk(k2).unwrap_or(f64::INFINITY);
-        // (1 − k²)K → 0 as k → 1
-        let tail = if k2 >= 1.0 { 0.0 } else { (1.0 - k2) * k };
-        // As k → 0 (the leading edge turning sonic) numerator and
-        // denominator vanish together: E, K ≈ (π/2)(1 ∓ k²/4) give a
-        // denominator (3π/4)k²(1 + O(k²)), so G → 4/(3π) and H → 2/3.
-        let g = if k2 < 1e-6 {
-            4.0 / (3.0 * PI)
-        } else {
-            k2 / ((2.0 * k2 - 1.0) * e + tail)
-        };
-        Fig18 {
-            k2,
-            e,
-            k,
-            g,
-            h: e * g,
         }
     }
 }
@@ -127,15 +75,13 @@ pub enum DampingError {
     Sweep { degrees: f64 },
     #[error("supersonic theory (36) needs M > 1, not M = {}", Num(*mach))]
     SubsonicMach { mach: f64 },
+    #[error("supersonic theory: {0}")]
+    Supersonic(#[from] SupersonicError),
     #[error(
-        "supersonic theory (36) needs subsonic leading edges, β cot Λ < 1; at M = {} β cot Λ = {beta_cot:.4} (the leading edge is sonic at M = {sonic:.4})",
-        Num(*mach)
+        "supersonic theory is a function of the planform: it needs the planform's own aspect ratio {}, not {}",
+        Num(*planform), Num(*given)
     )]
-    SupersonicLeadingEdge {
-        mach: f64,
-        beta_cot: f64,
-        sonic: f64,
-    },
+    AspectRatio { given: f64, planform: f64 },
     #[error(
         "garner-taper (34)–(35) is Garner's result for taper 1/7 only; this wing has taper {}",
         Num(*taper)
@@ -161,7 +107,8 @@ pub struct Damping {
 
 /// The damping derivatives of `theory` for the wing at c.g. `h` and Mach
 /// number `mach`; `omega_bar` is the frequency parameter ω̄ = ωc̄/V, used by
-/// `transonic-frequency` only.
+/// `transonic-frequency` and, for the low-frequency rule's warning
+/// (`low_frequency`), by `supersonic`.
 pub fn damping_derivatives(
     theory: Theory,
     wing: &WingInput,
@@ -193,10 +140,12 @@ pub fn damping_derivatives(
         Theory::Slender | Theory::Transonic => slender(wing, h, mach, &mut out),
         Theory::Garrick => garrick(wing, h, mach, &mut out),
         Theory::GarnerTaper => garner_taper(wing, h, mach, &mut out)?,
-        Theory::Supersonic => supersonic(wing, h, mach, &mut out)?,
+        Theory::Supersonic => supersonic(wing, h, mach, omega_bar, &mut out)?,
         Theory::TransonicFrequency => transonic_frequency(wing, h, mach, omega_bar, &mut out)?,
     };
-    if wing.taper > 0.0 && theory != Theory::GarnerTaper {
+    // garner-taper is for taper 1/7; supersonic says where it applies a
+    // true-delta formula itself
+    if wing.taper > 0.0 && !matches!(theory, Theory::GarnerTaper | Theory::Supersonic) {
         out.warnings.push(Warning::TrueDeltaOnly {
             theory,
             taper: wing.taper,
@@ -271,33 +220,104 @@ fn incompressible(mach: f64, out: &mut Damping) {
     }
 }
 
-/// (36) with subsonic leading edges, E and H from Fig 18.
+/// The whole supersonic linear theory ([`supersonic::edge_theory`]): eq
+/// (36) with subsonic leading edges (β cot Λ < 1), E and H from Fig 18;
+/// the supersonic-edge theory beyond; continuous at β cot Λ = 1 (within
+/// [`supersonic::SONIC_EDGE_TOLERANCE`], so the 60° delta at M = 2 is
+/// accepted). Warnings: (36), a true-delta theory, on a cropped wing; the
+/// low-frequency rule at ω̄ ([`low_frequency`]).
 fn supersonic(
     wing: &WingInput,
     h: f64,
     mach: f64,
+    omega_bar: Option<f64>,
     out: &mut Damping,
 ) -> Result<DampingDerivatives, DampingError> {
     if mach <= 1.0 {
         return Err(DampingError::SubsonicMach { mach });
     }
-    let beta_cot = geometry::beta_cot(wing.sweep_le, mach);
-    if beta_cot >= 1.0 {
-        return Err(DampingError::SupersonicLeadingEdge {
-            mach,
-            beta_cot,
-            sonic: geometry::sonic_leading_edge_mach(wing.sweep_le),
+    let w = supersonic_wing(wing)?;
+    let r = supersonic::edge_theory(&w, mach, h)?;
+    if r.regime != EdgeRegime::SupersonicEdge {
+        out.fig18 = Some(Fig18::at(r.beta_cot.min(1.0)));
+    }
+    if r.true_delta_formula_on_cropped_wing {
+        out.warnings.push(Warning::TrueDeltaOnly {
+            theory: out.theory,
+            taper: wing.taper,
         });
     }
-    if mach < 1.1 {
-        out.warnings.push(Warning::NearlyTransonic { mach });
+    low_frequency(&w, mach, omega_bar, out);
+    Ok(r.derivatives.damping)
+}
+
+/// The planform of `wing` for the supersonic theory, which is a function of
+/// its sweep and taper: its aspect ratio must be theirs (to 1e-9).
+fn supersonic_wing(wing: &WingInput) -> Result<Wing, DampingError> {
+    let w = Wing::new(wing.sweep_le, wing.taper)?;
+    let planform = w.aspect_ratio();
+    let given = wing.aspect_ratio;
+    // false for a NaN too
+    let same = (given - planform).abs() <= 1e-9 * planform;
+    if !same {
+        return Err(DampingError::AspectRatio { given, planform });
     }
-    if beta_cot > 0.95 {
-        out.warnings.push(Warning::NearlySonicEdge { beta_cot });
+    Ok(w)
+}
+
+/// The transonic side of linear supersonic theory, as a stated rule
+/// (`supersonic::transonic`, docs/damping-theories.md): the theory is first
+/// order in frequency and holds where κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ 0.5
+/// ([`supersonic::transonic::eq36_validity`]). At the case's ω̄ (the short
+/// period's) a failure is a warning naming the criterion, ω̄/(M² − 1) and
+/// the Mach number above which it holds ([`Warning::LowFrequency`]); with
+/// no ω̄ (or one that is not positive) the warning gives the largest ω̄ at
+/// which it holds at this M ([`Warning::FrequencyUnchecked`]). Not an
+/// error: the user asked for this theory.
+fn low_frequency(w: &Wing, mach: f64, omega_bar: Option<f64>, out: &mut Damping) {
+    let checked = omega_bar.and_then(|om| transonic::eq36_validity(w, mach, om).ok());
+    match (omega_bar, checked) {
+        (Some(omega_bar), Some(v)) => {
+            if !v.valid {
+                out.warnings.push(Warning::LowFrequency {
+                    mach,
+                    omega_bar,
+                    nu: v.nu,
+                    kappa: v.kappa,
+                    limit: v.limit,
+                    validity_mach: transonic::validity_mach(w, omega_bar).ok(),
+                });
+            }
+        }
+        _ => out.warnings.push(Warning::FrequencyUnchecked {
+            mach,
+            omega_max: transonic::largest_omega_bar(w, mach),
+            limit: transonic::LOW_FREQUENCY_LIMIT,
+        }),
     }
-    let f = Fig18::at(beta_cot);
-    out.fig18 = Some(f);
-    Ok(eq36(wing.aspect_ratio, h, mach, f.e, f.h))
+}
+
+/// The lift slope and aerodynamic centre `theory` gives itself at `mach`,
+/// with their exact Mach derivatives — what `aero::Source::Default` takes
+/// in place of the default methods: for `supersonic` at M > 1, (36)'s
+/// πA/(2E) and H₀ = ½ with subsonic leading edges, the supersonic-edge
+/// theory's beyond ([`supersonic::edge_coefficients`]). `None` for the
+/// other theories (no lift slope is part of them here) and where the
+/// theory does not apply (M ≤ 1: its damping derivatives say why).
+pub fn theory_coefficients(
+    theory: Theory,
+    planform: &Planform,
+    mach: f64,
+) -> Result<Option<TheoryCoefficients>, DampingError> {
+    if theory != Theory::Supersonic || !(mach > 1.0 && mach.is_finite()) {
+        return Ok(None);
+    }
+    let c = supersonic::edge_coefficients(&Wing::from(planform), mach)?;
+    Ok(Some(TheoryCoefficients {
+        model: theory.name(),
+        lift_slope: c.lift_slope,
+        aerodynamic_centre: c.aerodynamic_centre,
+    }))
 }
 
 /// (39)–(40): (37) with Mangler's frequency functions in the acceleration
@@ -334,24 +354,6 @@ fn transonic_frequency(
 
 /// The transonic theories (38)–(40) warn further than this from M = 1.
 pub const TRANSONIC_RANGE: f64 = 0.2;
-
-/// Eq (36), recovered (Mangler; Ribner & Malvestuto, NACA Rep. 908), in
-/// the report's notation, for given E and H (Fig 18):
-/// z_q = −(πA/4E)(3H − 2h − 1),
-/// z_ẇ = −(πA/4E)[1 − 3M²(1 − H)/(M² − 1)],
-/// m_q = −(πA/4E)(2h² − 3hH + (15/8)H − ½),
-/// m_ẇ = z_ẇ(5/8 − h)
-/// (with z_w = −πA/(2E), m_w = z_w(½ − h)). With H = E = 1 these are (37).
-pub fn eq36(a: f64, h: f64, mach: f64, e: f64, hh: f64) -> DampingDerivatives {
-    let c = PI * a / (4.0 * e);
-    let z_wdot = -c * (1.0 - 3.0 * mach * mach * (1.0 - hh) / (mach * mach - 1.0));
-    DampingDerivatives {
-        z_q: -c * (3.0 * hh - 2.0 * h - 1.0),
-        z_wdot,
-        m_q: -c * (2.0 * h * h - 3.0 * h * hh + 15.0 / 8.0 * hh - 0.5),
-        m_wdot: z_wdot * (5.0 / 8.0 - h),
-    }
-}
 
 /// Mangler's frequency functions, eq (40):
 /// k(ω̄) = 1 − ½cot²Λ[4.959 − 3 ln(ω̄ cot²Λ)],

@@ -43,3 +43,24 @@ pub struct Derivatives {
     /// Non-dimensional pitching inertia i_B = B/(mc̄²) (§3).
     pub i_b: f64,
 }
+
+/// z_q, z_ẇ, m_q, m_ẇ in the report's notation.
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize)]
+pub struct DampingDerivatives {
+    pub z_q: f64,
+    pub z_wdot: f64,
+    pub m_q: f64,
+    pub m_wdot: f64,
+}
+
+impl DampingDerivatives {
+    /// z_θ̇ = z_q + z_ẇ (damping in pitch, force).
+    pub fn z_thetadot(&self) -> f64 {
+        self.z_q + self.z_wdot
+    }
+
+    /// m_θ̇ = m_q + m_ẇ (damping in pitch, moment).
+    pub fn m_thetadot(&self) -> f64 {
+        self.m_q + self.m_wdot
+    }
+}

@@ -59,7 +59,7 @@ pub fn stiffness(coef: &Coefficients, c_l: f64, h: f64) -> Stiffness {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::aero::Value;
+    use crate::aero::{Origin, Origins, Value};
 
     #[test]
     fn by_hand_at_constant_coefficients() {
@@ -70,6 +70,7 @@ mod tests {
             zero_lift_drag: Value::new(0.01, 0.0),
             drag_due_to_lift: Value::new(0.3, 0.0),
             aerodynamic_centre: Value::new(0.4, 0.0),
+            origin: Origins::all(Origin::Method),
         };
         let s = stiffness(&c, 0.2, 0.25);
         let cd = 0.01 + 0.3 * 0.04;

@@ -19,10 +19,26 @@ pub enum Warning {
     NotSlender { beta_a: f64 },
     /// An incompressible theory, (32)–(35), at a high subsonic Mach number.
     Incompressible { theory: Theory, mach: f64 },
-    /// Supersonic linear theory (36) close to M = 1.
-    NearlyTransonic { mach: f64 },
-    /// Supersonic theory (36) with a nearly sonic leading edge.
-    NearlySonicEdge { beta_cot: f64 },
+    /// Supersonic linear theory at a Mach number where its low-frequency
+    /// criterion κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ 0.5 fails at the case's ω̄
+    /// (`supersonic::transonic`): ν = ω̄/(M² − 1), and the Mach number above
+    /// which it holds at this ω̄ (`None`: none, ω̄c₀/c̄ ≥ 0.5).
+    LowFrequency {
+        mach: f64,
+        omega_bar: f64,
+        nu: f64,
+        kappa: f64,
+        /// The criterion's limit on κ (`LOW_FREQUENCY_LIMIT`).
+        limit: f64,
+        validity_mach: Option<f64>,
+    },
+    /// Supersonic linear theory with no frequency to check its
+    /// low-frequency criterion against: the largest ω̄ at which it holds.
+    FrequencyUnchecked {
+        mach: f64,
+        omega_max: f64,
+        limit: f64,
+    },
     /// The faired model above the Mach number at which the leading edge
     /// turns supersonic: (36) held at its sonic-edge values.
     FairedHeldAtSonicEdge { sonic: f64 },
@@ -54,15 +70,32 @@ impl fmt::Display for Warning {
                 theory.equations(),
                 Num(mach)
             ),
-            Warning::NearlyTransonic { mach } => write!(
+            Warning::LowFrequency {
+                mach,
+                omega_bar,
+                nu,
+                kappa,
+                limit,
+                validity_mach,
+            } => {
+                write!(
+                    f,
+                    "supersonic: linear theory ((36) and past the sonic edge) is first order in frequency, valid for ω̄/(M² − 1) ≪ 1 (the rule: κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ {limit}); at M = {} the short period's ω̄ = {omega_bar:.3} gives ω̄/(M² − 1) = {nu:.3}, κ = {kappa:.3}, so its z_ẇ, m_ẇ are outside it; ",
+                    Num(mach)
+                )?;
+                match validity_mach {
+                    Some(m) => write!(f, "at this ω̄ it holds above M = {m:.3}"),
+                    None => write!(f, "at this ω̄ it holds at no Mach number (ω̄c₀/c̄ ≥ {limit})"),
+                }
+            }
+            Warning::FrequencyUnchecked {
+                mach,
+                omega_max,
+                limit,
+            } => write!(
                 f,
-                "supersonic (36): linear theory needs ω̄/(M² − 1) ≪ 1; at M = {} M² − 1 = {:.3}",
-                Num(mach),
-                mach * mach - 1.0
-            ),
-            Warning::NearlySonicEdge { beta_cot } => write!(
-                f,
-                "supersonic (36): the leading edge is nearly sonic (β cot Λ = {beta_cot:.3})"
+                "supersonic: linear theory ((36) and past the sonic edge) is first order in frequency, valid for ω̄/(M² − 1) ≪ 1; at M = {} it holds for ω̄ ≤ {omega_max:.3} (κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ {limit}), and no frequency was given to check",
+                Num(mach)
             ),
             Warning::FairedHeldAtSonicEdge { sonic } => write!(
                 f,

@@ -129,5 +129,8 @@ fn unknown_names_are_quoted_as_excerpts() {
     assert!(e.contains("`transonic-frequency`"));
     let e = DampingModel::parse("mangler").unwrap_err().to_string();
     assert!(e.starts_with("unknown damping theory `mangler`; the theories are `garrick`"));
-    assert!(e.ends_with("or `faired` (the default)"), "{e}");
+    assert!(
+        e.ends_with("; or the fairings `faired` (the default) and `faired-slender`"),
+        "{e}"
+    );
 }

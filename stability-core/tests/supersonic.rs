@@ -443,3 +443,134 @@ fn a_shift_of_the_pitch_axis_obeys_the_kinematics() {
         d0.aerodynamic_centre
     );
 }
+
+/// The Mach derivative of `f` by the five-point rule, central or (where
+/// `forward`) one-sided.
+fn five_point(f: impl Fn(f64) -> f64, m: f64, h: f64, forward: bool) -> f64 {
+    if forward {
+        let y: Vec<f64> = (0..5).map(|k| f(m + k as f64 * h)).collect();
+        (-25.0 * y[0] + 48.0 * y[1] - 36.0 * y[2] + 16.0 * y[3] - 3.0 * y[4]) / (12.0 * h)
+    } else {
+        (f(m - 2.0 * h) - 8.0 * f(m - h) + 8.0 * f(m + h) - f(m + 2.0 * h)) / (12.0 * h)
+    }
+}
+
+/// The Mach derivatives of `f` by the five-point rule at h and h/2 and
+/// Richardson's extrapolation, (16D(h/2) − D(h))/15, which removes the
+/// rule's h⁴ term (nine evaluations).
+fn richardson(f: impl Fn(f64) -> [f64; 2], m: f64, h: f64, forward: bool) -> [f64; 2] {
+    let offsets: Vec<i32> = if forward {
+        (0..9).collect()
+    } else {
+        (-4..=4).collect()
+    };
+    let pts: Vec<[f64; 2]> = offsets
+        .iter()
+        .map(|&k| f(m + f64::from(k) * h / 2.0))
+        .collect();
+    let at = |j: i32, i: usize| pts[(j - offsets[0]) as usize][i];
+    std::array::from_fn(|i| {
+        let rule = |s: i32, hh: f64| {
+            if forward {
+                (-25.0 * at(0, i) + 48.0 * at(s, i) - 36.0 * at(2 * s, i) + 16.0 * at(3 * s, i)
+                    - 3.0 * at(4 * s, i))
+                    / (12.0 * hh)
+            } else {
+                (at(-2 * s, i) - 8.0 * at(-s, i) + 8.0 * at(s, i) - at(2 * s, i)) / (12.0 * hh)
+            }
+        };
+        (16.0 * rule(1, h / 2.0) - rule(2, h)) / 15.0
+    })
+}
+
+#[test]
+fn edge_coefficients_are_edge_theorys_with_their_mach_derivatives() {
+    // closed forms: (36)'s πA/(2E) and the true delta's 4/β, against a
+    // central difference of edge_theory's own values
+    let mut worst_d: f64 = 0.0;
+    for deg in [45.0, 60.0] {
+        let w = wing(deg, 0.0);
+        for m in [0.1, 0.5, 0.9, 0.999, 1.001, 1.5, 3.0] {
+            let mach = mach_at(&w, m);
+            let c = supersonic::edge_coefficients(&w, mach).unwrap();
+            let t = supersonic::edge_theory(&w, mach, 0.25).unwrap().derivatives;
+            assert_eq!(c.lift_slope.value, t.lift_slope);
+            assert_eq!(c.aerodynamic_centre.value, t.aerodynamic_centre);
+            let a = |x: f64| {
+                supersonic::edge_theory(&w, x, 0.25)
+                    .unwrap()
+                    .derivatives
+                    .lift_slope
+            };
+            let fd = five_point(a, mach, 1e-5 * (mach - 1.0).min(1e-1), false);
+            worst_d = worst_d.max(rel(c.lift_slope.d_mach, fd));
+            assert_eq!(c.aerodynamic_centre.d_mach, 0.0);
+        }
+    }
+    println!("true deltas: da/dM against a central difference, worst {worst_d:.2e}");
+    assert!(worst_d < 1e-7, "{worst_d}");
+    // the kink at the sonic edge: da/dM = −2M/β³ below, −4M/β³ above
+    let w = wing(45.0, 0.0);
+    let s = w.sonic_mach();
+    let below = supersonic::edge_coefficients(&w, s * (1.0 - 1e-9)).unwrap();
+    let above = supersonic::edge_coefficients(&w, s * (1.0 + 1e-9)).unwrap();
+    assert!(rel(below.lift_slope.d_mach, -2.0 * s) < 1e-6, "{below:?}");
+    assert!(rel(above.lift_slope.d_mach, -4.0 * s) < 1e-6, "{above:?}");
+}
+
+#[test]
+fn cropped_mach_derivatives_against_independent_routes() {
+    // the lift slope: the closed form (βs ≥ c₀), differenced
+    let mut worst_a: f64 = 0.0;
+    for (deg, taper, mach) in [
+        (45.0, 1.0 / 7.0, 2.0),
+        (45.0, 1.0 / 7.0, 2.5),
+        (30.0, 0.3, 2.0),
+    ] {
+        let w = wing(deg, taper);
+        let c = supersonic::edge_coefficients(&w, mach).unwrap();
+        let closed = |x: f64| evvard::lift_slope_closed(&w, x).unwrap();
+        let fd = five_point(closed, mach, 1e-3, false);
+        worst_a = worst_a.max(rel(c.lift_slope.d_mach, fd));
+    }
+    println!("cropped: da/dM against the closed form's, worst {worst_a:.2e}");
+    assert!(worst_a < 1e-8, "{worst_a}");
+    // both, against the direct source integral differenced (Richardson's
+    // extrapolation of the five-point rule at h and h/2 removes its h⁴
+    // term) — centrally inside the domain, one-sided at the sonic edge
+    // (60°, M = 2); and the step: halving it moves the derivative by < 1e-9
+    let mut worst: [f64; 3] = [0.0; 3];
+    for (deg, taper, mach, forward) in [(45.0, 1.0 / 7.0, 1.5, false), (60.0, 1.0 / 7.0, 2.0, true)]
+    {
+        let w = wing(deg, taper);
+        let c = supersonic::edge_coefficients(&w, mach).unwrap();
+        assert_eq!(c.regime == EdgeRegime::SupersonicEdge, !forward);
+        let direct = |x: f64| {
+            let d = source::integrals(&w, x, 1e-10).derivatives(&w, x, 0.0);
+            [d.lift_slope, d.aerodynamic_centre]
+        };
+        let [da, dh] = richardson(direct, mach, 1e-2, forward);
+        println!(
+            "{deg}° λ = {taper:.3} M = {mach}: da/dM {:.10} (direct {da:.10}), dH₀/dM {:.10} (direct {dh:.10})",
+            c.lift_slope.d_mach, c.aerodynamic_centre.d_mach
+        );
+        worst[0] = worst[0].max(rel(c.lift_slope.d_mach, da));
+        worst[1] = worst[1].max((c.aerodynamic_centre.d_mach - dh).abs());
+        let ev = |x: f64| {
+            supersonic::edge_coefficients(&w, x)
+                .unwrap()
+                .aerodynamic_centre
+                .value
+        };
+        let halved = five_point(ev, mach, supersonic::coefficients::STEP / 2.0, forward);
+        worst[2] = worst[2].max((c.aerodynamic_centre.d_mach - halved).abs());
+    }
+    println!(
+        "cropped against the direct route: da/dM {:.2e} (relative), dH₀/dM {:.2e} (absolute); step halved: dH₀/dM moves {:.2e}",
+        worst[0], worst[1], worst[2]
+    );
+    assert!(
+        worst[0] < 1e-7 && worst[1] < 1e-7 && worst[2] < 1e-9,
+        "{worst:?}"
+    );
+}

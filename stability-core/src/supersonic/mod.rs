@@ -20,12 +20,16 @@
 //!
 //! | module | what | route |
 //! | --- | --- | --- |
+//! | [`eq36`](mod@eq36) | eq (36) for subsonic leading edges and the functions of Fig 18 | closed form (elliptic integrals) |
 //! | [`strip`] | Ackeret's two-dimensional values and their strip integrals; the true delta exactly | closed form |
 //! | [`evvard`] | the cropped delta: strip values less the tip deficits | closed-form weights, integrated over the tip regions |
 //! | [`source`] | the same seven potential integrals from the source integral at each receiver | independent numerical route (tests) |
+//! | [`coefficients`] | the lift slope and aerodynamic centre with their Mach derivatives (eqs 27–29) | closed forms; the cropped delta by a tested numerical derivative |
 //! | [`transonic`] | where (36)'s low-frequency theory is valid as M → 1⁺ | stated rule |
 //! | [`wave_drag`] | zero-lift wave drag against the edge parameter (the note's Fig 1) | linear theory, numerical |
 
+pub mod coefficients;
+pub mod eq36;
 pub mod evvard;
 pub mod quadrature;
 pub mod source;
@@ -33,7 +37,10 @@ pub mod strip;
 pub mod transonic;
 pub mod wave_drag;
 
-use crate::damping::{DampingDerivatives, Fig18, eq36};
+use crate::derivatives::DampingDerivatives;
+use crate::geometry::{self, GeometryError, Planform, Size};
+pub use coefficients::{EdgeCoefficients, edge_coefficients};
+use eq36::{Fig18, eq36};
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -47,14 +54,20 @@ use std::f64::consts::PI;
 /// the tolerance.
 pub const SONIC_EDGE_TOLERANCE: f64 = 1e-9;
 
-/// A straight-tapered delta of unit root chord (every result here is
-/// non-dimensional).
+/// The planform in the units of this module: a [`Planform`] of unit root
+/// chord (every result here is non-dimensional). A thin view: the
+/// geometric rules — semi-span, area, aspect ratio, M.A.C. and its leading
+/// edge (§2.2) — are `Planform`'s, reached through `Deref`, so that each is
+/// defined once, in `geometry`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct Wing {
-    /// Leading-edge sweep Λ (rad), in (0, π/2).
-    pub sweep_le: f64,
-    /// Taper λ = c_t/c₀ in [0, 1).
-    pub taper: f64,
+#[serde(transparent)]
+pub struct Wing(Planform);
+
+impl std::ops::Deref for Wing {
+    type Target = Planform;
+    fn deref(&self) -> &Planform {
+        &self.0
+    }
 }
 
 /// Why the supersonic-edge theory cannot be applied.
@@ -97,7 +110,8 @@ pub enum SupersonicError {
 }
 
 impl Wing {
-    /// A wing, checked.
+    /// A wing of leading-edge sweep `sweep_le` (rad, in (0, π/2)) and taper
+    /// λ ∈ [0, 1), checked by [`Planform::new`].
     pub fn new(sweep_le: f64, taper: f64) -> Result<Wing, SupersonicError> {
         if !sweep_le.is_finite() {
             return Err(SupersonicError::NonFinite {
@@ -105,13 +119,16 @@ impl Wing {
                 value: sweep_le,
             });
         }
-        if !(sweep_le > 0.0 && sweep_le < PI / 2.0) {
-            return Err(SupersonicError::Sweep(sweep_le.to_degrees()));
+        match Planform::new(sweep_le, taper, Size::RootChord(1.0)) {
+            Ok(p) => Ok(Wing(p)),
+            Err(GeometryError::Sweep(deg)) => Err(SupersonicError::Sweep(deg)),
+            Err(_) => Err(SupersonicError::Taper(taper)),
         }
-        if !(0.0..1.0).contains(&taper) {
-            return Err(SupersonicError::Taper(taper));
-        }
-        Ok(Wing { sweep_le, taper })
+    }
+
+    /// The planform of unit root chord.
+    pub fn planform(&self) -> &Planform {
+        &self.0
     }
 
     /// cot Λ.
@@ -119,65 +136,31 @@ impl Wing {
         1.0 / self.sweep_le.tan()
     }
 
-    /// Semi-span s/c₀ = (1 − λ) cot Λ.
-    pub fn semi_span(&self) -> f64 {
-        (1.0 - self.taper) * self.cot()
-    }
-
-    /// Area S/c₀² = s(1 + λ).
-    pub fn area(&self) -> f64 {
-        self.semi_span() * (1.0 + self.taper)
-    }
-
-    /// Aspect ratio A = 4 cot Λ (1 − λ)/(1 + λ) (§2.2).
-    pub fn aspect_ratio(&self) -> f64 {
-        4.0 * self.cot() * (1.0 - self.taper) / (1.0 + self.taper)
-    }
-
-    /// M.A.C. c̄/c₀ = (2/3)(1 + λ + λ²)/(1 + λ) (§2.2).
-    pub fn mac(&self) -> f64 {
-        let l = self.taper;
-        2.0 / 3.0 * (1.0 + l + l * l) / (1.0 + l)
-    }
-
-    /// Leading edge of the M.A.C. aft of the apex, x̄/c₀ =
-    /// (1 − λ)(1 + 2λ)/(3(1 + λ)) (§2.2).
-    pub fn x_mac(&self) -> f64 {
-        let l = self.taper;
-        (1.0 - l) * (1.0 + 2.0 * l) / (3.0 * (1.0 + l))
-    }
-
-    /// The pitch axis x₀/c₀ for the c.g. at h.
+    /// The pitch axis x₀/c₀ for the c.g. at h ([`Planform::xo_over_root_chord`]).
     pub fn axis(&self, h: f64) -> f64 {
-        self.x_mac() + h * self.mac()
+        self.xo_over_root_chord(h)
     }
 
-    /// The edge parameter β cot Λ at Mach `mach`.
+    /// The edge parameter β cot Λ at Mach `mach` ([`geometry::beta_cot`]).
     pub fn beta_cot(&self, mach: f64) -> f64 {
-        crate::geometry::beta_cot(self.sweep_le, mach)
+        geometry::beta_cot(self.sweep_le, mach)
     }
 
-    /// The Mach number at which the leading edge is sonic, √(1 + tan²Λ).
+    /// The Mach number at which the leading edge is sonic, √(1 + tan²Λ)
+    /// ([`geometry::sonic_leading_edge_mach`]).
     pub fn sonic_mach(&self) -> f64 {
-        crate::geometry::sonic_leading_edge_mach(self.sweep_le)
+        geometry::sonic_leading_edge_mach(self.sweep_le)
     }
 }
 
-impl From<&crate::damping::WingInput> for Wing {
-    fn from(w: &crate::damping::WingInput) -> Self {
-        Wing {
-            sweep_le: w.sweep_le,
-            taper: w.taper,
-        }
-    }
-}
-
-impl From<&crate::geometry::Planform> for Wing {
-    fn from(p: &crate::geometry::Planform) -> Self {
-        Wing {
-            sweep_le: p.sweep_le,
-            taper: p.taper,
-        }
+/// The same planform scaled to unit root chord (the derivatives do not
+/// depend on the scale).
+impl From<&Planform> for Wing {
+    fn from(p: &Planform) -> Self {
+        Wing(Planform {
+            root_chord: 1.0,
+            ..*p
+        })
     }
 }
 
@@ -273,7 +256,7 @@ pub fn supersonic_edge(wing: &Wing, mach: f64, h: f64) -> Result<Derivatives, Su
         });
     }
     let m = beta * wing.cot();
-    if m < 1.0 - SONIC_EDGE_TOLERANCE {
+    if EdgeRegime::of(m) == EdgeRegime::SubsonicEdge {
         return Err(SupersonicError::SubsonicLeadingEdge {
             mach,
             beta_cot: m,
@@ -295,6 +278,19 @@ pub enum EdgeRegime {
     SonicEdge,
     /// β cot Λ > 1 + tolerance: this module's theory.
     SupersonicEdge,
+}
+
+impl EdgeRegime {
+    /// The regime at the edge parameter β cot Λ, by [`SONIC_EDGE_TOLERANCE`].
+    pub fn of(beta_cot: f64) -> EdgeRegime {
+        if beta_cot < 1.0 - SONIC_EDGE_TOLERANCE {
+            EdgeRegime::SubsonicEdge
+        } else if beta_cot <= 1.0 + SONIC_EDGE_TOLERANCE {
+            EdgeRegime::SonicEdge
+        } else {
+            EdgeRegime::SupersonicEdge
+        }
+    }
 }
 
 /// The result of [`edge_theory`].
@@ -322,13 +318,7 @@ pub fn edge_theory(wing: &Wing, mach: f64, h: f64) -> Result<EdgeDerivatives, Su
         });
     }
     let m = beta * wing.cot();
-    let regime = if m < 1.0 - SONIC_EDGE_TOLERANCE {
-        EdgeRegime::SubsonicEdge
-    } else if m <= 1.0 + SONIC_EDGE_TOLERANCE {
-        EdgeRegime::SonicEdge
-    } else {
-        EdgeRegime::SupersonicEdge
-    };
+    let regime = EdgeRegime::of(m);
     let derivatives = match regime {
         EdgeRegime::SubsonicEdge => eq36_with_own_aero(wing, mach, h),
         _ => supersonic_edge(wing, mach, h)?,

@@ -25,7 +25,7 @@
 //! derivatives below, independent of Λ.
 
 use super::{Derivatives, PotentialIntegrals, Wing};
-use crate::damping::DampingDerivatives;
+use crate::derivatives::DampingDerivatives;
 
 /// Ackeret's flat plate per chord, c.g. at fraction `h` of the chord.
 pub fn two_dimensional(mach: f64, h: f64) -> Derivatives {

@@ -18,7 +18,11 @@
 //! **The rule.** (36)'s z_ẇ, m_ẇ are used only where κ ≤ [`LOW_FREQUENCY_LIMIT`];
 //! below the Mach number where κ reaches it ([`validity_mach`]) the α̇
 //! derivatives come from Mangler's transonic theory (38)–(40) at the same
-//! ω̄. The limit 0.5 comes from the exact two-dimensional oscillatory
+//! ω̄ — in the faired model. `--damping supersonic`, asked for by name,
+//! keeps its own and carries `Warning::LowFrequency` (ω̄/(M² − 1), κ and
+//! [`validity_mach`]) at the short period's ω̄, or
+//! `Warning::FrequencyUnchecked` ([`largest_omega_bar`]) without one
+//! (`damping::low_frequency`). The limit 0.5 comes from the exact two-dimensional oscillatory
 //! theory (Garrick & Rubinow, NACA Rep. 846, 1946: the kernel e^{−iλX}J₀(μX),
 //! λ = ωM²/(Vβ²), μ = ωM/(Vβ²)), computed for a plate of chord c₀ by
 //! `scripts/supersonic_low_frequency.py`: the first-order theory's
@@ -110,6 +114,13 @@ pub fn validity_mach(wing: &Wing, omega_bar: f64) -> Result<f64, SupersonicError
         });
     }
     Ok((LOW_FREQUENCY_LIMIT / (LOW_FREQUENCY_LIMIT - scaled)).sqrt())
+}
+
+/// The largest ω̄ at which (36) is valid at Mach `mach` (κ = limit):
+/// ω̄ = κ_max (c̄/c₀)(M² − 1)/M²; 0 at and below M = 1.
+pub fn largest_omega_bar(wing: &Wing, mach: f64) -> f64 {
+    let b2 = (mach * mach - 1.0).max(0.0);
+    LOW_FREQUENCY_LIMIT * wing.mac() * b2 / (mach * mach)
 }
 
 /// The Mach number where (36)'s near-sonic z_ẇ equals Mangler's at ω̄:
