@@ -31,15 +31,12 @@ pub fn theories() -> Vec<&'static str> {
     Theory::ALL.iter().map(|t| t.name()).collect()
 }
 
-/// The damping models a config or `analyze(…, damping=…)` takes: `faired`
-/// (the default: slender-wing theory (37) through M = 1, blended into (36)
-/// by M = 1.2) and the theories.
+/// The damping models a config or `analyze(…, damping=…)` takes: the
+/// fairings (`faired`, the default, through the §7 theories across Mach
+/// number as Figs 19–24; `faired-slender`) and the theories.
 #[pyfunction]
 pub fn damping_models() -> Vec<&'static str> {
-    std::iter::once(DampingModel::Faired)
-        .chain(Theory::ALL.map(DampingModel::Theory))
-        .map(|m| m.name())
-        .collect()
+    DampingModel::ALL.iter().map(|m| m.name()).collect()
 }
 
 /// The damping derivatives of one §7 theory for a delta wing of
