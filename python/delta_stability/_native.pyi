@@ -36,7 +36,7 @@ class Derivatives:
     x_wdot x_q z_u z_w z_wdot z_q m_u m_w m_wdot m_q (eqs 9–20), c_l
     (eq 24), mu1 = m/(½ρSc̄), i_b = B/(mc̄²). Frozen."""
 
-    NAMES: ClassVar[tuple[str, ...]]
+    NAMES: ClassVar[list[str]]
     x_u: float
     x_w: float
     x_wdot: float

@@ -46,6 +46,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(theories::theories, m)?)?;
     m.add_function(wrap_pyfunction!(theories::damping_models, m)?)?;
     m.add_function(wrap_pyfunction!(theories::lifting_surface, m)?)?;
+    m.add_function(wrap_pyfunction!(panic_for_tests, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
@@ -66,4 +67,20 @@ pub fn guard<T>(f: impl FnOnce() -> PyResult<T>) -> PyResult<T> {
             )))
         }
     }
+}
+
+/// Panics inside [`guard`], for the test that no panic crosses the FFI
+/// boundary (tests/test_errors.py); not part of the API.
+#[pyfunction]
+#[pyo3(name = "_panic_for_tests")]
+fn panic_for_tests(py: Python<'_>) -> PyResult<()> {
+    guard(|| {
+        let fail = std::hint::black_box(true);
+        py.detach(|| {
+            if fail {
+                panic!("a deliberate panic, for the tests")
+            }
+        });
+        Ok(())
+    })
 }

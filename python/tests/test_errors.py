@@ -172,3 +172,12 @@ def test_garbage_never_crashes_the_interpreter():
     attempt(ds.batch_roots, c)
     attempt(ds.batch_roots, c, errors="nan")
     assert outcomes["ok"] > 0 and outcomes["error"] > 0, outcomes
+
+
+def test_a_rust_panic_is_a_runtime_error_not_a_crash():
+    """The guard around every native function turns a panic (here a
+    deliberate one, in a thread without the GIL) into RuntimeError, which
+    `except Exception` catches (pyo3's PanicException would not be)."""
+    with pytest.raises(RuntimeError, match="internal error in delta_stability"):
+        ds._native._panic_for_tests()
+    assert ds.quartic("examples/tailless-delta-45.toml").stable  # still alive
