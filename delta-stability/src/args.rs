@@ -2,6 +2,7 @@
 //! with its one-line meaning in `--help`; the lists come from the library
 //! (its damping theories and notations), not restated here.
 
+use crate::input::dimensional_notation::DIMENSIONAL;
 use clap::ValueEnum;
 use clap::builder::PossibleValue;
 use stability_core::case::DampingModel;
@@ -68,6 +69,8 @@ pub const AVL: &str = "avl";
 pub enum NotationArg {
     Table(Notation),
     Avl,
+    /// Derivatives per unit mass and inertia (`notation = "dimensional"`).
+    Dimensional,
 }
 
 impl NotationArg {
@@ -75,9 +78,13 @@ impl NotationArg {
         match self {
             NotationArg::Table(n) => n.name(),
             NotationArg::Avl => AVL,
+            NotationArg::Dimensional => DIMENSIONAL,
         }
     }
 }
+
+/// What `--from dimensional` and `--to dimensional` say in `--help`.
+const DIMENSIONAL_HELP: &str = "per unit mass and inertia as handbooks print them (X_u … M_q), body or stability axes, ft or si; to and from the report's notation with a [reference] table";
 
 impl ValueEnum for NotationArg {
     fn value_variants<'a>() -> &'a [Self] {
@@ -85,7 +92,7 @@ impl ValueEnum for NotationArg {
         ALL.get_or_init(|| {
             Notation::all()
                 .map(NotationArg::Table)
-                .chain([NotationArg::Avl])
+                .chain([NotationArg::Avl, NotationArg::Dimensional])
                 .collect()
         })
     }
@@ -96,23 +103,36 @@ impl ValueEnum for NotationArg {
             NotationArg::Avl => {
                 "AVL's ST output, read only: st_file = \"case.st\", [dimensional] mass, I_y, rho, V"
             }
+            NotationArg::Dimensional => DIMENSIONAL_HELP,
         };
         Some(PossibleValue::new(self.name()).help(help))
     }
 }
 
-/// A notation that can be written: one of the library's tables.
+/// A notation that can be written: one of the library's tables, or the
+/// dimensional one.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TargetNotation(pub Notation);
+pub enum TargetNotation {
+    Table(Notation),
+    Dimensional,
+}
 
 impl ValueEnum for TargetNotation {
     fn value_variants<'a>() -> &'a [Self] {
         static ALL: OnceLock<Vec<TargetNotation>> = OnceLock::new();
-        ALL.get_or_init(|| Notation::all().map(TargetNotation).collect())
+        ALL.get_or_init(|| {
+            Notation::all()
+                .map(TargetNotation::Table)
+                .chain([TargetNotation::Dimensional])
+                .collect()
+        })
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
-        Some(PossibleValue::new(self.0.name()).help(self.0.title()))
+        Some(match self {
+            TargetNotation::Table(n) => PossibleValue::new(n.name()).help(n.title()),
+            TargetNotation::Dimensional => PossibleValue::new(DIMENSIONAL).help(DIMENSIONAL_HELP),
+        })
     }
 }
 
@@ -173,13 +193,25 @@ mod tests {
                 NotationArg::from_str(n.name(), false).unwrap(),
                 NotationArg::Table(n)
             );
-            assert_eq!(TargetNotation::from_str(n.name(), false).unwrap().0, n);
+            assert_eq!(
+                TargetNotation::from_str(n.name(), false).unwrap(),
+                TargetNotation::Table(n)
+            );
         }
         assert_eq!(
             NotationArg::from_str("avl", false).unwrap(),
             NotationArg::Avl
         );
         assert!(TargetNotation::from_str("avl", false).is_err());
+        // the dimensional notation is read and written
+        assert_eq!(
+            NotationArg::from_str("dimensional", false).unwrap(),
+            NotationArg::Dimensional
+        );
+        assert_eq!(
+            TargetNotation::from_str("dimensional", false).unwrap(),
+            TargetNotation::Dimensional
+        );
     }
 
     #[test]

@@ -10,6 +10,7 @@ pub mod fmt;
 pub mod input;
 pub mod output;
 pub mod page;
+pub mod page_dimensional;
 pub mod plot;
 pub mod report;
 

@@ -72,6 +72,28 @@ enum Command {
     /// The coefficients are the exact expansion of the determinant of eq (4);
     /// the report's printed eq (6) has three misprints, corrected here (see
     /// docs/errata.md). Examples: examples/*.toml.
+    ///
+    /// Handbook data (NASA CR-2144, Etkin & Reid, Nelson) go in as printed,
+    /// per unit mass and inertia, with notation = "dimensional"; the general
+    /// model det(λE − A) (eqs D1–D2, docs/dimensional.md) then gives the roots
+    /// in 1/s and the modes in seconds:
+    ///
+    ///   notation = "dimensional"
+    ///   axes = "body"     # or "stability" (required: body-axis data read as
+    ///                     # stability axes give a wrong phugoid)
+    ///   units = "ft"      # ft, slug, s, g = 32.174; or "si": m, kg, s, g = 9.80665
+    ///   [derivatives]     # X_u X_w Z_u Z_w M_u M_w M_q required; X_wdot X_q
+    ///   X_u = -0.00276    # Z_wdot Z_q M_wdot and the u̇ terms X_udot Z_udot
+    ///   ...               # M_udot optional (0)
+    ///   [flight]
+    ///   U0 = 771.5        # trim velocity along x (ft/s or m/s); or V, alpha0
+    ///   W0 = 62.07        # along z (body axes)
+    ///   theta0 = 4.6      # pitch attitude, degrees (required in body axes)
+    ///   g = 32.174        # optional
+    ///   [reference]       # optional: the report's τ, μ₁, i_B and eq (41)
+    ///   chord = 27.3      # c̄; rho, S, mass (or weight), I_y; or mu1, i_b
+    ///
+    /// See examples/aircraft/*.toml (five published sets, with their sources).
     #[command(verbatim_doc_comment)]
     Quartic {
         /// The derivative file (TOML).
@@ -150,8 +172,23 @@ enum Command {
     /// give [parameters] lt = l_t/c̄), perkins (Perkins & Hage), american
     /// (Etkin & Reid: C_xu C_xalpha C_zu C_zalpha C_zq C_zalphadot C_mu
     /// C_malpha C_mq C_malphadot per radian and per qc̄/2V, C_W0, with
-    /// [dimensional] mass, I_y, rho, V, S, chord), and avl (read only:
-    /// st_file = "case.st" with [dimensional] mass, I_y, rho, V).
+    /// [dimensional] mass, I_y, rho, V, S, chord), american_cl (the same in
+    /// the C_L/C_D form, which a notation = "american" file may also be
+    /// written in: C_Lalpha C_Dalpha C_Lu C_Du C_Lq C_Lalphadot C_mu C_malpha
+    /// C_mq C_malphadot, optional C_Dq C_Dalphadot, and C_L, C_D in [flight];
+    /// stability axes, thrust independent of speed; C_zu = −C_Lu,
+    /// C_zα = −C_Lα − C_D, C_xu = −C_Du − 2C_D, C_xα = C_L − C_Dα,
+    /// C_zα̇ = −C_Lα̇), avl (read only: st_file = "case.st" with
+    /// [dimensional] mass, I_y, rho, V), and dimensional (per unit mass and
+    /// inertia, body or stability axes: see `quartic --help`).
+    ///
+    /// --from dimensional --to report turns a body-axis set into stability
+    /// axes by its trim incidence α₀ = atan(W0/U0) and needs a [reference]
+    /// table (chord, and rho, S, mass or weight, I_y; or mu1, i_b); what the
+    /// report's eq (4) cannot hold (the u̇ terms the rotation brings in, a
+    /// climb angle) is left out with a warning that says how far it moves the
+    /// modes. --to dimensional needs [dimensional] (V, rho, S, chord, mass);
+    /// --from dimensional --to dimensional writes the set in stability axes.
     ///
     /// Every factor is derived from the authors' definitions in
     /// specs/notation.toml and checked against the report's appendix; the
@@ -219,7 +256,7 @@ fn main() -> ExitCode {
             to,
             file,
             json,
-        } => cmd::convert::run(from, to.0, &file, json),
+        } => cmd::convert::run(from, to, &file, json),
         Command::Analyze {
             config,
             damping,

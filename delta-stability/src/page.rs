@@ -6,7 +6,7 @@
 use crate::fmt::sig;
 use stability_core::analysis::Analysis;
 use stability_core::criteria::{Category, Verdict, phugoid_level, short_period_level};
-use stability_core::modes::{Mode, Origin};
+use stability_core::modes::{Mode, Modes, Origin};
 use std::fmt::Write;
 
 /// A value to 4 significant digits, or "—" where it does not exist.
@@ -119,11 +119,17 @@ fn modes_table(a: &Analysis, tau: Option<f64>) -> String {
     ];
     let mut rows: Vec<[String; 8]> = vec![header.map(String::from)];
     rows.extend(a.modes.iter().map(|m| mode_row(m, tau)));
-    let widths: Vec<usize> = (0..8)
+    aligned(&rows)
+}
+
+/// Rows as an aligned table: the first column left-aligned, the others
+/// right-aligned.
+pub fn aligned<const N: usize>(rows: &[[String; N]]) -> String {
+    let widths: Vec<usize> = (0..N)
         .map(|k| rows.iter().map(|r| r[k].chars().count()).max().unwrap_or(0))
         .collect();
     let mut s = String::new();
-    for r in &rows {
+    for r in rows {
         let mut line = String::from(" ");
         for (k, c) in r.iter().enumerate() {
             let pad = " ".repeat(widths[k] - c.chars().count());
@@ -161,9 +167,15 @@ fn classical(s: &mut String, a: &Analysis) {
 
 /// The §8 verdict in words, with the cycles to half amplitude behind it.
 pub fn verdict_text(a: &Analysis) -> String {
-    let sp = a.modes.short_period();
+    verdict_words(a.verdict, &a.modes)
+}
+
+/// The §8 verdict on `modes` in words (the cycles to half amplitude are
+/// dimensionless: the same in τ or in seconds).
+pub fn verdict_words(verdict: Verdict, modes: &Modes) -> String {
+    let sp = modes.short_period();
     let cycles = sp.and_then(|m| m.cycles_to_half);
-    match (a.verdict, sp, cycles) {
+    match (verdict, sp, cycles) {
         (Verdict::Meets, Some(_), Some(c)) => {
             format!("met: {} cycles to half amplitude", sig(c, 3))
         }

@@ -83,7 +83,46 @@ fn bases() -> Vec<String> {
             .to_string(),
     );
     v.push(std::fs::read_to_string(examples().join("tailless-delta-45.toml")).unwrap());
+    v.push(std::fs::read_to_string(examples().join("boeing-747-american-cl.toml")).unwrap());
+    v.extend(dimensional_bases());
     v
+}
+
+/// The published aircraft (`notation = "dimensional"`, body and stability
+/// axes, ft and SI, with and without `[reference]`).
+fn dimensional_bases() -> Vec<String> {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(examples().join("aircraft"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    paths.sort();
+    paths
+        .iter()
+        .map(|p| std::fs::read_to_string(p).unwrap())
+        .collect()
+}
+
+/// The property for a dimensional set as `quartic` reads it: an analysis
+/// whose roots, modes and coefficients are finite, or a short located
+/// error.
+fn check_dimensional(text: &str) -> Result<(), String> {
+    use delta_stability::input::dimensional_notation as dn;
+    let analysis = dn::parse(&fuzz_path(), text).and_then(|f| f.analysis());
+    match analysis {
+        Ok(a) => {
+            let finite = a.quartic.is_finite()
+                && a.roots.iter().all(|z| z.re.is_finite() && z.im.is_finite())
+                && a.modes
+                    .iter()
+                    .all(|m| m.re.is_finite() && m.natural_frequency.is_finite());
+            if finite {
+                Ok(())
+            } else {
+                Err(format!("not finite: {:?}", a.roots))
+            }
+        }
+        Err(e) => located_and_short(&e.to_string()),
+    }
 }
 
 /// What a field's value may be replaced by.
@@ -250,7 +289,7 @@ proptest! {
 
     #[test]
     fn damaged_files_of_every_notation_give_finite_values_or_a_located_error(
-        base in 0usize..16,
+        base in 0usize..24,
         first in damages(),
         second in proptest::option::of(damages()),
     ) {
@@ -261,6 +300,21 @@ proptest! {
         }
         let outcome = delta_stability::input::parse(&fuzz_path(), &text);
         prop_assert!(check(outcome).is_ok(), "{:?}", check(delta_stability::input::parse(&fuzz_path(), &text)));
+    }
+
+    #[test]
+    fn damaged_dimensional_sets_give_finite_modes_or_a_located_error(
+        base in 0usize..5,
+        first in damages(),
+        second in proptest::option::of(damages()),
+    ) {
+        let bases = dimensional_bases();
+        let mut text = damage(&bases[base % bases.len()], &first);
+        if let Some(d) = &second {
+            text = damage(&text, d);
+        }
+        let verdict = check_dimensional(&text);
+        prop_assert!(verdict.is_ok(), "{:?}\n{}", verdict, text);
     }
 
     #[test]

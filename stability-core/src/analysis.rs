@@ -51,7 +51,7 @@ pub const LEADING_COEFFICIENT_MIN: f64 = 1e-12;
 /// the quartic is on the stability boundary to working precision (R
 /// marginal, or a root within [`ON_AXIS`] of the axis). A disagreement
 /// otherwise would be a wrong answer: an error, never a result.
-fn agree(routh: &Routh, roots: &[Complex64; 4]) -> Result<(), AnalysisError> {
+pub(crate) fn agree(routh: &Routh, roots: &[Complex64; 4]) -> Result<(), AnalysisError> {
     let on_axis = roots.iter().any(|z| z.re.abs() <= ON_AXIS * z.norm());
     let largest_re = roots.iter().map(|z| z.re).fold(f64::NEG_INFINITY, f64::max);
     let decaying = largest_re < 0.0;

@@ -63,7 +63,7 @@ pub const Z_MAX: f64 = 86_000.0;
 
 /// The kilogram per slug (14.593 902 937 2 kg): lbf·s²/ft with
 /// 1 lbf = 0.453 592 37 kg × g₀, exactly.
-const KG_PER_SLUG: f64 = 0.453_592_37 * G0 / FOOT;
+pub const KG_PER_SLUG: f64 = 0.453_592_37 * G0 / FOOT;
 /// The pascal per lbf/ft².
 const PA_PER_PSF: f64 = 0.453_592_37 * G0 / (FOOT * FOOT);
 

@@ -21,6 +21,7 @@
 //! | §11 responses | [`response`] |
 //! | the appendix's notations | [`notation`] |
 //! | the flight condition | [`atmosphere`] (U.S. Standard Atmosphere, 1976) |
+//! | handbook data: dimensional derivatives, body or stability axes (issue 12) | [`dimensional`] |
 //!
 //! Around them: [`warnings`] (validity limits approached), [`json`] (the
 //! results as the command line prints them), [`display`] (numbers and
@@ -34,6 +35,7 @@ pub mod classical;
 pub mod criteria;
 pub mod damping;
 pub mod derivatives;
+pub mod dimensional;
 pub mod display;
 pub mod examples;
 pub mod geometry;

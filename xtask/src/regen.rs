@@ -31,13 +31,23 @@ struct QuarticSpec {
     generated: &'static str,
 }
 
-const QUARTIC_SPECS: &[QuarticSpec] = &[QuarticSpec {
-    spec: "specs/quartic.toml",
-    ty: "Derivatives",
-    formulas: "docs/formulas.md",
-    expansion: "docs/generated/quartic-expansion.txt",
-    generated: "docs/generated/quartic.rs.txt",
-}];
+const QUARTIC_SPECS: &[QuarticSpec] = &[
+    QuarticSpec {
+        spec: "specs/quartic.toml",
+        ty: "Derivatives",
+        formulas: "docs/formulas.md",
+        expansion: "docs/generated/quartic-expansion.txt",
+        generated: "docs/generated/quartic.rs.txt",
+    },
+    // The general dimensional model (issue 12): eq (4) is its special case.
+    QuarticSpec {
+        spec: "specs/dimensional.toml",
+        ty: "DescriptorSystem",
+        formulas: "docs/dimensional-formulas.md",
+        expansion: "docs/generated/dimensional-expansion.txt",
+        generated: "docs/generated/dimensional.rs.txt",
+    },
+];
 
 /// The notation spec and where its documents go.
 struct NotationSpec {

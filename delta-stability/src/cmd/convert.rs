@@ -5,42 +5,97 @@
 //! that caused it.
 
 use crate::Failure;
-use crate::args::NotationArg;
+use crate::args::{NotationArg, TargetNotation};
 use crate::diag::{InputError, num};
+use crate::input::AnyFile;
+use crate::input::dimensional_notation::DIMENSIONAL;
 use crate::input::rows::{DERIVATIVES, FLIGHT, QUARTIC};
 use crate::input::tabled::uses_parameter;
 use crate::input::{self, DerivativeFile};
 use crate::output::print;
 use serde::Serialize;
+use stability_core::dimensional::{DimensionalDerivatives, DimensionalModel, Reference};
 use stability_core::notation::{Notation, NotationError, Values, tables};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-pub fn run(from: NotationArg, to: Notation, file: &str, json_out: bool) -> Result<(), Failure> {
-    let input = input::read(file)?;
-    for w in &input.warnings {
-        crate::output::warn(&format!("warning: {w}"));
-    }
-    if input.notation != from.name() {
+pub fn run(
+    from: NotationArg,
+    to: TargetNotation,
+    file: &str,
+    json_out: bool,
+) -> Result<(), Failure> {
+    let any = input::read_any(file)?;
+    let (written, form) = match &any {
+        AnyFile::Report(f) => (f.notation.as_str(), f.form),
+        AnyFile::Dimensional(_) => (DIMENSIONAL, DIMENSIONAL),
+    };
+    if written != from.name() && form != from.name() {
         return Err(InputError::file(
             file,
             format!(
-                "--from {}: the file is in notation `{}` (its `notation` key)",
-                from.name(),
-                input.notation
+                "--from {}: the file is in notation `{written}` (its `notation` key)",
+                from.name()
             ),
         )
         .into());
     }
-    let values = converted(&input, to)?;
+    match (any, to) {
+        (AnyFile::Dimensional(d), TargetNotation::Dimensional) => {
+            warn_all(&d.warnings);
+            let out = Dimensional {
+                path: &d.path,
+                from: from.name(),
+                model: d.model.in_stability_axes(),
+                reference: d.reference,
+            };
+            out.print(json_out)
+        }
+        (AnyFile::Dimensional(d), TargetNotation::Table(to)) => {
+            table(&d.to_derivative_file()?, from.name(), to, json_out)
+        }
+        (AnyFile::Report(input), TargetNotation::Table(to)) => {
+            table(&input, from.name(), to, json_out)
+        }
+        (AnyFile::Report(input), TargetNotation::Dimensional) => {
+            warn_all(&input.warnings);
+            let Some(dim) = &input.dimensional else {
+                return Err(InputError::file(
+                    file,
+                    "--to dimensional needs the flight condition in seconds: a [dimensional] table with V, rho, S, chord and mass (SI)",
+                )
+                .into());
+            };
+            let (model, reference) = DimensionalModel::from_report_with(&input.derivatives, dim);
+            let out = Dimensional {
+                path: &input.path,
+                from: from.name(),
+                model,
+                reference: Some(reference),
+            };
+            out.print(json_out)
+        }
+    }
+}
+
+fn warn_all(warnings: &[String]) {
+    for w in warnings {
+        crate::output::warn(&format!("warning: {w}"));
+    }
+}
+
+/// A conversion into one of the notations of `specs/notation.toml`.
+fn table(input: &DerivativeFile, from: &str, to: Notation, json_out: bool) -> Result<(), Failure> {
+    warn_all(&input.warnings);
+    let values = converted(input, to)?;
     if json_out {
-        let out = to_json(&input, from.name(), to, &values);
+        let out = to_json(input, from, to, &values);
         print(&format!(
             "{}\n",
             serde_json::to_string_pretty(&out).unwrap_or_default()
         ))?;
     } else {
-        print(&to_toml(&input, from.name(), to, &values))?;
+        print(&to_toml(input, from, to, &values))?;
     }
     Ok(())
 }
@@ -181,4 +236,90 @@ fn to_toml(input: &DerivativeFile, from: &str, to: Notation, values: &Values) ->
         );
     }
     s
+}
+
+/// A conversion into `notation = "dimensional"`: the set in stability
+/// axes, with its reference quantities.
+struct Dimensional<'a> {
+    path: &'a str,
+    from: &'a str,
+    model: DimensionalModel,
+    reference: Option<Reference>,
+}
+
+/// The `convert --to dimensional --json` object.
+#[derive(Serialize)]
+struct DimensionalJson<'a> {
+    from: &'a str,
+    to: &'a str,
+    model: &'a DimensionalModel,
+    reference: &'a Option<Reference>,
+}
+
+impl Dimensional<'_> {
+    fn print(&self, json_out: bool) -> Result<(), Failure> {
+        if json_out {
+            let out = DimensionalJson {
+                from: self.from,
+                to: DIMENSIONAL,
+                model: &self.model,
+                reference: &self.reference,
+            };
+            print(&format!(
+                "{}\n",
+                serde_json::to_string_pretty(&out).unwrap_or_default()
+            ))?;
+        } else {
+            print(&self.toml())?;
+        }
+        Ok(())
+    }
+
+    /// The set as a `notation = "dimensional"` file.
+    fn toml(&self) -> String {
+        let m = &self.model;
+        let mut s = String::new();
+        let _ = writeln!(
+            s,
+            "# {}, converted from notation `{}` to `dimensional` by delta-stability\n# (derivatives per unit mass and inertia in stability axes; see docs/dimensional.md)",
+            self.path, self.from
+        );
+        let _ = writeln!(
+            s,
+            "notation = \"dimensional\"\naxes = \"{}\"\nunits = \"{}\"\n\n[derivatives]",
+            m.axes.as_str(),
+            m.units.as_str()
+        );
+        for (n, v) in DimensionalDerivatives::NAMES
+            .iter()
+            .zip(m.derivatives.values())
+        {
+            let _ = writeln!(s, "{n} = {v:?}");
+        }
+        let t = &m.trim;
+        let _ = writeln!(
+            s,
+            "\n[flight]\nU0 = {:?}\nW0 = {:?}\ntheta0 = {:?}  # degrees\ng = {:?}",
+            t.u0,
+            t.w0,
+            t.theta0.to_degrees(),
+            t.g
+        );
+        if let Some(r) = &self.reference {
+            let _ = writeln!(s, "\n[reference]\nchord = {:?}", r.chord);
+            match &r.physical {
+                Some(p) => {
+                    let _ = writeln!(
+                        s,
+                        "rho = {:?}\nS = {:?}\nmass = {:?}\nI_y = {:?}",
+                        p.rho, p.s, p.mass, p.i_y
+                    );
+                }
+                None => {
+                    let _ = writeln!(s, "mu1 = {:?}\ni_b = {:?}", r.mu1, r.i_b);
+                }
+            }
+        }
+        s
+    }
 }

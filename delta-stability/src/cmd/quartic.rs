@@ -4,16 +4,22 @@
 
 use crate::Failure;
 use crate::diag::InputError;
-use crate::input::{self, DerivativeFile, rows};
+use crate::input::dimensional_notation::DIMENSIONAL;
+use crate::input::dimensional_notation::DimensionalFile;
+use crate::input::{self, AnyFile, DerivativeFile, rows};
 use crate::output::print;
 use crate::page::analysis_page;
 use serde::Serialize;
 use stability_core::Derivatives;
 use stability_core::analysis::{Analysis, AnalysisError};
+use stability_core::dimensional::DimensionalAnalysis;
 use stability_core::json::Timed;
 
 pub fn run(file: &str, json: bool) -> Result<(), Failure> {
-    let input = input::read(file)?;
+    let input = match input::read_any(file)? {
+        AnyFile::Report(input) => *input,
+        AnyFile::Dimensional(input) => return run_dimensional(&input, json),
+    };
     for w in &input.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
@@ -116,4 +122,53 @@ pub fn table(input: &DerivativeFile, a: &Analysis) -> String {
         a,
         input.dimensional.map(|d| d.tau()),
     )
+}
+
+/// `quartic` of a `notation = "dimensional"` set: the general model
+/// (eq D2), roots in 1/s, modes in seconds.
+fn run_dimensional(input: &DimensionalFile, json: bool) -> Result<(), Failure> {
+    for w in &input.warnings {
+        crate::output::warn(&format!("warning: {w}"));
+    }
+    let a = input.analysis()?;
+    let finite = a.quartic.is_finite()
+        && a.routh.discriminant.is_finite()
+        && a.roots.iter().all(|z| z.re.is_finite() && z.im.is_finite());
+    if !finite {
+        return Err(input
+            .error_at(
+                input.most_extreme(),
+                "the analysis overflows f64: no result can be written",
+            )
+            .into());
+    }
+    if json {
+        let out = DimensionalJson {
+            file: &input.path,
+            notation: DIMENSIONAL,
+            analysis: &a,
+            warnings: &input.warnings,
+        };
+        print(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&out).unwrap_or_default()
+        ))?;
+    } else {
+        let title = format!(
+            "Stability quartic of {} (notation \"dimensional\": the general longitudinal model, eqs D1–D2)",
+            input.path
+        );
+        print(&crate::page_dimensional::page(&title, &a))?;
+    }
+    Ok(())
+}
+
+/// The `quartic --json` object of a dimensional set.
+#[derive(Serialize)]
+struct DimensionalJson<'a> {
+    file: &'a str,
+    notation: &'a str,
+    #[serde(flatten)]
+    analysis: &'a DimensionalAnalysis,
+    warnings: &'a [String],
 }

@@ -213,5 +213,6 @@ fn reading(cx: &Ctx<'_>, dims: &Dims, st: &StFile, origin: Origin) -> Result<Rea
             .iter()
             .map(|n| format!("{}: {n}", cx.path))
             .collect(),
+        form: crate::args::AVL,
     })
 }

@@ -41,6 +41,7 @@ pub fn finish(
     Ok(DerivativeFile {
         path: cx.path.into(),
         notation: raw.notation.get_ref().clone(),
+        form: r.form,
         derivatives: d,
         report: r.report,
         parameters: r.parameters,

@@ -33,6 +33,7 @@
 pub mod avl;
 pub mod check;
 pub mod dimensional;
+pub mod dimensional_notation;
 pub mod raw;
 pub mod rows;
 pub mod suggest;
@@ -54,6 +55,7 @@ pub use rows::{DERIVATIVE_ROWS, FLIGHT_ROWS};
 pub fn notations() -> Vec<&'static str> {
     let mut v: Vec<&str> = tables::NOTATIONS.to_vec();
     v.push(AVL);
+    v.push(dimensional_notation::DIMENSIONAL);
     v
 }
 
@@ -62,6 +64,9 @@ pub fn notations() -> Vec<&'static str> {
 pub struct DerivativeFile {
     pub path: String,
     pub notation: String,
+    /// The notation the values were read in: `notation`, or `american_cl`
+    /// for a `notation = "american"` file in the C_L/C_D form.
+    pub form: &'static str,
     /// The derivative set in the report's notation.
     pub derivatives: Derivatives,
     /// All report-notation values known (by row), every one finite.
@@ -106,6 +111,9 @@ pub struct Reading {
     pub parameters: Parameters,
     pub dimensional: Option<Dimensional>,
     pub warnings: Vec<String>,
+    /// The notation of `specs/notation.toml` the values were read in (a
+    /// `notation = "american"` file may be in its C_L/C_D form).
+    pub form: &'static str,
 }
 
 /// Read a derivative file from disk (a regular file of at most
@@ -115,9 +123,33 @@ pub fn read(path: &str) -> Result<DerivativeFile, Failure> {
     parse(path, &text)
 }
 
+/// A derivative file in any notation: `notation = "dimensional"` as it is
+/// (the general model, [`dimensional_notation`]), any other in the
+/// report's notation.
+#[derive(Debug, Clone)]
+pub enum AnyFile {
+    Report(Box<DerivativeFile>),
+    Dimensional(Box<dimensional_notation::DimensionalFile>),
+}
+
+/// Read a derivative file of any notation from disk, keeping a dimensional
+/// set dimensional.
+pub fn read_any(path: &str) -> Result<AnyFile, Failure> {
+    let text = crate::files::read_input(Path::new(path))?;
+    if dimensional_notation::is_dimensional(&text) {
+        let file = dimensional_notation::parse(path, &text)?;
+        return Ok(AnyFile::Dimensional(Box::new(file)));
+    }
+    Ok(AnyFile::Report(Box::new(parse(path, &text)?)))
+}
+
 /// Parse a derivative file's text (an AVL file's `.st` output is read from
-/// disk, relative to `path`).
+/// disk, relative to `path`); a `notation = "dimensional"` set in the
+/// report's notation (it needs `[reference]`).
 pub fn parse(path: &str, text: &str) -> Result<DerivativeFile, Failure> {
+    if dimensional_notation::is_dimensional(text) {
+        return Ok(dimensional_notation::parse(path, text)?.to_derivative_file()?);
+    }
     let raw: raw::RawFile = toml::from_str(text).map_err(|e| toml_error(path, text, &e))?;
     let cx = raw::Ctx { path, text };
     let dims = dimensional::Dims::read(&cx, &raw.dimensional)?;

@@ -8,7 +8,7 @@
 
 use super::dimensional::Dims;
 use super::raw::{Ctx, RawFile, Table};
-use super::rows::{DERIVATIVES, FLIGHT, I_B, MU, QUARTIC, X_Q, X_WDOT};
+use super::rows::{C_D, DERIVATIVES, FLIGHT, I_B, MU, QUARTIC, X_Q, X_WDOT};
 use super::suggest::did_you_mean;
 use super::{Origin, Reading, notations};
 use crate::diag::{InputError, num, quote};
@@ -16,11 +16,29 @@ use stability_core::notation::{N_ROWS, Notation, NotationError, Parameters, Valu
 
 /// Rows a notation may leave out, taken as 0, with the reason given in the
 /// warning that says so.
-const OPTIONAL: &[(&str, &[usize], &str)] = &[(
-    "american",
-    &[X_WDOT, X_Q],
-    "Etkin & Reid's tables neglect them",
+const OPTIONAL: &[(&str, &[usize], &str)] = &[
+    (
+        "american",
+        &[X_WDOT, X_Q],
+        "Etkin & Reid's tables neglect them",
+    ),
+    (
+        AMERICAN_CL,
+        &[X_WDOT, X_Q],
+        "the drag's α̇ and q derivatives are usually neglected",
+    ),
+];
+
+/// Rows a notation needs beyond the quartic's, and why.
+const NEEDED: &[(&str, usize, &str)] = &[(
+    AMERICAN_CL,
+    C_D,
+    "the C_L/C_D form needs the trim drag coefficient: X_u = −½ρVS(C_Du + 2C_D), Z_w = −½ρVS(C_Lα + C_D)",
 )];
+
+/// The C_L/C_D form of American notation (`specs/notation.toml`), which a
+/// file with `notation = "american"` may be written in.
+pub const AMERICAN_CL: &str = "american_cl";
 
 /// A notation's values as read, and where each was written.
 struct Own {
@@ -49,6 +67,7 @@ pub fn read(cx: &Ctx<'_>, raw: &RawFile, dims: &Dims) -> Result<Reading, InputEr
             "`st_file` belongs to notation = \"avl\"",
         ));
     }
+    let notation = american_form(cx, raw, notation)?;
     let parameters = parameters(cx, raw, notation)?;
     let mut own = own_values(cx, raw, notation)?;
     let mut warnings = Vec::new();
@@ -71,7 +90,44 @@ pub fn read(cx: &Ctx<'_>, raw: &RawFile, dims: &Dims) -> Result<Reading, InputEr
         parameters,
         dimensional: dims.dimensional(),
         warnings,
+        form: notation.name(),
     })
+}
+
+/// The form a `notation = "american"` file is written in: Etkin's C_x/C_z
+/// form, or the C_L/C_D form ([`AMERICAN_CL`]) when its names are the
+/// C_L/C_D form's; a file mixing the two is an error.
+fn american_form(cx: &Ctx<'_>, raw: &RawFile, notation: Notation) -> Result<Notation, InputError> {
+    let Some(cl) = Notation::named(AMERICAN_CL) else {
+        return Ok(notation);
+    };
+    if notation.name() != "american" {
+        return Ok(notation);
+    }
+    let own = |n: Notation, key: &str| n.names().contains(&Some(key));
+    let mut first: [Option<(&str, std::ops::Range<usize>)>; 2] = [None, None];
+    for t in [&raw.derivatives, &raw.flight].into_iter().flatten() {
+        for k in t.get_ref().keys() {
+            let key = k.get_ref().as_str();
+            for (slot, n, other) in [(0, notation, cl), (1, cl, notation)] {
+                if own(n, key) && !own(other, key) && first[slot].is_none() {
+                    first[slot] = Some((key, k.span()));
+                }
+            }
+        }
+    }
+    match first {
+        [Some((cx_name, _)), Some((cl_name, span))] => Err(cx.err(
+            span,
+            format!("[derivatives] {cl_name}"),
+            format!(
+                "`{cl_name}` is of the C_L/C_D form and `{cx_name}` of the C_x/C_z form of American notation: write the set in one form (the C_L/C_D form: {})",
+                cl.names().iter().flatten().copied().collect::<Vec<_>>().join(", ")
+            ),
+        )),
+        [None, Some(_)] => Ok(cl),
+        _ => Ok(notation),
+    }
 }
 
 /// Whether the notation's conversion uses parameter `k` (found by
@@ -205,6 +261,14 @@ fn unknown(notation: Notation, table: &str, key: &str) -> String {
             other.0
         );
     }
+    if let Some(theirs) = notation_of(key, notation) {
+        return format!(
+            "`{}` is a quantity of {theirs}, not of notation `{}`, whose {what} are: {} (`convert --help` lists the notations)",
+            quote(key),
+            notation.name(),
+            listed.join(", ")
+        );
+    }
     format!(
         "unknown field `{}`{}: the {what} of notation `{}` are: {}",
         quote(key),
@@ -248,6 +312,17 @@ fn required(
             format!("[{table}] {n}"),
             format!("missing field `{n}` (notation `{}`)", notation.name()),
         ));
+    }
+    for &(_, row, why) in NEEDED.iter().filter(|(n, _, _)| *n == notation.name()) {
+        if own.values[row].is_none() {
+            let n = names[row].unwrap_or(tables::ROWS[row]);
+            let span = raw.flight.as_ref().map_or(raw.notation.span(), Table::span);
+            return Err(cx.err(
+                span,
+                format!("[flight] {n}"),
+                format!("missing field `{n}`: {why}"),
+            ));
+        }
     }
     if let (Some((_, _, why)), false) = (optional, defaulted.is_empty()) {
         warnings.push(format!(
@@ -328,4 +403,21 @@ fn from_dimensional(dims: &Dims, report: &mut Values, origins: &mut [Option<Orig
             });
         }
     }
+}
+
+/// The notation (other than `ours`) a name belongs to, in words: a
+/// dimensional set's `X_u`, `U0` …, or another table's name.
+fn notation_of(key: &str, ours: Notation) -> Option<String> {
+    use stability_core::dimensional::DimensionalDerivatives;
+    if DimensionalDerivatives::NAMES.contains(&key) || ["U0", "W0", "theta0"].contains(&key) {
+        return Some(
+            "notation = \"dimensional\" (derivatives per unit mass and inertia, as CR-2144 prints them)"
+                .into(),
+        );
+    }
+    let n = Notation::all().find(|n| *n != ours && n.names().contains(&Some(key)))?;
+    Some(match n.name() {
+        AMERICAN_CL => "notation = \"american\" in its C_L/C_D form".into(),
+        name => format!("notation `{name}`"),
+    })
 }

@@ -17,9 +17,10 @@ pub fn errata_markdown(quartics: &[&QuarticModel], notation: Option<&NotationMod
     let _ = writeln!(s, "# Errata to the report\n");
     let _ = writeln!(
         s,
-        "Found by the build: each printed formula of {} is compared with what the report's own \
-         equations imply, and the build fails unless every disagreement is declared here with its \
-         evidence. Source: {}.\n",
+        "Found by the build: the coefficients each spec ({}) writes in its source's form — the \
+         report's eq (6) as printed, or a hand expansion — are compared term by term with the \
+         exact expansion of the determinant they come from, and the build fails unless every \
+         disagreement is declared here with its evidence. Sources: {}.\n",
         files.join(", "),
         sources.join("; ")
     );

@@ -91,7 +91,7 @@ fn coefficient_section(s: &mut String, model: &QuarticModel, c: &Coefficient) {
     } else {
         " (before the errata)"
     };
-    let _ = writeln!(s, "As printed{before}:\n");
+    let _ = writeln!(s, "As the spec writes it (its source's form){before}:\n");
     let _ = writeln!(s, "```text\n{} = {}\n```\n", c.name, printed_text(c));
     if !c.errata.is_empty() {
         let _ = writeln!(

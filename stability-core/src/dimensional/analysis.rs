@@ -1,0 +1,180 @@
+//! The stability of a dimensional set: the general quartic (eq D2) and its
+//! roots in 1/s, the modes with their times in seconds (eq 8's cycles to
+//! half amplitude are dimensionless), Routh's test (§4), the §8 verdict and
+//! the MIL-F-8785C levels; with a [`Reference`], the set in the report's
+//! notation and its §8–9 quantities (m_θ̇, eq 41).
+
+use super::{Axes, DimensionalModel, Reference, ReportEquivalent, THETA0_MAX};
+use crate::Quartic;
+use crate::analysis::{AnalysisError, LEADING_COEFFICIENT_MIN, agree};
+use crate::criteria::{DampingStandard, FlyingQualities, Routh, ShortPeriodApproximation, Verdict};
+use crate::display::Num;
+use crate::modes::Modes;
+use crate::roots::solve_quartic;
+use num_complex::Complex64;
+
+/// Why a dimensional set has no analysis. `input` is the file's name of
+/// the value at fault (`X_u`, `U0`, `theta0`, `chord`, …).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum DimensionalError {
+    #[error("{input} = {} is not a finite number", Num(*value))]
+    NonFinite { input: &'static str, value: f64 },
+    #[error("{input} must be positive, not {}", Num(*value))]
+    NotPositive { input: &'static str, value: f64 },
+    #[error(
+        "the trim attitude θ₀ = {}° is not within ±89°: the x axis would be (nearly) vertical",
+        Num(theta0.to_degrees())
+    )]
+    Attitude { theta0: f64 },
+    #[error(
+        "W0 = {} in stability axes, where the x axis is along the trim velocity and W₀ = 0 by definition; body-axis data need axes = \"body\"",
+        Num(*w0)
+    )]
+    StabilityW0 { w0: f64 },
+    #[error(
+        "det E = (1 − X_u̇)(1 − Z_ẇ) − X_ẇ·Z_u̇ = {} is within {} of zero: the equations have no solution for u̇ and ẇ",
+        Num(*a), Num(LEADING_COEFFICIENT_MIN)
+    )]
+    Singular { a: f64 },
+    #[error(
+        "the quartic's coefficient {coefficient} overflows f64 (its terms exceed {}): the derivatives are too large",
+        Num(f64::MAX)
+    )]
+    Overflow { coefficient: &'static str },
+    #[error(transparent)]
+    Analysis(#[from] AnalysisError),
+}
+
+impl DimensionalModel {
+    /// Every value finite, U₀ and g positive, |θ₀| < 89°, W₀ = 0 in
+    /// stability axes.
+    pub fn check(&self) -> Result<(), DimensionalError> {
+        let names = super::DimensionalDerivatives::NAMES;
+        let t = &self.trim;
+        let values = self.derivatives.values().into_iter().zip(names);
+        let trim = [(t.u0, "U0"), (t.w0, "W0"), (t.theta0, "theta0"), (t.g, "g")];
+        for (value, input) in values.chain(trim) {
+            if !value.is_finite() {
+                return Err(DimensionalError::NonFinite { input, value });
+            }
+        }
+        for (value, input) in [(t.u0, "U0"), (t.g, "g")] {
+            if value <= 0.0 {
+                return Err(DimensionalError::NotPositive { input, value });
+            }
+        }
+        if t.theta0.abs() > THETA0_MAX {
+            return Err(DimensionalError::Attitude { theta0: t.theta0 });
+        }
+        if self.axes == Axes::Stability && t.w0 != 0.0 {
+            return Err(DimensionalError::StabilityW0 { w0: t.w0 });
+        }
+        Ok(())
+    }
+}
+
+impl Reference {
+    /// c̄, μ₁ and i_B positive and finite.
+    pub fn check(&self) -> Result<(), DimensionalError> {
+        for (value, input) in [(self.chord, "chord"), (self.mu1, "mu1"), (self.i_b, "i_b")] {
+            if !value.is_finite() {
+                return Err(DimensionalError::NonFinite { input, value });
+            }
+            if value <= 0.0 {
+                return Err(DimensionalError::NotPositive { input, value });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The set in the report's notation and the report's §8–9 quantities of it
+/// (eq 41's m_θ̇ and its limit, the short-period approximation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InReportNotation {
+    pub equivalent: ReportEquivalent,
+    pub reference: Reference,
+    pub short_period_approximation: ShortPeriodApproximation,
+    pub damping_standard: DampingStandard,
+}
+
+/// The stability of a dimensional set; rates in 1/s, times in s.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DimensionalAnalysis {
+    /// The set as given.
+    pub model: DimensionalModel,
+    /// The same set in stability axes (the model itself if it is in them).
+    pub stability: DimensionalModel,
+    /// det(λE − A) = Aλ⁴ + Bλ³ + Cλ² + Dλ + E (eq D2), λ in 1/s.
+    pub quartic: Quartic,
+    pub routh: Routh,
+    /// The four roots (1/s), conjugates adjacent, fastest first.
+    pub roots: [Complex64; 4],
+    /// The modes: `re`, `im`, `natural_frequency` in 1/s, `period`,
+    /// `time_to_half`, `time_to_double` in s; `frequency_parameter`
+    /// ω̄ = s·c̄/V when a [`Reference`] gives c̄.
+    pub modes: Modes,
+    /// The §8 one-cycle standard applied to the short period.
+    pub verdict: Verdict,
+    /// The MIL-F-8785C levels (times in s).
+    pub flying_qualities: FlyingQualities,
+    /// With a [`Reference`]: the set in the report's notation.
+    pub report: Option<InReportNotation>,
+}
+
+impl DimensionalAnalysis {
+    /// Analyse a set, with the reference quantities of the report's
+    /// notation when known.
+    pub fn of(
+        model: &DimensionalModel,
+        reference: Option<&Reference>,
+    ) -> Result<DimensionalAnalysis, DimensionalError> {
+        model.check()?;
+        if let Some(r) = reference {
+            r.check()?;
+        }
+        let quartic = model.quartic();
+        if let Some(k) = quartic.to_array().iter().position(|c| !c.is_finite()) {
+            return Err(DimensionalError::Overflow {
+                coefficient: super::DescriptorSystem::QUARTIC_COEFFICIENTS[k],
+            });
+        }
+        if quartic.a.abs() <= LEADING_COEFFICIENT_MIN {
+            return Err(DimensionalError::Singular { a: quartic.a });
+        }
+        let roots = solve_quartic(quartic.to_array()).map_err(AnalysisError::from)?;
+        let routh = Routh::of(&quartic);
+        agree(&routh, &roots)?;
+        let stability = model.in_stability_axes();
+        let report = reference.map(|r| in_report_notation(model, r));
+        // ω̄ = s·c̄/V: Modes divides s by its "μ₁", here V/c̄.
+        let per_chord = reference.map_or(0.0, |r| stability.trim.u0 / r.chord);
+        let modes = Modes::identify(&roots, per_chord);
+        Ok(DimensionalAnalysis {
+            model: *model,
+            stability,
+            quartic,
+            routh,
+            roots,
+            verdict: Verdict::of(&modes),
+            flying_qualities: FlyingQualities::of(&modes, Some(1.0)),
+            modes,
+            report,
+        })
+    }
+
+    /// τ (s) of the report's notation, when a reference gives it.
+    pub fn tau(&self) -> Option<f64> {
+        self.report.map(|r| r.equivalent.tau)
+    }
+}
+
+fn in_report_notation(model: &DimensionalModel, r: &Reference) -> InReportNotation {
+    let equivalent = model.to_report(r);
+    InReportNotation {
+        equivalent,
+        reference: *r,
+        short_period_approximation: ShortPeriodApproximation::of(&equivalent.derivatives),
+        damping_standard: DampingStandard::of(&equivalent.derivatives),
+    }
+}
