@@ -39,8 +39,16 @@ pub struct Overrides {
 /// range (`analyze`'s and `sweep`'s).
 pub fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
     let mut cfg = config::read(path)?;
+    apply(&mut cfg, o)?;
+    Ok(cfg)
+}
+
+/// Applies the overrides to a config read, each within its range (the
+/// Python package's `analyze(…, mach=…)` too).
+pub fn apply(cfg: &mut config::Config, o: &Overrides) -> Result<(), Failure> {
+    let path = cfg.path.clone();
     let bad =
-        |flag: &str, m: String| Failure::Input(InputError::file(path, format!("{flag}: {m}")));
+        |flag: &str, m: String| Failure::Input(InputError::file(&path, format!("{flag}: {m}")));
     if let Some(d) = o.damping {
         cfg.case.damping = d;
         cfg.overridden_by("[model] damping", format!("--damping {}", d.name()));
@@ -68,7 +76,7 @@ pub fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> 
         cfg.case.iterate_frequency = false;
         cfg.overridden_by("[model] omega_bar", format!("--omega-bar {}", num(w)));
     }
-    Ok(cfg)
+    Ok(())
 }
 
 /// Why `--omega-bar` does not apply to `model`.
@@ -94,8 +102,9 @@ pub struct Results {
 }
 
 /// The design point evaluated, with its physical flight condition and the
-/// engineer's outputs.
-fn results(cfg: &config::Config, o: &Options) -> Result<Results, Failure> {
+/// engineer's outputs, every number finite, or the error at the field it
+/// arises from (what `analyze` prints; the Python package raises the same).
+pub fn results(cfg: &config::Config, o: &Options) -> Result<Results, Failure> {
     let flight = match &cfg.physical {
         Some(p) => {
             let point = p

@@ -103,7 +103,7 @@ fn table(input: &DerivativeFile, from: &str, to: Notation, json_out: bool) -> Re
 /// The values in notation `to`, every one finite (the library refuses a
 /// conversion that overflows; the error is placed at the value it came
 /// from).
-fn converted(input: &DerivativeFile, to: Notation) -> Result<Values, InputError> {
+pub fn converted(input: &DerivativeFile, to: Notation) -> Result<Values, InputError> {
     to.from_report(&input.report, &input.parameters)
         .map_err(|e| {
             let (notation, quantity) = match &e {
@@ -135,7 +135,7 @@ fn converted(input: &DerivativeFile, to: Notation) -> Result<Values, InputError>
 /// notation by its names (null where the input does not determine one),
 /// the report's values, and the parameters.
 #[derive(Serialize)]
-struct ConvertJson<'a> {
+pub struct ConvertJson<'a> {
     from: &'a str,
     to: &'a str,
     values: BTreeMap<&'static str, Option<f64>>,
@@ -143,7 +143,7 @@ struct ConvertJson<'a> {
     parameters: BTreeMap<&'static str, f64>,
 }
 
-fn to_json<'a>(
+pub fn to_json<'a>(
     input: &DerivativeFile,
     from: &'a str,
     to: Notation,

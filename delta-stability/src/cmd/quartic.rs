@@ -6,6 +6,7 @@
 //! and the state-space model, written on request.
 
 use crate::Failure;
+use crate::diag::InputError;
 use crate::input::dimensional_notation::{self, DIMENSIONAL, DimensionalFile, is_dimensional};
 use crate::input::{self, DerivativeFile, rows};
 use crate::output::print;
@@ -40,8 +41,7 @@ pub fn run(file: &str, o: &Options) -> Result<(), Failure> {
     for w in &input.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
-    let analysis = Analysis::of(&input.derivatives)
-        .map_err(|e| input.error_at(blame(&input, &e), e.to_string()))?;
+    let analysis = analysis_of(&input)?;
     let tau = input.dimensional.map(|d| d.tau());
     let engineering = Engineering::of_report(
         &input.derivatives,
@@ -82,6 +82,22 @@ pub fn run(file: &str, o: &Options) -> Result<(), Failure> {
         print(&table(&input, &analysis, &engineering))?;
     }
     Ok(())
+}
+
+/// The analysis of a derivative file, every number of it finite, or the
+/// error at the input it arises from (what `quartic` prints; the Python
+/// package raises the same).
+pub fn analysis_of(input: &DerivativeFile) -> Result<Analysis, InputError> {
+    let analysis = Analysis::of(&input.derivatives)
+        .map_err(|e| input.error_at(blame(input, &e), e.to_string()))?;
+    if !is_finite(&analysis) {
+        let largest = most_extreme_input(input);
+        return Err(input.error_at(
+            largest,
+            "the analysis overflows f64: no result can be written",
+        ));
+    }
+    Ok(analysis)
 }
 
 /// Whether every number the analysis would print is finite (absent ones,

@@ -33,10 +33,10 @@ pub struct Options {
 }
 
 /// A computed response with the report's closed form beside it.
-struct Computed {
-    samples: Vec<Sample>,
+pub struct Computed {
+    pub samples: Vec<Sample>,
     /// Eq (45)'s ŵ at each sample, for a step.
-    eq45: Option<Vec<f64>>,
+    pub eq45: Option<Vec<f64>>,
 }
 
 pub fn run(o: &Options) -> Result<(), Failure> {
@@ -78,8 +78,9 @@ pub fn run(o: &Options) -> Result<(), Failure> {
     Ok(())
 }
 
-/// The response over the whole span asked for, or why it cannot be had.
-fn respond(o: &Options, file: &DerivativeFile) -> Result<Computed, InputError> {
+/// The response over the whole span asked for, or why it cannot be had
+/// (`csv` and `svg` of the options are not used).
+pub fn respond(o: &Options, file: &DerivativeFile) -> Result<Computed, InputError> {
     let bad = |m: String| InputError::file(&o.file, m);
     let input = match o.input {
         ResponseInput::Step => Input::Step {

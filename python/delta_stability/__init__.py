@@ -1,0 +1,213 @@
+"""Longitudinal (pitch-plane) dynamic stability of aircraft after W.B. McCarter,
+*Note on the longitudinal stability characteristics and damping in pitch of
+delta wings at subsonic, transonic and supersonic speeds* (College of
+Aeronautics, Cranfield, 1953): the Rust library ``stability-core`` with numpy
+arrays in and out. Equation numbers are the note's.
+
+- :func:`quartic` — a derivative set (any notation) → the stability quartic
+  (eqs 4–6), its roots and modes (eqs 7–8), Routh's test (§4), the §8
+  criteria;
+- :func:`analyze` — a planform at a flight condition → coefficients (§6),
+  derivatives (§5–7), and the same;
+- :func:`sweep` — a Cartesian grid of design points, in parallel, as columns;
+- :func:`batch_roots` — the quartic solver on an (N, 5) array;
+- :func:`response` (§11), :func:`convert` (the appendix's notations),
+  :func:`sensitivity` (§10), :func:`damping_derivatives` (§7's theories),
+  :func:`lifting_surface` (the doublet-lattice method).
+
+Inputs are read by the command line's own readers: a path to a TOML file or
+a dict of the same shape, and errors are :class:`InputError` (a
+``ValueError``) with the command line's message: file, line and field.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Optional
+
+import numpy as _np
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+
+    from ._native import Axis, ConfigSource
+
+from . import _native
+from ._native import (
+    Analysis,
+    Derivatives,
+    InputError,
+    Mode,
+    Quartic,
+    __version__,
+    analyze,
+    convert,
+    damping_derivatives,
+    damping_models,
+    lifting_surface,
+    notations,
+    quartic,
+    response,
+    sensitivity,
+    theories,
+)
+
+__all__ = [
+    "Analysis",
+    "Derivatives",
+    "InputError",
+    "Mode",
+    "Quartic",
+    "SweepResult",
+    "analyze",
+    "batch_roots",
+    "convert",
+    "damping_derivatives",
+    "damping_models",
+    "lifting_surface",
+    "notations",
+    "quartic",
+    "response",
+    "sensitivity",
+    "sweep",
+    "theories",
+]
+
+#: The grid's columns, in order (the last varies fastest).
+GRID_COLUMNS = ("mach", "sweep_deg", "cg", "mu1", "i_b")
+#: The result columns of every design point, as in ``delta-stability sweep``'s
+#: CSV.
+RESULT_COLUMNS = (
+    "stable",
+    "verdict",
+    "sp_re",
+    "sp_im",
+    "sp_cycles_to_half",
+    "sp_damping_ratio",
+    "sp_omega_bar",
+    "ph_re",
+    "ph_im",
+    "m_thetadot",
+    "delta_m_thetadot",
+)
+
+
+class SweepResult(dict):
+    """The columns of a sweep, one numpy array each (a ``dict``), named as
+    ``delta-stability sweep``'s CSV: the grid values ``mach``, ``sweep_deg``,
+    ``cg``, ``mu1``, ``i_b``; ``stable`` (Routh, §4); ``verdict`` (the §8
+    one-cycle standard: ``meets``, ``fails``, ``divergent``, or ``""`` where
+    the point has no result); the short period's root ``sp_re``, ``sp_im``
+    (1/τ), ``sp_cycles_to_half`` (eq 8), ``sp_damping_ratio``,
+    ``sp_omega_bar`` (ω̄ = s/μ₁, §9); the phugoid's ``ph_re``, ``ph_im``;
+    ``m_thetadot`` and ``delta_m_thetadot`` (eq 41's margin); with
+    ``derivatives=True`` the fifteen quartic inputs; and ``error`` (``""`` or
+    why the point has no result, e.g. outside a theory's validity). Numbers
+    that are undefined (a short period that does not oscillate) are NaN.
+
+    ``shape`` is the grid's shape (mach, sweep, cg, mu1, i_b):
+    ``r["sp_cycles_to_half"].reshape(r.shape)`` indexes by axis.
+    """
+
+    shape: "tuple[int, ...]"
+
+    def to_pandas(self):  # -> pandas.DataFrame
+        """The columns as a ``pandas.DataFrame`` (needs pandas)."""
+        try:
+            import pandas as pd
+        except ImportError as e:  # pragma: no cover - depends on the environment
+            raise ImportError("SweepResult.to_pandas needs pandas: pip install pandas") from e
+        return pd.DataFrame({k: v for k, v in self.items()})
+
+    def __repr__(self):
+        n = len(self["mach"]) if "mach" in self else 0
+        return f"SweepResult({n} points, grid {self.shape}, columns {list(self)})"
+
+
+def sweep(
+    config: ConfigSource,
+    *,
+    mach: Axis = None,
+    sweep: Axis = None,
+    cg: Axis = None,
+    mu1: Axis = None,
+    i_b: Axis = None,
+    damping: Optional[str] = None,
+    derivatives: bool = False,
+) -> SweepResult:
+    """Design points over a Cartesian grid of Mach number, leading-edge sweep
+    (degrees), c.g. position h, relative density μ₁ and pitching inertia i_B:
+    what ``delta-stability sweep`` computes, evaluated in Rust in parallel with
+    the GIL released, and returned as columns of numpy arrays
+    (:class:`SweepResult`, with ``to_pandas()``), no CSV in between.
+
+    ``config`` is a path to a TOML file or a dict of the same shape (see
+    :func:`analyze`): the base design point. Each axis is None (the config's
+    value), a number, a sequence or 1-D array, or the command line's
+    ``"A:B:STEP"``. ``damping`` overrides the config's damping model
+    (:func:`damping_models`). Each point goes planform → coefficients (§6) →
+    derivatives (§5–7) → quartic (eqs 4–6) → roots → modes (eq 8) → Routh (§4)
+    → the §8 standard and eq (41)'s margin. Points are in grid order, the last
+    axis (i_B) varying fastest.
+
+    Raises :class:`InputError` for a bad config or axis value; a point outside
+    a theory's validity is not an error but has its ``error`` column set.
+    """
+    raw = _native.sweep_columns(
+        config,
+        mach=mach,
+        sweep=sweep,
+        cg=cg,
+        mu1=mu1,
+        i_b=i_b,
+        damping=damping,
+        derivatives=derivatives,
+    )
+    verdicts = _np.array(list(raw.pop("verdicts")) + [""])
+    messages = _np.array(list(raw.pop("messages")) + [""], dtype=object)
+    verdict = verdicts[raw.pop("verdict_code")]
+    error = messages[raw.pop("error_code")]
+    out = SweepResult()
+    for k in GRID_COLUMNS:
+        out[k] = raw.pop(k)
+    out["stable"] = raw.pop("stable")
+    out["verdict"] = verdict
+    for k in RESULT_COLUMNS[2:]:
+        out[k] = raw.pop(k)
+    out.shape = tuple(raw.pop("shape"))
+    out.update(raw)  # the derivatives, when asked for
+    out["error"] = error
+    return out
+
+
+def _argument_error(field: str, message: str) -> InputError:
+    """An InputError about an argument, as the native functions raise them."""
+    e = InputError(f"<arguments>: {field}: {message}")
+    e.file, e.line, e.column, e.field, e.message = "<arguments>", 0, 0, field, message
+    return e
+
+
+def batch_roots(coefficients: npt.ArrayLike, *, errors: str = "raise") -> npt.NDArray[np.complex128]:
+    """The four roots of each quartic Aλ⁴ + Bλ³ + Cλ² + Dλ + E (eq 5): for an
+    array of shape (..., 5) of [A, B, C, D, E], a complex array of shape
+    (..., 4), each row by descending modulus with a complex pair adjacent
+    (positive imaginary part first). The solver of ``delta-stability quartic``
+    (exact power-of-two scaling; Ferrari's resolvent cubic polished by Newton,
+    or Aberth–Ehrlich where the coefficients span too many decades; every
+    root's backward error checked), in parallel with the GIL released.
+
+    ``errors="raise"``: :class:`InputError` naming the first row without roots
+    (A = 0, a coefficient not finite, roots beyond float64's range);
+    ``errors="nan"``: NaN in such rows.
+    """
+    if errors not in ("raise", "nan"):
+        raise ValueError(f"errors must be 'raise' or 'nan', not {errors!r}")
+    c = _np.asarray(coefficients, dtype=_np.float64)
+    if c.ndim == 0 or c.shape[-1] != 5:
+        raise _argument_error(
+            "coefficients",
+            f"expected an array of shape (..., 5) of [A, B, C, D, E], not {c.shape}",
+        )
+    lead = c.shape[:-1]
+    roots = _native.batch_roots(_np.ascontiguousarray(c.reshape(-1, 5)), nan=(errors == "nan"))
+    return roots.reshape(lead + (4,))

@@ -1,0 +1,249 @@
+"""Type stubs of the extension module ``delta_stability._native`` (Rust,
+PyO3). The docstrings at run time are the Rust functions' own; these stubs
+give the signatures and, briefly, what each returns. Equation numbers are
+McCarter (1953)'s."""
+
+from __future__ import annotations
+
+import os
+from typing import Any, ClassVar, Mapping, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+PathLike = Union[str, os.PathLike]
+#: A derivative set: a path to a TOML file, a dict of the same shape (or a
+#: flat one, quantities by name beside ``notation``), or a Derivatives.
+DerivativeSource = Union[PathLike, Mapping[str, Any], "Derivatives"]
+#: A design-point config: a path to a TOML file, or a dict of the same shape.
+ConfigSource = Union[PathLike, Mapping[str, Any]]
+Axis = Union[None, float, Sequence[float], npt.ArrayLike, str]
+
+__version__: str
+
+class InputError(ValueError):
+    """Bad input, with the command line's message (``file:line:column:
+    field: message`` and the offending line)."""
+
+    file: str
+    line: int
+    column: int
+    field: str
+    message: str
+
+class Derivatives:
+    """A derivative set in the report's notation (§3, eqs 2–4): x_u x_w
+    x_wdot x_q z_u z_w z_wdot z_q m_u m_w m_wdot m_q (eqs 9–20), c_l
+    (eq 24), mu1 = m/(½ρSc̄), i_b = B/(mc̄²). Frozen."""
+
+    NAMES: ClassVar[list[str]]
+    x_u: float
+    x_w: float
+    x_wdot: float
+    x_q: float
+    z_u: float
+    z_w: float
+    z_wdot: float
+    z_q: float
+    m_u: float
+    m_w: float
+    m_wdot: float
+    m_q: float
+    c_l: float
+    mu1: float
+    i_b: float
+    def __init__(
+        self,
+        *,
+        x_u: float,
+        x_w: float,
+        x_wdot: float,
+        x_q: float,
+        z_u: float,
+        z_w: float,
+        z_wdot: float,
+        z_q: float,
+        m_u: float,
+        m_w: float,
+        m_wdot: float,
+        m_q: float,
+        c_l: float,
+        mu1: float,
+        i_b: float,
+    ) -> None: ...
+    @staticmethod
+    def read(
+        source: Optional[DerivativeSource] = None, /, *, notation: Optional[str] = None, **quantities: float
+    ) -> Derivatives:
+        """Read a derivative set in any notation (converted to the report's)."""
+    @staticmethod
+    def from_array(values: Sequence[float]) -> Derivatives: ...
+    def to_array(self) -> npt.NDArray[np.float64]: ...
+    def to_dict(self) -> dict[str, float]: ...
+    def replace(self, **quantities: float) -> Derivatives: ...
+    def quartic_coefficients(self) -> npt.NDArray[np.float64]:
+        """[A, B, C, D, E] of eq (5), the exact expansion of eq (4)."""
+
+class Mode:
+    """One mode (§4, eq 8), in units of τ; None where undefined."""
+
+    name: str
+    origin: Optional[str]
+    re: float
+    im: float
+    root: complex
+    period: Optional[float]
+    time_to_half: Optional[float]
+    time_to_double: Optional[float]
+    cycles_to_half: Optional[float]
+    cycles_to_double: Optional[float]
+    damping_ratio: Optional[float]
+    natural_frequency: float
+    frequency_parameter: Optional[float]
+    tau_s: Optional[float]
+    period_s: Optional[float]
+    time_to_half_s: Optional[float]
+    time_to_double_s: Optional[float]
+    def to_dict(self) -> dict[str, Any]: ...
+
+class Quartic:
+    """A derivative set's stability quartic (eqs 4–6), roots, modes (eq 8),
+    Routh (§4) and criteria (§8): ``delta-stability quartic``'s result."""
+
+    coefficients: npt.NDArray[np.float64]
+    routh: dict[str, Any]
+    stable: bool
+    roots: npt.NDArray[np.complex128]
+    modes: list[Mode]
+    short_period: Optional[Mode]
+    phugoid: Optional[Mode]
+    verdict: str
+    criteria: dict[str, Any]
+    classical: Optional[dict[str, Any]]
+    warnings: list[str]
+    derivatives: Derivatives
+    tau_s: Optional[float]
+    notation: str
+    def to_dict(self) -> dict[str, Any]:
+        """As ``delta-stability quartic FILE --json``."""
+
+class Analysis:
+    """A design point's analysis: ``delta-stability analyze``'s result."""
+
+    derivatives: Derivatives
+    coefficients: npt.NDArray[np.float64]
+    routh: dict[str, Any]
+    stable: bool
+    roots: npt.NDArray[np.complex128]
+    modes: list[Mode]
+    short_period: Optional[Mode]
+    phugoid: Optional[Mode]
+    verdict: str
+    criteria: dict[str, Any]
+    classical: Optional[dict[str, Any]]
+    aerodynamics: dict[str, Any]
+    damping: dict[str, Any]
+    case: dict[str, Any]
+    warnings: list[str]
+    def to_dict(self) -> dict[str, Any]:
+        """As ``delta-stability analyze CONFIG --json``."""
+
+def quartic(
+    source: Optional[DerivativeSource] = None, /, *, notation: Optional[str] = None, **quantities: Any
+) -> Quartic:
+    """The stability quartic (eqs 4–6) of a derivative set in any notation."""
+
+def analyze(
+    config: ConfigSource,
+    /,
+    *,
+    mach: Optional[float] = None,
+    cg: Optional[float] = None,
+    damping: Optional[str] = None,
+) -> Analysis:
+    """A design point through §5–8: ``delta-stability analyze``."""
+
+def sweep_columns(
+    config: ConfigSource,
+    *,
+    mach: Axis = None,
+    sweep: Axis = None,
+    cg: Axis = None,
+    mu1: Axis = None,
+    i_b: Axis = None,
+    damping: Optional[str] = None,
+    derivatives: bool = False,
+) -> dict[str, Any]:
+    """The raw columns of ``delta_stability.sweep``."""
+
+def batch_roots(
+    coefficients: npt.NDArray[np.float64], *, nan: bool = False
+) -> npt.NDArray[np.complex128]:
+    """The roots of an (N, 5) array of quartics: (N, 4) complex."""
+
+def response(
+    source: Optional[DerivativeSource] = None,
+    /,
+    *,
+    until: float,
+    input: str = "step",
+    steps: int = 400,
+    m0: float = 1.0,
+    w0: float = 0.01,
+    neglect_zq_zwdot: bool = False,
+    neglect_u: bool = False,
+    notation: Optional[str] = None,
+    **quantities: Any,
+) -> dict[str, npt.NDArray[np.float64]]:
+    """The response of §11 (exact; eqs 44–45 beside it for a step)."""
+
+def convert(
+    source: Optional[DerivativeSource] = None,
+    /,
+    *,
+    to: str,
+    notation: Optional[str] = None,
+    **quantities: Any,
+) -> dict[str, Any]:
+    """A derivative set in another notation (the appendix): ``convert --json``."""
+
+def notations() -> list[str]:
+    """The notations a derivative set may be written in."""
+
+def sensitivity(
+    source: Optional[DerivativeSource] = None,
+    /,
+    *,
+    mode: str = "short_period",
+    notation: Optional[str] = None,
+    **quantities: Any,
+) -> dict[str, Any]:
+    """dλ/dp of a mode for each quartic input, ranked (§10)."""
+
+def damping_derivatives(
+    theory: str,
+    *,
+    sweep: float,
+    mach: float,
+    cg: float = 0.25,
+    taper: float = 0.0,
+    omega_bar: Optional[float] = None,
+) -> dict[str, Any]:
+    """The damping derivatives of a §7 theory (eqs 32–40)."""
+
+def theories() -> list[str]:
+    """The §7 damping theories."""
+
+def damping_models() -> list[str]:
+    """``faired`` and the theories."""
+
+def lifting_surface(
+    *,
+    sweep: float,
+    mach: float,
+    taper: float = 0.0,
+    omega_bar: float = 0.0,
+    cg: Union[None, float, Sequence[float], npt.ArrayLike] = None,
+    c_d: float = 0.0,
+) -> dict[str, Any]:
+    """The doublet-lattice lifting surface's derivatives at each c.g."""

@@ -1,0 +1,717 @@
+//! `Derivatives`, `quartic()` → `Quartic` and `analyze()` → `Analysis`:
+//! a derivative set's stability (eqs 4–8, Routh §4, the §8 standard), and
+//! a design point's (§5–7 then the same). Their `to_dict()` is the command
+//! line's `quartic --json` and `analyze --json`, serialized from the same
+//! library views.
+
+use crate::errors::{argument, failure, input_error};
+use crate::guard;
+use crate::inputs::{self, derivative_file};
+use crate::json::{to_py, view_to_py};
+use delta_stability::cmd;
+use delta_stability::config::Config;
+use delta_stability::input::DerivativeFile;
+use numpy::{Complex64, IntoPyArray, PyArray1};
+use pyo3::exceptions::{PyAttributeError, PyTypeError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use serde_json::Value;
+use stability_core::case::{CaseResult, DampingModel};
+use stability_core::modes::Mode as CoreMode;
+
+/// A longitudinal derivative set in the report's notation (§3, eqs 2–4):
+/// the twelve non-dimensional derivatives and the three flight parameters
+/// of the stability quartic.
+///
+/// Forces are made non-dimensional on ½ρSV (velocity derivatives x_u, x_w,
+/// z_u, z_w: eqs 9–12), ½ρSc̄ (acceleration derivatives x_ẇ, z_ẇ, m_ẇ:
+/// eqs 18–20) and ½ρSVc̄ (rate derivatives x_q, z_q, m_q: eqs 15–17);
+/// moments carry a further c̄ (m_u, m_w: eqs 13–14). c_l is the lift
+/// coefficient of the undisturbed flight (eq 24), mu1 the relative density
+/// μ₁ = m/(½ρSc̄) and i_b the pitching inertia i_B = B/(mc̄²). Time is in
+/// units of τ = m/(½ρSV).
+///
+/// Derivatives(x_u=…, x_w=…, …, i_b=…) takes all fifteen by these names
+/// (`Derivatives.NAMES`); `Derivatives.read(source, notation=…)` reads
+/// them from a file, a dict or keyword arguments in any notation. Frozen:
+/// `d.replace(m_q=-1.0)` makes a changed copy.
+#[pyclass(frozen, eq, module = "delta_stability")]
+#[derive(Clone, PartialEq)]
+pub struct Derivatives(pub stability_core::Derivatives);
+
+impl Derivatives {
+    /// As a derivative file's table in the report's notation.
+    pub fn report_table(&self) -> toml::Table {
+        let names = stability_core::Derivatives::QUARTIC_INPUTS;
+        let values = self.0.quartic_input_values();
+        let (mut d, mut f) = (toml::Table::new(), toml::Table::new());
+        for (k, (n, v)) in names.iter().zip(values).enumerate() {
+            let t = if k < 12 { &mut d } else { &mut f };
+            t.insert(n.to_string(), toml::Value::Float(v));
+        }
+        let mut t = toml::Table::new();
+        t.insert("notation".into(), toml::Value::String("report".into()));
+        t.insert("derivatives".into(), toml::Value::Table(d));
+        t.insert("flight".into(), toml::Value::Table(f));
+        t
+    }
+
+    fn from_values(values: &[Option<f64>; 15]) -> Result<Self, Vec<&'static str>> {
+        let names = stability_core::Derivatives::QUARTIC_INPUTS;
+        let missing: Vec<&str> = names
+            .iter()
+            .zip(values)
+            .filter(|(_, v)| v.is_none())
+            .map(|(n, _)| *n)
+            .collect();
+        if !missing.is_empty() {
+            return Err(missing);
+        }
+        let v = values.map(|x| x.unwrap_or(0.0));
+        Ok(Derivatives(stability_core::Derivatives {
+            x_u: v[0],
+            x_w: v[1],
+            x_wdot: v[2],
+            x_q: v[3],
+            z_u: v[4],
+            z_w: v[5],
+            z_wdot: v[6],
+            z_q: v[7],
+            m_u: v[8],
+            m_w: v[9],
+            m_wdot: v[10],
+            m_q: v[11],
+            c_l: v[12],
+            mu1: v[13],
+            i_b: v[14],
+        }))
+    }
+
+    /// From keyword arguments by the report's names, each one required.
+    fn from_kwargs(kwargs: Option<&Bound<'_, PyDict>>, base: Option<&Self>) -> PyResult<Self> {
+        let names = stability_core::Derivatives::QUARTIC_INPUTS;
+        let mut values: [Option<f64>; 15] = match base {
+            Some(b) => b.0.quartic_input_values().map(Some),
+            None => [None; 15],
+        };
+        if let Some(k) = kwargs {
+            for (key, v) in k.iter() {
+                let key: String = key.extract()?;
+                let Some(i) = names.iter().position(|n| *n == key) else {
+                    return Err(PyTypeError::new_err(format!(
+                        "Derivatives has no quantity `{key}`; its quantities are {} (report notation; Derivatives.read takes the other notations)",
+                        names.join(", ")
+                    )));
+                };
+                values[i] = Some(
+                    v.extract::<f64>()
+                        .map_err(|_| PyTypeError::new_err(format!("{key} must be a number")))?,
+                );
+            }
+        }
+        Self::from_values(&values).map_err(|missing| {
+            PyTypeError::new_err(format!(
+                "Derivatives needs all fifteen quantities; missing: {}",
+                missing.join(", ")
+            ))
+        })
+    }
+}
+
+#[pymethods]
+impl Derivatives {
+    /// The fifteen names, in the order of `to_array()`: x_u x_w x_wdot x_q
+    /// z_u z_w z_wdot z_q m_u m_w m_wdot m_q c_l mu1 i_b.
+    #[classattr]
+    const NAMES: [&'static str; 15] = stability_core::Derivatives::QUARTIC_INPUTS;
+
+    #[new]
+    #[pyo3(signature = (**kwargs))]
+    fn new(kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+        Self::from_kwargs(kwargs, None)
+    }
+
+    /// A derivative set read as `delta-stability quartic` reads it: from a
+    /// path to a TOML file, a dict of the same shape (or flat: quantities
+    /// by name beside `notation`), or keyword arguments, in any notation
+    /// (`notation="american"`, …; `notations()` lists them), converted
+    /// into the report's (appendix). Raises InputError with the command
+    /// line's message.
+    #[staticmethod]
+    #[pyo3(signature = (source=None, /, *, notation=None, **kwargs))]
+    fn read(
+        source: Option<&Bound<'_, PyAny>>,
+        notation: Option<&str>,
+        kwargs: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Self> {
+        guard(|| {
+            Ok(Derivatives(
+                derivative_file(source, notation, kwargs)?.derivatives,
+            ))
+        })
+    }
+
+    /// From an array of the fifteen values in the order of `NAMES`.
+    #[staticmethod]
+    fn from_array(values: Vec<f64>) -> PyResult<Self> {
+        if values.len() != 15 {
+            return Err(argument(
+                "values",
+                format!(
+                    "expected the 15 values of Derivatives.NAMES, not {}",
+                    values.len()
+                ),
+            ));
+        }
+        let v: [Option<f64>; 15] = std::array::from_fn(|i| Some(values[i]));
+        Self::from_values(&v).map_err(|_| argument("values", "missing values"))
+    }
+
+    /// The fifteen values in the order of `NAMES`, as a numpy array.
+    fn to_array<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.0.quartic_input_values().to_vec().into_pyarray(py)
+    }
+
+    /// The fifteen values by name.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        view_to_py(py, &self.0)
+    }
+
+    /// A copy with the given quantities changed.
+    #[pyo3(signature = (**kwargs))]
+    fn replace(&self, kwargs: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+        Self::from_kwargs(kwargs, Some(self))
+    }
+
+    /// The coefficients [A, B, C, D, E] of the stability quartic, eq (5):
+    /// the exact expansion of eq (4)'s determinant (eq 6 with the errata of
+    /// docs/errata.md applied).
+    fn quartic_coefficients<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.0.quartic_coefficients().to_vec().into_pyarray(py)
+    }
+
+    fn __getattr__(&self, name: &str) -> PyResult<f64> {
+        let names = stability_core::Derivatives::QUARTIC_INPUTS;
+        match names.iter().position(|n| *n == name) {
+            Some(i) => Ok(self.0.quartic_input_values()[i]),
+            None => Err(PyAttributeError::new_err(format!(
+                "Derivatives has no attribute `{name}`"
+            ))),
+        }
+    }
+
+    fn __dir__(&self) -> Vec<&'static str> {
+        let mut v = stability_core::Derivatives::QUARTIC_INPUTS.to_vec();
+        v.extend([
+            "NAMES",
+            "read",
+            "from_array",
+            "to_array",
+            "to_dict",
+            "replace",
+            "quartic_coefficients",
+        ]);
+        v
+    }
+
+    fn __repr__(&self) -> String {
+        let names = stability_core::Derivatives::QUARTIC_INPUTS;
+        let values = self.0.quartic_input_values();
+        let parts: Vec<String> = names
+            .iter()
+            .zip(values)
+            .map(|(n, v)| format!("{n}={v:?}"))
+            .collect();
+        format!("Derivatives({})", parts.join(", "))
+    }
+}
+
+/// One mode of motion (§4, eq 8): an oscillatory pair (its root with
+/// s > 0) or a real root, in units of τ (1/τ for rates); None where a
+/// quantity is undefined. With τ known (a file's [dimensional]), `tau_s`
+/// and the same times in seconds under `_s` names.
+///
+/// For λ = r ± is: period 2π/s; time to half amplitude ln 2/(−r) (to
+/// double, ln 2/r); cycles to half amplitude 0.11032·s/(−r) (eq 8);
+/// damping ratio ζ = −r/|λ|; natural frequency ωₙ = |λ|; frequency
+/// parameter ω̄ = s/μ₁ (§9).
+#[pyclass(frozen, module = "delta_stability")]
+pub struct Mode {
+    mode: CoreMode,
+    tau: Option<f64>,
+}
+
+#[pymethods]
+impl Mode {
+    /// `short_period`, `phugoid` or `aperiodic`.
+    #[getter]
+    fn name(&self) -> &'static str {
+        self.mode.name.as_str()
+    }
+    /// For an aperiodic root, the pair it came from (`short_period`,
+    /// `phugoid` or `unknown`); else None.
+    #[getter]
+    fn origin(&self) -> Option<&'static str> {
+        use stability_core::modes::Origin;
+        self.mode.origin.map(|o| match o {
+            Origin::ShortPeriod => "short_period",
+            Origin::Phugoid => "phugoid",
+            Origin::Unknown => "unknown",
+        })
+    }
+    /// r (1/τ).
+    #[getter]
+    fn re(&self) -> f64 {
+        self.mode.re
+    }
+    /// s ≥ 0 (1/τ).
+    #[getter]
+    fn im(&self) -> f64 {
+        self.mode.im
+    }
+    /// The root r + is as a complex number (1/τ).
+    #[getter]
+    fn root(&self) -> Complex64 {
+        Complex64::new(self.mode.re, self.mode.im)
+    }
+    /// 2π/s (τ).
+    #[getter]
+    fn period(&self) -> Option<f64> {
+        self.mode.period
+    }
+    /// ln 2/(−r) (τ), when the mode decays.
+    #[getter]
+    fn time_to_half(&self) -> Option<f64> {
+        self.mode.time_to_half
+    }
+    /// ln 2/r (τ), when the mode grows.
+    #[getter]
+    fn time_to_double(&self) -> Option<f64> {
+        self.mode.time_to_double
+    }
+    /// 0.11032·s/(−r), eq (8), for a decaying oscillation.
+    #[getter]
+    fn cycles_to_half(&self) -> Option<f64> {
+        self.mode.cycles_to_half
+    }
+    /// 0.11032·s/r, for a growing oscillation.
+    #[getter]
+    fn cycles_to_double(&self) -> Option<f64> {
+        self.mode.cycles_to_double
+    }
+    /// ζ = −r/|λ|.
+    #[getter]
+    fn damping_ratio(&self) -> Option<f64> {
+        self.mode.damping_ratio
+    }
+    /// ωₙ = |λ| (1/τ).
+    #[getter]
+    fn natural_frequency(&self) -> f64 {
+        self.mode.natural_frequency
+    }
+    /// ω̄ = s/μ₁ = 2πf·c̄/V (§9), for an oscillation.
+    #[getter]
+    fn frequency_parameter(&self) -> Option<f64> {
+        self.mode.frequency_parameter
+    }
+    /// τ = m/(½ρSV) in seconds, when known.
+    #[getter]
+    fn tau_s(&self) -> Option<f64> {
+        self.tau
+    }
+    /// The period in seconds, when τ is known.
+    #[getter]
+    fn period_s(&self) -> Option<f64> {
+        self.seconds().and_then(|s| s.period)
+    }
+    /// The time to half amplitude in seconds, when τ is known.
+    #[getter]
+    fn time_to_half_s(&self) -> Option<f64> {
+        self.seconds().and_then(|s| s.time_to_half)
+    }
+    /// The time to double amplitude in seconds, when τ is known.
+    #[getter]
+    fn time_to_double_s(&self) -> Option<f64> {
+        self.seconds().and_then(|s| s.time_to_double)
+    }
+    /// The mode as the command line's JSON gives it.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        view_to_py(py, &self.mode.timed(self.tau))
+    }
+    fn __repr__(&self) -> String {
+        let m = &self.mode;
+        let c = m
+            .cycles_to_half
+            .map(|c| format!(", cycles_to_half={c:.4}"))
+            .unwrap_or_default();
+        format!("Mode({}, root={:?}{:+?}j{c})", m.name.as_str(), m.re, m.im)
+    }
+}
+
+impl Mode {
+    fn seconds(&self) -> Option<stability_core::modes::ModeSeconds> {
+        self.tau.map(|t| self.mode.in_seconds(t))
+    }
+}
+
+/// The modes as Python objects.
+fn modes<'py>(
+    py: Python<'py>,
+    modes: &[CoreMode],
+    tau: Option<f64>,
+) -> PyResult<Bound<'py, PyList>> {
+    let items = modes
+        .iter()
+        .map(|m| Bound::new(py, Mode { mode: *m, tau }))
+        .collect::<PyResult<Vec<_>>>()?;
+    PyList::new(py, items)
+}
+
+/// The mode named `name`, if there is one.
+fn named_mode<'py>(
+    py: Python<'py>,
+    a: &stability_core::analysis::Analysis,
+    tau: Option<f64>,
+    short: bool,
+) -> PyResult<Option<Bound<'py, Mode>>> {
+    let m = if short {
+        a.modes.short_period()
+    } else {
+        a.modes.phugoid()
+    };
+    m.map(|m| Bound::new(py, Mode { mode: *m, tau }))
+        .transpose()
+}
+
+fn roots<'py>(
+    py: Python<'py>,
+    a: &stability_core::analysis::Analysis,
+) -> Bound<'py, PyArray1<Complex64>> {
+    a.roots.to_vec().into_pyarray(py)
+}
+
+fn coefficients<'py>(
+    py: Python<'py>,
+    a: &stability_core::analysis::Analysis,
+) -> Bound<'py, PyArray1<f64>> {
+    a.quartic.to_array().to_vec().into_pyarray(py)
+}
+
+fn key<'py>(py: Python<'py>, json: &Value, k: &str) -> PyResult<Bound<'py, PyAny>> {
+    to_py(py, json.get(k).unwrap_or(&Value::Null))
+}
+
+/// The stability quartic of a derivative set and what follows from it:
+/// `delta-stability quartic`'s result.
+///
+/// - `coefficients`: [A, B, C, D, E] of Aλ⁴ + Bλ³ + Cλ² + Dλ + E = 0
+///   (eq 5), the exact expansion of eq (4) (eq 6, errata applied);
+/// - `routh`: Routh's discriminant R = BCD − AD² − B²E and the §4 verdict
+///   (stable when A…E and R have one sign);
+/// - `roots`: the four roots (1/τ), conjugates adjacent, fastest first;
+/// - `modes`, `short_period`, `phugoid`: eq (8)'s quantities;
+/// - `criteria`: the §8 one-cycle standard, eq (41)'s m_θ̇max, the
+///   short-period approximation of §8–9 and the MIL-F-8785C levels;
+/// - `classical`: the report's own eq (7) against the exact roots;
+/// - `warnings`, `derivatives`, `tau_s`, and `to_dict()` (the `--json`).
+#[pyclass(frozen, module = "delta_stability")]
+pub struct Quartic {
+    file: DerivativeFile,
+    analysis: stability_core::analysis::Analysis,
+    json: Value,
+}
+
+impl Quartic {
+    fn tau(&self) -> Option<f64> {
+        self.file.dimensional.map(|d| d.tau())
+    }
+}
+
+#[pymethods]
+impl Quartic {
+    /// [A, B, C, D, E] (eq 5).
+    #[getter]
+    fn coefficients<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        coefficients(py, &self.analysis)
+    }
+    /// {"discriminant": R, "stable": bool, "marginal": bool} (§4).
+    #[getter]
+    fn routh<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        view_to_py(py, &self.analysis.routh)
+    }
+    /// Routh's verdict (§4).
+    #[getter]
+    fn stable(&self) -> bool {
+        self.analysis.routh.stable
+    }
+    /// The four roots (1/τ), complex.
+    #[getter]
+    fn roots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<Complex64>> {
+        roots(py, &self.analysis)
+    }
+    /// The modes, fastest first.
+    #[getter]
+    fn modes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        modes(py, &self.analysis.modes, self.tau())
+    }
+    /// The short-period oscillation, if the faster pair oscillates.
+    #[getter]
+    fn short_period<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, Mode>>> {
+        named_mode(py, &self.analysis, self.tau(), true)
+    }
+    /// The phugoid, if the slower pair oscillates.
+    #[getter]
+    fn phugoid<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, Mode>>> {
+        named_mode(py, &self.analysis, self.tau(), false)
+    }
+    /// The §8 one-cycle standard: `meets`, `fails` or `divergent`.
+    #[getter]
+    fn verdict(&self) -> &'static str {
+        self.analysis.verdict.as_str()
+    }
+    /// The criteria of §8–9 (the `criteria` object of the JSON).
+    #[getter]
+    fn criteria<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "criteria")
+    }
+    /// Eq (7), the report's approximate roots, against the exact ones.
+    #[getter]
+    fn classical<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "classical_eq7")
+    }
+    /// The reader's warnings (the command line prints them on stderr).
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.file.warnings.clone()
+    }
+    /// The derivative set, in the report's notation.
+    #[getter]
+    fn derivatives(&self) -> Derivatives {
+        Derivatives(self.file.derivatives)
+    }
+    /// τ = m/(½ρSV) in seconds, when the input gives [dimensional].
+    #[getter]
+    fn tau_s(&self) -> Option<f64> {
+        self.tau()
+    }
+    /// The notation the input was written in.
+    #[getter]
+    fn notation(&self) -> String {
+        self.file.notation.clone()
+    }
+    /// Everything, as `delta-stability quartic FILE --json` prints it
+    /// (`file` is the path, or "<dict>").
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        to_py(py, &self.json)
+    }
+    fn __repr__(&self) -> String {
+        let sp = self
+            .analysis
+            .modes
+            .short_period()
+            .map(|m| format!(", short_period={:?}{:+?}j", m.re, m.im))
+            .unwrap_or_default();
+        format!(
+            "Quartic(stable={}, verdict={}{sp})",
+            if self.analysis.routh.stable {
+                "True"
+            } else {
+                "False"
+            },
+            self.analysis.verdict.as_str()
+        )
+    }
+}
+
+/// The stability quartic of a derivative set (eqs 4–6), its roots, modes
+/// (eqs 7–8), Routh's test (§4) and the §8 criteria: what
+/// `delta-stability quartic FILE` computes.
+///
+/// The derivative set is a path to a TOML file, a dict of the same shape
+/// or a flat one, a Derivatives, or keyword arguments — in any notation:
+/// `quartic(notation="american", C_xu=…, …, C_W0=…, mass=…, I_y=…, …)`
+/// (`notations()` lists them; the names are the TOML files'). Raises
+/// InputError (a ValueError) with the command line's message, naming the
+/// file (or "<dict>"), line and field.
+#[pyfunction]
+#[pyo3(signature = (source=None, /, *, notation=None, **kwargs))]
+pub fn quartic(
+    py: Python<'_>,
+    source: Option<&Bound<'_, PyAny>>,
+    notation: Option<&str>,
+    kwargs: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Quartic> {
+    guard(|| {
+        let file = derivative_file(source, notation, kwargs)?;
+        let (analysis, json) = py
+            .detach(|| -> Result<_, _> {
+                let a = cmd::quartic::analysis_of(&file)?;
+                let json = serde_json::to_value(cmd::quartic::to_json(&file, &a));
+                Ok((a, json))
+            })
+            .map_err(|e| input_error(&e))?;
+        let json = json.map_err(|e| PyTypeError::new_err(e.to_string()))?;
+        Ok(Quartic {
+            file,
+            analysis,
+            json,
+        })
+    })
+}
+
+/// A design point's analysis: `delta-stability analyze CONFIG`'s result.
+///
+/// - `derivatives`: the derivative set of §5–7 (eqs 9–31 and the damping
+///   theory's);
+/// - `coefficients`, `routh`, `roots`, `modes`, `short_period`, `phugoid`,
+///   `verdict`, `criteria` (with the §9 margins, eq 42), `classical`: as
+///   for `Quartic`;
+/// - `aerodynamics`: the coefficients of §6 (∂C_L/∂α, C_D0, K, H₀ and
+///   their Mach derivatives); `damping`: the theory, its equations and
+///   z_θ̇, m_θ̇ (§7); `case`: the planform's sizes and the flight condition;
+/// - `warnings`: validity limits approached; `to_dict()`: the `--json`.
+#[pyclass(frozen, module = "delta_stability")]
+pub struct Analysis {
+    result: CaseResult,
+    json: Value,
+}
+
+#[pymethods]
+impl Analysis {
+    #[getter]
+    fn derivatives(&self) -> Derivatives {
+        Derivatives(self.result.derivatives)
+    }
+    /// [A, B, C, D, E] (eq 5).
+    #[getter]
+    fn coefficients<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        coefficients(py, &self.result.analysis)
+    }
+    /// {"discriminant": R, "stable": bool, "marginal": bool} (§4).
+    #[getter]
+    fn routh<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        view_to_py(py, &self.result.analysis.routh)
+    }
+    #[getter]
+    fn stable(&self) -> bool {
+        self.result.analysis.routh.stable
+    }
+    /// The four roots (1/τ), complex.
+    #[getter]
+    fn roots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<Complex64>> {
+        roots(py, &self.result.analysis)
+    }
+    #[getter]
+    fn modes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
+        modes(py, &self.result.analysis.modes, None)
+    }
+    #[getter]
+    fn short_period<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, Mode>>> {
+        named_mode(py, &self.result.analysis, None, true)
+    }
+    #[getter]
+    fn phugoid<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, Mode>>> {
+        named_mode(py, &self.result.analysis, None, false)
+    }
+    /// The §8 one-cycle standard: `meets`, `fails` or `divergent`.
+    #[getter]
+    fn verdict(&self) -> &'static str {
+        self.result.analysis.verdict.as_str()
+    }
+    #[getter]
+    fn criteria<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "criteria")
+    }
+    #[getter]
+    fn classical<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "classical_eq7")
+    }
+    #[getter]
+    fn aerodynamics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "aerodynamics")
+    }
+    #[getter]
+    fn damping<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "damping")
+    }
+    #[getter]
+    fn case<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "case")
+    }
+    /// The warnings, as the command line prints them.
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.result.warnings.iter().map(|w| w.to_string()).collect()
+    }
+    /// Everything, as `delta-stability analyze CONFIG --json` prints it.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        to_py(py, &self.json)
+    }
+    fn __repr__(&self) -> String {
+        let a = &self.result.analysis;
+        let sp = a
+            .modes
+            .short_period()
+            .map(|m| format!(", short_period={:?}{:+?}j", m.re, m.im))
+            .unwrap_or_default();
+        format!(
+            "Analysis(stable={}, verdict={}{sp})",
+            if a.routh.stable { "True" } else { "False" },
+            a.verdict.as_str()
+        )
+    }
+}
+
+/// The config with `analyze`'s overrides applied.
+pub fn overridden(
+    config: &Bound<'_, PyAny>,
+    mach: Option<f64>,
+    cg: Option<f64>,
+    damping: Option<&str>,
+) -> PyResult<Config> {
+    let mut cfg = inputs::config(config)?;
+    let damping = damping
+        .map(|d| {
+            DampingModel::parse(d)
+                .map_err(|e| argument("damping", format!("unknown damping model: {e}")))
+        })
+        .transpose()?;
+    let o = cmd::analyze::Overrides { damping, mach, cg };
+    cmd::analyze::apply(&mut cfg, &o).map_err(failure)?;
+    Ok(cfg)
+}
+
+/// A design point — a planform at a flight condition with a damping model —
+/// through the note's method: aerodynamic coefficients (§6), stiffness
+/// derivatives (eqs 9–14, 25–29), damping derivatives of a §7 theory, the
+/// quartic (eqs 4–6), modes (eq 8), Routh (§4), the §8 standard and the §9
+/// margins: what `delta-stability analyze CONFIG` computes.
+///
+/// `config` is a path to a TOML file (examples/delta-45.toml) or a dict of
+/// the same shape: {"planform": {"sweep": 45, "taper": 0, "root_chord": 10},
+/// "flight": {"mach": 0.9, "cg": 0.25, "mu1": 50, "i_b": 0.08, "cl_m2":
+/// 0.05}, "model": {"damping": "faired"}}. `mach`, `cg` and `damping`
+/// override the config's, as the command line's --mach, --cg, --damping.
+/// Raises InputError with the command line's message.
+#[pyfunction]
+#[pyo3(signature = (config, /, *, mach=None, cg=None, damping=None))]
+pub fn analyze(
+    py: Python<'_>,
+    config: &Bound<'_, PyAny>,
+    mach: Option<f64>,
+    cg: Option<f64>,
+    damping: Option<&str>,
+) -> PyResult<Analysis> {
+    guard(|| {
+        let cfg = overridden(config, mach, cg, damping)?;
+        let (result, json) = py
+            .detach(|| -> Result<_, delta_stability::diag::InputError> {
+                let r = cmd::analyze::evaluated(&cfg)?;
+                let json = serde_json::to_value(cmd::analyze::to_json(&cfg, &r));
+                Ok((r, json))
+            })
+            .map_err(|e| input_error(&e))?;
+        let json = json.map_err(|e| PyTypeError::new_err(e.to_string()))?;
+        Ok(Analysis { result, json })
+    })
+}

@@ -1,0 +1,106 @@
+//! `response()`: the longitudinal response of §11, as
+//! `delta-stability response` computes it, into numpy arrays.
+
+use crate::errors::{argument, input_error};
+use crate::guard;
+use crate::inputs::derivative_file;
+use delta_stability::args::ResponseInput;
+use delta_stability::cmd::response::{Options, respond};
+use numpy::IntoPyArray;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use stability_core::response::MAX_STEPS;
+
+/// The longitudinal response (§11) of a derivative set to an elevon step
+/// (`input="step"`, the moment m₀ from rest) or to an initial disturbance
+/// (`input="initial"`, ŵ = w0), solved exactly from the state-space form of
+/// eqs (2): the matrix exponential of the augmented system sampled at
+/// `steps + 1` times from 0 to `until` (units of τ). For a step it also
+/// gives the report's two-degree-of-freedom closed form, eqs (44)–(45).
+///
+/// `neglect_zq_zwdot` sets z_q = z_ẇ = 0 (Fig 38); `neglect_u` holds
+/// û = 0 (two degrees of freedom). The derivative set is given as to
+/// `quartic()`. Returns a dict of numpy arrays named as the command line's
+/// CSV columns: t_hat, t_s (when τ is known), u_hat, w_hat (= the incidence
+/// change, rad), q_hat, theta (rad), w_hat_eq45 (step only). Raises
+/// InputError with the command line's message (e.g. a response that
+/// overflows before `until`).
+#[pyfunction]
+#[pyo3(signature = (source=None, /, *, until, input="step", steps=400, m0=1.0, w0=0.01, neglect_zq_zwdot=false, neglect_u=false, notation=None, **kwargs))]
+#[allow(clippy::too_many_arguments)]
+pub fn response<'py>(
+    py: Python<'py>,
+    source: Option<&Bound<'py, PyAny>>,
+    until: f64,
+    input: &str,
+    steps: usize,
+    m0: f64,
+    w0: f64,
+    neglect_zq_zwdot: bool,
+    neglect_u: bool,
+    notation: Option<&str>,
+    kwargs: Option<&Bound<'py, PyDict>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    guard(|| {
+        let file = derivative_file(source, notation, kwargs)?;
+        let input = match input {
+            "step" => ResponseInput::Step,
+            "initial" => ResponseInput::Initial,
+            other => {
+                return Err(argument(
+                    "input",
+                    format!("`{other}` is neither `step` nor `initial`"),
+                ));
+            }
+        };
+        if !(until > 0.0 && until.is_finite()) {
+            return Err(argument(
+                "until",
+                format!("must be positive and finite, not {until}"),
+            ));
+        }
+        if steps == 0 || steps > MAX_STEPS {
+            return Err(argument(
+                "steps",
+                format!("must lie between 1 and {MAX_STEPS}, not {steps}"),
+            ));
+        }
+        for (name, v) in [("m0", m0), ("w0", w0)] {
+            if !v.is_finite() {
+                return Err(argument(name, format!("must be a finite number, not {v}")));
+            }
+        }
+        let o = Options {
+            file: file.path.clone(),
+            input,
+            until,
+            steps,
+            m0,
+            w0,
+            neglect_zq_zwdot,
+            neglect_u,
+            csv: None,
+            svg: None,
+        };
+        let r = py
+            .detach(|| respond(&o, &file))
+            .map_err(|e| input_error(&e))?;
+        let out = PyDict::new(py);
+        let column = |f: fn(&stability_core::response::Sample) -> f64| -> Vec<f64> {
+            r.samples.iter().map(f).collect()
+        };
+        out.set_item("t_hat", column(|s| s.t).into_pyarray(py))?;
+        if let Some(tau) = file.dimensional.map(|d| d.tau()) {
+            let t: Vec<f64> = r.samples.iter().map(|s| s.t * tau).collect();
+            out.set_item("t_s", t.into_pyarray(py))?;
+        }
+        out.set_item("u_hat", column(|s| s.u).into_pyarray(py))?;
+        out.set_item("w_hat", column(|s| s.w).into_pyarray(py))?;
+        out.set_item("q_hat", column(|s| s.q).into_pyarray(py))?;
+        out.set_item("theta", column(|s| s.theta).into_pyarray(py))?;
+        if let Some(w) = r.eq45 {
+            out.set_item("w_hat_eq45", w.into_pyarray(py))?;
+        }
+        Ok(out)
+    })
+}

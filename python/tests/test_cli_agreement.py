@@ -1,0 +1,228 @@
+"""Each function against the command line's `--json` (or CSV) output on the
+examples: the independent route is the program users run, through its own
+parsing of its own output. Equality is exact: both serialize the library's
+views, and the JSON's shortest round-trip numbers read back to the same
+floats."""
+
+import csv
+import io
+import math
+
+import numpy as np
+import pytest
+
+import delta_stability as ds
+from conftest import EXAMPLES
+
+DERIVATIVE_FILES = sorted(
+    str(p.relative_to(EXAMPLES.parent))
+    for p in [*EXAMPLES.glob("*.toml"), *EXAMPLES.glob("aircraft/*.toml")]
+    if "notation" in p.read_text()
+)
+CONFIGS = ["examples/delta-45.toml", "examples/delta-60.toml"]
+
+
+def test_the_examples_are_found():
+    assert "examples/tailless-delta-45.toml" in DERIVATIVE_FILES
+    assert "examples/boeing-747-american.toml" in DERIVATIVE_FILES
+    assert len(DERIVATIVE_FILES) >= 8
+
+
+def test_most_examples_are_read(cli):
+    assert sum(_read_by_cli(cli, p) for p in DERIVATIVE_FILES) >= 4
+
+
+def _read_by_cli(cli, path):
+    return cli.run("quartic", path, "--json", check=False).returncode == 0
+
+
+@pytest.mark.parametrize("path", DERIVATIVE_FILES)
+def test_quartic_is_the_cli_json(cli, path):
+    """The same JSON, or (for a file the command line refuses, such as one
+    written for a reader still to come) the same error message."""
+    if not _read_by_cli(cli, path):
+        with pytest.raises(ds.InputError) as e:
+            ds.quartic(path)
+        assert str(e.value) == cli.error("quartic", path)
+        return
+    if _dimensional(path):
+        return _dimensional_agrees(cli, path)
+    q = ds.quartic(path)
+    assert q.to_dict() == cli.json("quartic", path)
+
+
+def _dimensional(path):
+    return 'notation = "dimensional"' in (EXAMPLES.parent / path).read_text()
+
+
+def _dimensional_agrees(cli, path):
+    """notation = "dimensional": the command line analyses the general
+    model (its own JSON); the package reads the set through the report's
+    notation, which needs the [reference] quantities. Where they are given,
+    its roots in 1/s are the command line's; where not, it says so."""
+    j = cli.json("quartic", path)
+    if j["report"] is None:
+        with pytest.raises(ds.InputError) as e:
+            ds.quartic(path)
+        assert "[reference]" in e.value.message, e.value
+        return
+    q = ds.quartic(path)
+    assert q.tau_s == pytest.approx(j["report"]["tau_s"], rel=1e-12)
+    for name, value in j["report"]["derivatives"].items():
+        assert getattr(q.derivatives, name) == pytest.approx(value, rel=1e-12, abs=1e-300), name
+    if j["report"]["exact"]:
+        ours = np.sort_complex(q.roots / q.tau_s)
+        theirs = np.sort_complex([complex(r["re_s"], r["im_s"]) for r in j["roots"]])
+        np.testing.assert_allclose(ours, theirs, rtol=1e-9)
+
+
+@pytest.mark.parametrize("path", DERIVATIVE_FILES)
+def test_quartic_attributes_are_the_json_values(cli, path):
+    if not _read_by_cli(cli, path) or _dimensional(path):
+        pytest.skip("refused by the command line, or its general (dimensional) model")
+    q = ds.quartic(path)
+    j = cli.json("quartic", path)
+    assert list(q.coefficients) == [j["coefficients"][k] for k in "ABCDE"]
+    assert list(q.roots) == [complex(r["re"], r["im"]) for r in j["roots"]]
+    assert [m.to_dict() for m in q.modes] == j["modes"]
+    assert q.criteria == j["criteria"]
+    assert q.stable == j["stable"]
+    assert q.warnings == j["warnings"]
+    assert q.tau_s == j["tau_s"]
+    assert q.routh["discriminant"] == j["routh_discriminant"]
+
+
+def test_a_dict_and_keyword_arguments_read_as_the_file(cli):
+    j = cli.json("quartic", "examples/boeing-747-american.toml")
+    flat = {
+        "C_xu": -0.1080, "C_xalpha": 0.2193, "C_xalphadot": 0.0, "C_xq": 0.0,
+        "C_zu": -0.1060, "C_zalpha": -4.920, "C_zq": -5.921, "C_zalphadot": 5.896,
+        "C_mu": 0.1043, "C_malpha": -1.023, "C_mq": -23.92, "C_malphadot": -6.314,
+        "C_W0": 0.6540672, "mass": 288660.55, "I_y": 4.49e7, "rho": 0.3045, "V": 235.9,
+        "S": 511.0, "chord": 8.324,
+    }
+    for q in [ds.quartic(flat, notation="american"), ds.quartic(notation="american", **flat)]:
+        d = q.to_dict()
+        assert d.pop("file") == "<dict>"
+        j.pop("file", None)
+        assert d == j
+    nested = ds.quartic({
+        "notation": "american",
+        "derivatives": {k: v for k, v in flat.items() if k.startswith("C_") and k != "C_W0"},
+        "flight": {"C_W0": 0.6540672},
+        "dimensional": {k: flat[k] for k in ["mass", "I_y", "rho", "V", "S", "chord"]},
+    })
+    assert nested.to_dict()["coefficients"] == j["coefficients"]
+
+
+def test_derivatives_round_trip(cli):
+    q = ds.quartic("examples/tailless-delta-45.toml")
+    d = q.derivatives
+    assert ds.quartic(d).to_dict()["coefficients"] == q.to_dict()["coefficients"]
+    assert list(d.quartic_coefficients()) == list(q.coefficients)
+    assert ds.Derivatives(**d.to_dict()) == d
+    assert ds.Derivatives.from_array(d.to_array()) == d
+    assert d.replace(m_q=-1.0).m_q == -1.0 and d.m_q == -0.6
+    assert ds.Derivatives.read("examples/tailless-delta-45.toml") == d
+
+
+@pytest.mark.parametrize("path", CONFIGS)
+@pytest.mark.parametrize(
+    "overrides",
+    [{}, {"mach": 1.2}, {"mach": 0.7, "cg": 0.3}, {"mach": 1.3, "damping": "supersonic"},
+     {"mach": 1.0, "damping": "transonic-frequency"}, {"damping": "slender"}],
+)
+def test_analyze_is_the_cli_json(cli, path, overrides):
+    flags = [x for k, v in overrides.items() for x in (f"--{k}", v)]
+    j = cli.json("analyze", path, *flags)
+    a = ds.analyze(path, **overrides)
+    assert a.to_dict() == j
+    assert a.criteria == j["criteria"]
+    assert a.derivatives.to_dict() == j["derivatives"]
+    assert list(a.coefficients) == [j["coefficients"][k] for k in "ABCDE"]
+    assert [m.to_dict() for m in a.modes] == j["modes"]
+    assert a.aerodynamics == j["aerodynamics"] and a.damping == j["damping"]
+    assert a.case == j["case"]
+    assert len(a.warnings) == len(j["warnings"])
+
+
+def test_analyze_a_dict_as_the_file(cli):
+    j = cli.json("analyze", "examples/delta-45.toml", "--mach", "1.2")
+    cfg = {
+        "planform": {"sweep": 45.0, "taper": 0.0, "root_chord": 10.0},
+        "flight": {"mach": 1.2, "cg": 0.25, "mu1": 50.0, "i_b": 0.08, "cl_m2": 0.05},
+        "model": {"damping": "faired"},
+    }
+    d = ds.analyze(cfg).to_dict()
+    assert d.pop("file") == "<dict>"
+    j.pop("file")
+    assert d == j
+
+
+@pytest.mark.parametrize("to", ["american", "garner", "ribner", "perkins", "report"])
+@pytest.mark.parametrize(
+    "path", ["examples/tailless-delta-45.toml", "examples/boeing-747-american.toml"]
+)
+def test_convert_is_the_cli_json(cli, path, to):
+    notation = ds.quartic(path).notation
+    j = cli.json("convert", "--from", notation, "--to", to, path)
+    assert ds.convert(path, to=to) == j
+
+
+def _csv_columns(text):
+    rows = list(csv.DictReader(io.StringIO(text)))
+    return {k: np.array([float(r[k]) if r[k] != "" else math.nan for r in rows]) for k in rows[0]}
+
+
+@pytest.mark.parametrize(
+    "path,flags,kwargs",
+    [
+        ("examples/tailless-delta-45.toml", ["--until", "20"], {"until": 20.0}),
+        ("examples/tailless-delta-60-dimensional.toml", ["--until", "10", "--steps", "50",
+         "--neglect-zq-zwdot"], {"until": 10.0, "steps": 50, "neglect_zq_zwdot": True}),
+        ("examples/tailless-delta-45.toml", ["--until", "5", "--input", "initial", "--w0",
+         "0.02", "--neglect-u"], {"until": 5.0, "input": "initial", "w0": 0.02,
+                                  "neglect_u": True}),
+    ],
+)
+def test_response_is_the_cli_csv(cli, path, flags, kwargs):
+    theirs = _csv_columns(cli.run("response", path, *flags).stdout)
+    ours = ds.response(path, **kwargs)
+    for k, v in theirs.items():
+        if np.all(np.isnan(v)):
+            assert k not in ours or np.all(np.isnan(ours[k]))
+            continue
+        np.testing.assert_array_equal(ours[k], v, err_msg=k)
+
+
+@pytest.mark.parametrize("theory,mach", [("slender", 0.9), ("garrick", 0.5),
+                                         ("supersonic", 1.3), ("transonic", 1.0)])
+def test_damping_derivatives_are_analyze_s(cli, theory, mach):
+    j = cli.json("analyze", "examples/delta-45.toml", "--mach", mach, "--damping", theory)
+    d = ds.damping_derivatives(theory, sweep=45.0, mach=mach, cg=0.25)
+    assert d["theory"] == j["damping"]["theory"] and d["equations"] == j["damping"]["equations"]
+    assert d["z_thetadot"] == j["damping"]["z_thetadot"]
+    assert d["m_thetadot"] == j["damping"]["m_thetadot"]
+    assert d["z_wdot"] == j["derivatives"]["z_wdot"] and d["m_q"] == j["derivatives"]["m_q"]
+    assert d["fig18"] == j["damping"]["fig18"]
+
+
+def test_sweep_is_the_cli_csv(cli, tmp_path):
+    out = tmp_path / "sweep.csv"
+    cli.run("sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.25", "--cg", "0.2:0.3:0.05",
+            "--mu1", "50:450:200", "--sweep", "45:75:15", "--derivatives", "-o", out)
+    theirs = list(csv.DictReader(out.open()))
+    ours = ds.sweep("examples/delta-60.toml", mach="0.5:2:0.25", cg="0.2:0.3:0.05",
+                    mu1="50:450:200", sweep="45:75:15", derivatives=True)
+    assert len(ours["mach"]) == len(theirs) == 7 * 3 * 3 * 3
+    for k in theirs[0]:
+        col = ours[k]
+        for i, row in enumerate(theirs):
+            if k in ("verdict", "error"):
+                assert col[i] == row[k], (k, i)
+            elif k == "stable":
+                assert (row[k] == "true") == bool(col[i]) or row["error"], (k, i)
+            elif row[k] == "":
+                assert math.isnan(col[i]), (k, i)
+            else:
+                assert col[i] == float(row[k]), (k, i, col[i], row[k])
