@@ -16,7 +16,7 @@
 //! are not in the report's set and are not returned.
 
 use super::{LiftingSurfaceError, Solution, Steady};
-use crate::damping::DampingDerivatives;
+use crate::derivatives::DampingDerivatives;
 use serde::Serialize;
 
 /// The derivatives of one solve at one c.g., in the report's notation.
