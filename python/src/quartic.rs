@@ -16,6 +16,7 @@ use pyo3::exceptions::{PyAttributeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
+use stability_core::cap::AirplaneClass;
 use stability_core::case::{CaseResult, DampingModel};
 use stability_core::modes::Mode as CoreMode;
 
@@ -545,8 +546,8 @@ pub fn quartic(
         let file = derivative_file(source, notation, kwargs)?;
         let (analysis, json) = py
             .detach(|| -> Result<_, _> {
-                let a = cmd::quartic::analysis_of(&file)?;
-                let json = serde_json::to_value(cmd::quartic::to_json(&file, &a));
+                let (a, engineering) = cmd::quartic::evaluated(&file, None, AirplaneClass::IV)?;
+                let json = serde_json::to_value(cmd::quartic::to_json(&file, &a, &engineering));
                 Ok((a, json))
             })
             .map_err(|e| input_error(&e))?;
@@ -676,7 +677,12 @@ pub fn overridden(
                 .map_err(|e| argument("damping", format!("unknown damping model: {e}")))
         })
         .transpose()?;
-    let o = cmd::analyze::Overrides { damping, mach, cg };
+    let o = cmd::analyze::Overrides {
+        damping,
+        mach,
+        cg,
+        ..Default::default()
+    };
     cmd::analyze::apply(&mut cfg, &o).map_err(failure)?;
     Ok(cfg)
 }
@@ -705,12 +711,17 @@ pub fn analyze(
     guard(|| {
         let cfg = overridden(config, mach, cg, damping)?;
         let (result, json) = py
-            .detach(|| -> Result<_, delta_stability::diag::InputError> {
-                let r = cmd::analyze::evaluated(&cfg)?;
+            .detach(|| -> Result<_, delta_stability::Failure> {
+                let options = cmd::quartic::Options {
+                    json: true,
+                    state_space: None,
+                    class: AirplaneClass::IV,
+                };
+                let r = cmd::analyze::results(&cfg, &options)?;
                 let json = serde_json::to_value(cmd::analyze::to_json(&cfg, &r));
-                Ok((r, json))
+                Ok((r.result, json))
             })
-            .map_err(|e| input_error(&e))?;
+            .map_err(failure)?;
         let json = json.map_err(|e| PyTypeError::new_err(e.to_string()))?;
         Ok(Analysis { result, json })
     })

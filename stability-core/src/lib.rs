@@ -24,6 +24,9 @@
 //! | the engineer's outputs | [`linear`] (state space), [`mode_shape`], [`damp`] (modes in seconds), [`cap`] (MIL-F-8785C short-period frequency), [`engineering`] (all of them) |
 //! | handbook data: dimensional derivatives, body or stability axes (issue 12) | [`dimensional`] |
 //!
+//! The data of the note's figures that set one theory beside another
+//! (Fig 4, Figs 14–15): [`figures`].
+//!
 //! Around them: [`warnings`] (validity limits approached), [`json`] (the
 //! results as the command line prints them), [`display`] (numbers and
 //! quotes in messages), [`examples`] (the example aircraft).
@@ -42,6 +45,7 @@ pub mod dimensional;
 pub mod display;
 pub mod engineering;
 pub mod examples;
+pub mod figures;
 pub mod flight;
 pub mod geometry;
 pub mod json;

@@ -18,7 +18,7 @@ use stability_core::cap::{AirplaneClass, n_alpha_dimensional};
 use stability_core::dimensional::DimensionalAnalysis;
 use stability_core::engineering::Engineering;
 use stability_core::json::Timed;
-use stability_core::linear::LinearModel;
+use stability_core::linear::{Control, LinearModel};
 use std::path::Path;
 
 /// The command's options beside the file.
@@ -41,24 +41,8 @@ pub fn run(file: &str, o: &Options) -> Result<(), Failure> {
     for w in &input.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
-    let analysis = analysis_of(&input)?;
+    let (analysis, engineering) = evaluated(&input, control.as_ref(), o.class)?;
     let tau = input.dimensional.map(|d| d.tau());
-    let engineering = Engineering::of_report(
-        &input.derivatives,
-        &analysis,
-        tau,
-        control.as_ref(),
-        o.class,
-    );
-    let (true, Ok(engineering)) = (is_finite(&analysis), engineering) else {
-        let largest = most_extreme_input(&input);
-        return Err(input
-            .error_at(
-                largest,
-                "the analysis overflows f64: no result can be written",
-            )
-            .into());
-    };
     if let Some(out) = &o.state_space {
         let roots = tau.map_or(analysis.roots, |t| analysis.roots.map(|z| z / t));
         crate::state_space::write(
@@ -82,6 +66,26 @@ pub fn run(file: &str, o: &Options) -> Result<(), Failure> {
         print(&table(&input, &analysis, &engineering))?;
     }
     Ok(())
+}
+
+/// The analysis of a derivative file and the engineer's outputs from it
+/// (damp(), mode shapes, the short-period frequency requirement), every
+/// number finite, or the error at the input it arises from: what `quartic`
+/// prints, and what the Python package's `quartic()` returns.
+pub fn evaluated(
+    input: &DerivativeFile,
+    control: Option<&Control>,
+    class: AirplaneClass,
+) -> Result<(Analysis, Engineering), InputError> {
+    let analysis = analysis_of(input)?;
+    let tau = input.dimensional.map(|d| d.tau());
+    match Engineering::of_report(&input.derivatives, &analysis, tau, control, class) {
+        Ok(engineering) => Ok((analysis, engineering)),
+        Err(_) => Err(input.error_at(
+            most_extreme_input(input),
+            "the analysis overflows f64: no result can be written",
+        )),
+    }
 }
 
 /// The analysis of a derivative file, every number of it finite, or the

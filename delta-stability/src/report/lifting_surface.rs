@@ -1,4 +1,4 @@
-//! The note's lifting-surface figures, from `lifting_surface::figures`:
+//! The note's lifting-surface figures, from `stability_core::figures`:
 //! Fig 4 (§6, the lift slope against aspect ratio for several sweeps,
 //! incompressible) and Figs 14–15 (§7, incompressible −z_θ̇ and −m_θ̇ of the
 //! delta planform against aspect ratio: Garrick's low-aspect-ratio theory,
@@ -12,7 +12,7 @@
 use super::Plate;
 use crate::plot::{Figure, Series};
 use rayon::prelude::*;
-use stability_core::lifting_surface::figures::{
+use stability_core::figures::{
     DampingInPitchPoint, damping_in_pitch_against_aspect_ratio, lift_slope_against_aspect_ratio,
 };
 use std::f64::consts::PI;

@@ -70,7 +70,6 @@
 pub mod cache;
 mod derivatives;
 pub mod doublet_line;
-pub mod figures;
 pub mod frequency;
 pub mod kernel;
 mod lattice;

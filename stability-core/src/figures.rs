@@ -11,9 +11,9 @@
 //! The note's figures are lost, and the OCR does not say which sweeps, taper
 //! or c.g. they used: the caller chooses them.
 
-use super::{Lattice, LatticeSpec, LiftingSurfaceError};
 use crate::damping::{Theory, WingInput, damping_derivatives};
 use crate::geometry::Trapezoid;
+use crate::lifting_surface::{Lattice, LatticeSpec, LiftingSurfaceError};
 use serde::Serialize;
 
 /// One curve of Fig 4: C_Lα (per radian, incompressible, quasi-steady)
