@@ -11,7 +11,7 @@
 //! | --- | --- |
 //! | §2.2 the planform | [`geometry`] |
 //! | §5–6 aerodynamic coefficients, stiffness derivatives | [`aero`], [`stiffness`] |
-//! | §7 the damping derivatives and their theories | [`theory`], [`damping`], [`supersonic`] (supersonic leading edges), [`lifting_surface`] (subsonic lifting surface) |
+//! | §7 the damping derivatives and their theories; the faired model of Figs 19–24 | [`theory`], [`damping`], [`faired`], [`supersonic`] (supersonic leading edges), [`lifting_surface`] (subsonic lifting surface) |
 //! | §3 the derivative set | [`derivatives`] |
 //! | §3–4, eqs (4)–(6) the stability quartic; its roots | [`quartic`], [`roots`] |
 //! | §4, eqs (7)–(8) the modes; the report's own method | [`modes`], [`classical`] |
@@ -45,6 +45,7 @@ pub mod dimensional;
 pub mod display;
 pub mod engineering;
 pub mod examples;
+pub mod faired;
 pub mod figures;
 pub mod flight;
 pub mod geometry;
