@@ -48,11 +48,11 @@ impl ValueEnum for DampingArg {
     fn to_possible_value(&self) -> Option<PossibleValue> {
         let help = match self.0 {
             DampingModel::Faired => {
-                "the default: slender-wing theory (37) through M = 1, blended into the supersonic theory by M = 1.2"
+                "the default, the note's fairing (Figs 19–24): the lifting surface at the short period's own ω̄ to M = 0.9, Mangler's transonic theory (39)–(40) at M = 1, linear supersonic theory (36) from 1.2, joined between by stated cubics; the lift slope and aerodynamic centre from the same theories"
                     .to_string()
             }
             DampingModel::FairedSlender => {
-                "the previous fairing: as `faired`, but (36) held at its sonic-leading-edge values beyond the sonic edge"
+                "the previous, quasi-steady fairing (fast: no lattice): slender-wing theory (37) through M = 1, blended into (36) by M = 1.2, (36) held at its sonic-leading-edge values beyond the sonic edge"
                     .to_string()
             }
             DampingModel::Theory(t) => {

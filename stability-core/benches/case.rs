@@ -2,11 +2,13 @@
 //! `evaluate` (planform → coefficients → derivatives → quartic → roots →
 //! modes → criteria), `evaluate_point` (the sweep's lean path), and its
 //! stages alone. Each iteration evaluates 64 Mach numbers from 0.5 to 2.0
-//! on the report's 60° delta.
+//! on the report's 60° delta, with the quasi-steady `faired-slender`
+//! damping model (the default `faired` model's lifting surface and frequency
+//! iteration are benchmarked in `lifting_surface.rs` and `sweep.rs`).
 
 use divan::{AllocProfiler, black_box};
 use stability_core::analysis::Analysis;
-use stability_core::case::{Case, evaluate, evaluate_point};
+use stability_core::case::{Case, DampingModel, evaluate, evaluate_point};
 use stability_core::study::report_wing;
 
 #[global_allocator]
@@ -16,6 +18,7 @@ fn cases() -> Vec<Case> {
     (0..64)
         .map(|i| {
             let mut c = report_wing(60.0, 0.5 + 1.5 * i as f64 / 63.0);
+            c.damping = DampingModel::FairedSlender;
             c.iterate_frequency = false;
             c
         })

@@ -130,25 +130,7 @@ impl Table {
             };
         }
         for i in 0..n - 1 {
-            if delta[i] == 0.0 {
-                slope[i] = 0.0;
-                slope[i + 1] = 0.0;
-                continue;
-            }
-            let a = slope[i] / delta[i];
-            let b = slope[i + 1] / delta[i];
-            if a < 0.0 {
-                slope[i] = 0.0;
-            }
-            if b < 0.0 {
-                slope[i + 1] = 0.0;
-            }
-            let s = a * a + b * b;
-            if s > 9.0 {
-                let t = 3.0 / s.sqrt();
-                slope[i] = t * a * delta[i];
-                slope[i + 1] = t * b * delta[i];
-            }
+            (slope[i], slope[i + 1]) = monotone_slopes(delta[i], slope[i], slope[i + 1]);
         }
         Ok(Table { mach, value, slope })
     }
@@ -174,6 +156,25 @@ impl Table {
             m,
         ))
     }
+}
+
+/// The end slopes d₀, d₁ of one interval whose secant is δ, made such that
+/// the cubic Hermite interpolant on it is monotone where the data are (F.N.
+/// Fritsch and R.E. Carlson, SIAM J. Numer. Anal. 17(2), 1980, §4): with
+/// α = d₀/δ, β = d₁/δ, a slope against the secant's sign becomes 0, and
+/// (α, β) is pulled radially into the circle α² + β² ≤ 9; δ = 0 gives flat
+/// ends.
+pub fn monotone_slopes(delta: f64, d0: f64, d1: f64) -> (f64, f64) {
+    if delta == 0.0 {
+        return (0.0, 0.0);
+    }
+    let (mut a, mut b) = ((d0 / delta).max(0.0), (d1 / delta).max(0.0));
+    let s = a * a + b * b;
+    if s > 9.0 {
+        let t = 3.0 / s.sqrt();
+        (a, b) = (t * a, t * b);
+    }
+    (a * delta, b * delta)
 }
 
 /// The cubic Hermite interpolant through (x₀, y₀, y₀′) and (x₁, y₁, y₁′), and

@@ -3,7 +3,8 @@
 //! derivative set (§5–7) → the quartic, its modes and criteria (§4, §8).
 //!
 //! Where the damping theory depends on the frequency parameter ω̄ (Mangler's
-//! (39)–(40), the lifting surface's `lifting-surface-frequency`), ω̄ is
+//! (39)–(40), the lifting surface's `lifting-surface-frequency`, the
+//! default `faired` model below M = 1.2), ω̄ is
 //! iterated to the short-period frequency it produces, ω̄ = s/μ₁ — the
 //! consistency the report could not afford ("quasi-static derivatives are
 //! used in cases where frequency effects should properly be included",
@@ -16,9 +17,10 @@ use crate::aero::{AeroError, AeroModel, Coefficients, TheoryCoefficients, level_
 use crate::analysis::{Analysis, AnalysisError};
 use crate::damping::{
     Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,
-    damping_derivatives, damping_derivatives_with, theory_coefficients, x_q, x_wdot,
+    damping_derivatives_with, theory_coefficients, x_q, x_wdot,
 };
 use crate::display::Num;
+use crate::faired;
 use crate::geometry::Planform;
 use crate::lifting_surface::Harmonic;
 use crate::stiffness::{Stiffness, stiffness};
@@ -30,19 +32,20 @@ use serde::Serialize;
 pub enum DampingModel {
     /// One theory, wherever it is asked for (errors outside its domain).
     Theory(Theory),
-    /// The theories faired through Mach number, as the report faired its
-    /// Figs 19–24: slender-wing theory (37) — identical with Garrick's and
-    /// with Mangler's steady sonic theory (38) — up to M = 1; blended into
-    /// the supersonic linear theory over 1 ≤ M ≤ 1.2 by the weight
-    /// w = 3x² − 2x³, x = (M − 1)/0.2 (w·(36)'s logarithmic singularity at
-    /// M = 1 vanishes with w); that theory beyond — (36) while the leading
-    /// edge is subsonic, the supersonic-edge theory past the Mach number
-    /// where it turns sonic (`supersonic::edge_theory`, continuous there).
+    /// The theories faired through Mach number as the note built its Figs
+    /// 19–24 ([`crate::faired`]): lifting-surface theory at the short
+    /// period's own ω̄ to M = 0.9, Mangler's transonic theory (38)–(40) at
+    /// M = 1, linear supersonic theory from M = 1.2 ((36), then the
+    /// supersonic-edge theory past the sonic leading edge), joined between
+    /// by stated cubics; the lift slope and aerodynamic centre from the
+    /// same theories.
     Faired,
-    /// The previous slender-wing fairing, `faired-slender`: as
-    /// [`DampingModel::Faired`] up to the Mach number where the leading
-    /// edge turns sonic, and past it (36)'s values at the sonic leading
-    /// edge, held, with a warning.
+    /// The previous slender-wing fairing, `faired-slender`
+    /// ([`crate::faired::slender_fairing`]): slender-wing theory (37) to
+    /// M = 1, blended into linear supersonic theory over 1 ≤ M ≤ 1.2, (36)
+    /// held at its sonic-leading-edge values past the sonic edge, with a
+    /// warning; quasi-steady, and the default methods' lift slope and
+    /// aerodynamic centre.
     FairedSlender,
 }
 
@@ -65,9 +68,25 @@ impl DampingModel {
     }
 
     /// Whether the model's derivatives depend on the frequency parameter ω̄
-    /// and it is iterated (Mangler's (39)–(40), `lifting-surface-frequency`).
+    /// (at some Mach number) and it is iterated (Mangler's (39)–(40),
+    /// `lifting-surface-frequency`, `faired`).
     pub fn uses_frequency(self) -> bool {
-        matches!(self, DampingModel::Theory(t) if t.uses_frequency())
+        match self {
+            DampingModel::Theory(t) => t.uses_frequency(),
+            DampingModel::Faired => true,
+            DampingModel::FairedSlender => false,
+        }
+    }
+
+    /// Whether the model's derivatives depend on ω̄ at Mach `mach`: the
+    /// faired model's below [`faired::SUPERSONIC_FROM`] only (linear
+    /// supersonic theory is quasi-steady; it checks its low-frequency rule
+    /// at §9's estimate of the short period's ω̄ as `supersonic` does).
+    pub fn uses_frequency_at(self, mach: f64) -> bool {
+        match self {
+            DampingModel::Faired => mach < faired::SUPERSONIC_FROM,
+            _ => self.uses_frequency(),
+        }
     }
 
     /// Every model: the two fairings, then the theories (in the order of
@@ -88,7 +107,11 @@ impl DampingModel {
     /// Whether the model takes a frequency parameter ω̄ at all
     /// ([`Theory::takes_omega_bar`]).
     pub fn takes_omega_bar(self) -> bool {
-        matches!(self, DampingModel::Theory(t) if t.takes_omega_bar())
+        match self {
+            DampingModel::Theory(t) => t.takes_omega_bar(),
+            DampingModel::Faired => true,
+            DampingModel::FairedSlender => false,
+        }
     }
 
     pub fn name(self) -> &'static str {
@@ -111,8 +134,9 @@ impl DampingModel {
     /// The lift slope and aerodynamic centre the model's own theory gives
     /// at `mach`, with their Mach derivatives — taken by
     /// [`aero::Source::Default`](crate::aero::Source::Default) in place of
-    /// the default methods (`damping::theory_coefficients`: the supersonic
-    /// theory at M > 1). The fairings give none.
+    /// the default methods: the supersonic theory's at M > 1
+    /// (`damping::theory_coefficients`), the faired model's everywhere
+    /// ([`faired::coefficients`]). `faired-slender` gives none.
     pub fn own_coefficients(
         self,
         planform: &Planform,
@@ -120,7 +144,8 @@ impl DampingModel {
     ) -> Result<Option<TheoryCoefficients>, DampingError> {
         match self {
             DampingModel::Theory(t) => theory_coefficients(t, planform, mach),
-            DampingModel::Faired | DampingModel::FairedSlender => Ok(None),
+            DampingModel::Faired => faired::coefficients(planform, mach),
+            DampingModel::FairedSlender => Ok(None),
         }
     }
 }
@@ -260,10 +285,6 @@ impl Case {
     }
 }
 
-/// The faired model's blend of slender-wing theory (37) into supersonic
-/// theory (36): w = 3x² − 2x³, x = (M − 1)/[`FAIRING_WIDTH`].
-pub const FAIRING_WIDTH: f64 = 0.2;
-
 /// The damping derivatives of the case's model at ω̄ (used by the
 /// frequency-dependent theories, and by `supersonic` for its low-frequency
 /// warning), the lifting surface's harmonic solutions had as `harmonic`
@@ -288,66 +309,21 @@ fn damping_at(
         DampingModel::Theory(t) => Ok(damping_derivatives_with(
             t, wing, h, m, omega_bar, harmonic,
         )?),
-        DampingModel::Faired => faired(wing, h, m),
-        DampingModel::FairedSlender => faired_slender(wing, h, m),
-    }
-}
-
-/// [`DampingModel::Faired`]: (37) to M = 1, blended into the supersonic
-/// linear theory over 1 ≤ M ≤ 1 + [`FAIRING_WIDTH`], that theory beyond.
-fn faired(wing: &WingInput, h: f64, m: f64) -> Result<Damping, CaseError> {
-    let slender = damping_derivatives(Theory::Slender, wing, h, m, None)?;
-    if m <= 1.0 {
-        return Ok(slender);
-    }
-    let sup = damping_derivatives(Theory::Supersonic, wing, h, m, None)?;
-    Ok(fair(&slender, &sup, m, Warnings::default()))
-}
-
-/// [`DampingModel::FairedSlender`], the previous fairing: (37) to M = 1,
-/// blended into (36) over 1 ≤ M ≤ 1 + [`FAIRING_WIDTH`], (36) beyond —
-/// held at its values at the sonic leading edge past it.
-fn faired_slender(wing: &WingInput, h: f64, m: f64) -> Result<Damping, CaseError> {
-    let slender = damping_derivatives(Theory::Slender, wing, h, m, None)?;
-    if m <= 1.0 {
-        return Ok(slender);
-    }
-    let sonic = crate::geometry::sonic_leading_edge_mach(wing.sweep_le);
-    let mut warnings = Warnings::default();
-    let m_sup = if m >= sonic {
-        warnings.push(Warning::FairedHeldAtSonicEdge { sonic });
-        sonic * (1.0 - 1e-9)
-    } else {
-        m
-    };
-    let sup = damping_derivatives(Theory::Supersonic, wing, h, m_sup, None)?;
-    Ok(fair(&slender, &sup, m, warnings))
-}
-
-/// (37)'s derivatives blended into the supersonic theory's by the weight
-/// w = 3x² − 2x³, x = (M − 1)/[`FAIRING_WIDTH`] clamped to [0, 1]; the
-/// warnings are the fairing's own (the theories' are not carried).
-fn fair(slender: &Damping, sup: &Damping, m: f64, warnings: Warnings) -> Damping {
-    let x = ((m - 1.0) / FAIRING_WIDTH).clamp(0.0, 1.0);
-    let w = x * x * (3.0 - 2.0 * x);
-    let blend = |a: f64, b: f64| (1.0 - w) * a + w * b;
-    let (a, b) = (slender.derivatives, sup.derivatives);
-    Damping {
-        theory: Theory::Supersonic,
-        derivatives: DampingDerivatives {
-            z_q: blend(a.z_q, b.z_q),
-            z_wdot: blend(a.z_wdot, b.z_wdot),
-            m_q: blend(a.m_q, b.m_q),
-            m_wdot: blend(a.m_wdot, b.m_wdot),
-        },
-        fig18: sup.fig18,
-        warnings,
+        DampingModel::Faired => Ok(faired::damping(wing, h, m, omega_bar, harmonic)?),
+        DampingModel::FairedSlender => Ok(faired::slender_fairing(wing, h, m)?),
     }
 }
 
 /// Evaluate a design point.
 pub fn evaluate(case: &Case) -> Result<CaseResult, CaseError> {
     evaluate_with(case, true, Harmonic::Direct)
+}
+
+/// As [`evaluate`], the lifting surface's harmonic solutions had as
+/// `harmonic` says ([`Harmonic::Interpolated`]: the report's, which
+/// evaluates the frequency-dependent models at many design points).
+pub fn evaluate_harmonic(case: &Case, harmonic: Harmonic) -> Result<CaseResult, CaseError> {
+    evaluate_with(case, true, harmonic)
 }
 
 /// As [`evaluate`], without the eq (7) check (`analysis.classical` is
@@ -371,7 +347,7 @@ fn evaluate_with(
 ) -> Result<CaseResult, CaseError> {
     case.check()?;
     let point = Point::new(case, classical, harmonic)?;
-    let (run, frequency) = if case.damping.uses_frequency() {
+    let (run, frequency) = if case.damping.uses_frequency_at(case.mach) {
         let (run, f) = point.iterate_frequency()?;
         (run, Some(f))
     } else {

@@ -42,6 +42,14 @@ pub enum Warning {
     /// The faired model above the Mach number at which the leading edge
     /// turns supersonic: (36) held at its sonic-edge values.
     FairedHeldAtSonicEdge { sonic: f64 },
+    /// The faired model between two theories (`faired::JOINS`): a guess.
+    Faired {
+        mach: f64,
+        lower: Theory,
+        lower_mach: f64,
+        upper: Theory,
+        upper_mach: f64,
+    },
     /// The frequency iteration did not converge.
     FrequencyNotConverged { iterations: usize, last: f64 },
     /// The doublet lattice close to M = 1.
@@ -104,6 +112,21 @@ impl fmt::Display for Warning {
             Warning::FairedHeldAtSonicEdge { sonic } => write!(
                 f,
                 "faired damping: the leading edge is supersonic above M = {sonic:.3}; (36) is held at its sonic-leading-edge values"
+            ),
+            Warning::Faired {
+                mach,
+                lower,
+                lower_mach,
+                upper,
+                upper_mach,
+            } => write!(
+                f,
+                "faired damping at M = {}: joined between {lower} {} at M = {} and {upper} {} at M = {} — a fairing, not a theory (docs/damping-theories.md, \"The faired model\")",
+                Num(mach),
+                lower.cited(),
+                Num(lower_mach),
+                upper.cited(),
+                Num(upper_mach)
             ),
             Warning::FrequencyNotConverged { iterations, last } => write!(
                 f,

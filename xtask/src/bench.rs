@@ -36,11 +36,18 @@ fn run(cmd: &mut Command) -> Result<std::process::Output, String> {
 }
 
 /// The `delta-stability sweep` arguments of benches/sweep-grid.json: the
-/// base file, then `--axis range` for each axis.
+/// base file, then `--name value` for each of `options` (optional) and
+/// `--axis range` for each axis.
 fn grid_args(grid: &Value) -> Result<Vec<String>, String> {
-    let bad = || format!("{GRID_FILE}: expected `base` and `axes` = [[name, range], …]");
+    let bad = || {
+        format!(
+            "{GRID_FILE}: expected `base`, `axes` = [[name, range], …] and optionally `options` = [[name, value], …]"
+        )
+    };
     let mut args = vec![grid["base"].as_str().ok_or_else(bad)?.to_string()];
-    for axis in grid["axes"].as_array().ok_or_else(bad)? {
+    let options = grid["options"].as_array().map(Vec::as_slice).unwrap_or(&[]);
+    let axes = grid["axes"].as_array().ok_or_else(bad)?;
+    for axis in options.iter().chain(axes) {
         match axis.as_array().map(Vec::as_slice) {
             Some([Value::String(name), Value::String(range)]) => {
                 args.push(format!("--{name}"));

@@ -18,11 +18,12 @@
 //! # or rho with speed_of_sound), mass (or weight), I_y
 //!
 //! [model]               # optional
-//! damping = "faired"    # or garrick, garner-taper, slender, supersonic, transonic, transonic-frequency,
+//! damping = "faired"    # the default: the note's fairing (docs/damping-theories.md); or faired-slender,
+//!                       # garrick, garner-taper, slender, supersonic, transonic, transonic-frequency,
 //!                       # lifting-surface, lifting-surface-frequency
 //! aero = "default"      # or lifting-surface: lift slope and aerodynamic centre from the lattice (M < 1)
 //! omega_bar = 0.3       # lifting-surface: the ω̄ it is evaluated at (default 0, quasi-steady);
-//!                       # the iterated theories: the starting ω̄ (default √(−m_w/(μ₁i_B)))
+//!                       # the iterated theories and faired: the starting ω̄ (default √(−m_w/(μ₁i_B)))
 //! iterate_frequency = true
 //! [model.tables]        # optional: the user's curves instead of the defaults
 //! lift_slope = { mach = [0.5, 0.9, 1.2], value = [3.1, 3.6, 3.4] }
