@@ -1,11 +1,12 @@
 //! The note's whole study on its built-in cases (`delta-stability report`):
-//! the figures it draws, grouped as the note groups them — §6 coefficients
-//! and stiffness ([`coefficients`], Figs 2–12), §7 damping ([`damping`],
-//! 13–24; the lifting-surface Figs 4 and 14–15 from [`lifting_surface`]),
-//! §8 the standard ([`standard`], 25–26), §9 the quartic and
-//! margins ([`quartic`], 27–35), §10 taper ([`taper`], 36), §11 responses
-//! ([`responses`], 37–38) — then the [`summary`] of what was found, the
-//! note's [`conclusions`] set beside it, and the page ([`html`]).
+//! the figures it draws, grouped as the note groups them — §6 wave drag,
+//! coefficients and stiffness ([`coefficients`], Figs 1–12), §7 damping
+//! ([`damping`], 13–24; the lifting-surface Figs 4 and 14–15 from
+//! [`lifting_surface`]), §8 the standard ([`standard`], 25–26), §9 the
+//! quartic and margins ([`quartic`], 27–35), §10 taper ([`taper`], 36),
+//! §11 responses ([`responses`], 37–38) — then the [`summary`] of what
+//! was found, the note's [`conclusions`] set beside it, and the page
+//! ([`html`]).
 //!
 //! Everything here computes; writing the files is `cmd::report`'s.
 
@@ -63,7 +64,7 @@ pub struct Section {
 /// The note's sections with figures, in its order.
 pub const SECTIONS: [Section; 6] = [
     Section {
-        title: "§6: aerodynamic coefficients and stiffness derivatives (Figs 2–12; Fig 4 by the lifting surface)",
+        title: "§6: wave drag, aerodynamic coefficients and stiffness derivatives (Figs 1–12; Fig 4 by the lifting surface)",
         plates: coefficients::plates,
     },
     Section {
