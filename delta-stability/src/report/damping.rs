@@ -99,7 +99,7 @@ fn fig18() -> Plate {
         Figure::new(
             "18",
             "Functions H, E in the theory of Mangler, Ribner & Malvestuto",
-            "β cot Λ = cot Λ/cot μ",
+            "β cot Λ = cot Λ/tan μ",
             "value",
         )
         .with(Series::new(
