@@ -4,6 +4,7 @@
 //! number (Figs 2–3, 5–12), and Fig 4 (the lift slope against aspect
 //! ratio, [`super::lifting_surface`]).
 
+use super::regimes::{self, Basis};
 use super::study::{WINGS, machs};
 use super::{Plate, Study};
 use crate::plot::{Figure, Series, VerticalLine, short};
@@ -94,7 +95,11 @@ pub fn plates(study: &Study) -> Vec<Plate> {
     let mut out: Vec<Plate> = FIGURES
         .iter()
         .map(|&(id, title, y, f, caption)| {
-            Plate::new(study.pair(id, title, y, &|r| Some(f(r))), caption)
+            let fig = study.pair(id, title, y, &|r| Some(f(r)));
+            Plate::new(
+                regimes::faired(fig, study, &WINGS, Basis::Coefficients),
+                caption,
+            )
         })
         .collect();
     // Fig 1 first, Fig 4 after Fig 3: the lift slope against aspect ratio

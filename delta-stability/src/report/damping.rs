@@ -3,6 +3,7 @@
 //! damping derivatives (Figs 19–24), with Mangler's frequency-consistent
 //! theory near M = 1 beside them.
 
+use super::regimes::{self, Basis};
 use super::study::{WINGS, curve, label, mach_fig};
 use super::{Plate, Study};
 use crate::plot::{Figure, Series};
@@ -66,10 +67,12 @@ pub fn supersonic_series(ms: &[f64], deg: f64, f: fn(&DampingDerivatives) -> f64
 }
 
 fn supersonic(study: &Study) -> [Plate; 2] {
+    // one theory, no fairing: the sonic edges alone, where (36) ends
     let fig = |id: &str, title: &str, y: &str, f: fn(&DampingDerivatives) -> f64| {
-        WINGS.iter().fold(mach_fig(id, title, y), |fig, &deg| {
+        let fig = WINGS.iter().fold(mach_fig(id, title, y), |fig, &deg| {
             fig.with(supersonic_series(&study.ms, deg, f))
-        })
+        });
+        regimes::sonic_edges(fig, &WINGS)
     };
     [
         Plate::new(
@@ -179,7 +182,7 @@ fn faired(study: &Study) -> Vec<Plate> {
                 "20" => format!("As Fig 19; {}", positive_zwdot(study)),
                 _ => "As Fig 19.".to_string(),
             };
-            Plate::new(fig, caption)
+            Plate::new(regimes::faired(fig, study, &WINGS, Basis::Damping), caption)
         })
         .collect()
 }

@@ -4,9 +4,10 @@
 //! ([`damping`], 13–24; the lifting-surface Figs 4 and 14–15 from
 //! [`lifting_surface`]), §8 the standard ([`standard`], 25–26), §9 the
 //! quartic and margins ([`quartic`], 27–35), §10 taper ([`taper`], 36),
-//! §11 responses ([`responses`], 37–38) — then the [`summary`] of what
-//! was found, the note's [`conclusions`] set beside it, and the page
-//! ([`html`]).
+//! §11 responses ([`responses`], 37–38), with the regime bands and sonic
+//! edges of [`regimes`] on those against Mach number — then the
+//! [`summary`] of what was found, the note's [`conclusions`] set beside
+//! it, and the page ([`html`]).
 //!
 //! Everything here computes; writing the files is `cmd::report`'s.
 
@@ -16,6 +17,7 @@ pub mod damping;
 pub mod html;
 pub mod lifting_surface;
 pub mod quartic;
+pub mod regimes;
 pub mod responses;
 pub mod standard;
 pub mod study;
