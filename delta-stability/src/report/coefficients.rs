@@ -102,10 +102,14 @@ pub fn plates(study: &Study) -> Vec<Plate> {
             )
         })
         .collect();
-    // Fig 1 first, Fig 4 after Fig 3: the lift slope against aspect ratio
-    out.insert(0, fig1());
-    out.insert(3, super::lifting_surface::fig4());
+    // Fig 4 after Fig 3: the lift slope against aspect ratio
+    out.insert(2, super::lifting_surface::fig4());
     out
+}
+
+/// Fig 1, the section before the rest of §6 (`super::SECTIONS`).
+pub fn wave_drag_plates(_study: &Study) -> Vec<Plate> {
+    vec![fig1()]
 }
 
 /// The edge parameters m = β cot Λ of Fig 1: by 0.02 to 1.2, through the

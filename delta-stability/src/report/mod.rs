@@ -64,9 +64,17 @@ pub struct Section {
 }
 
 /// The note's sections with figures, in its order.
-pub const SECTIONS: [Section; 6] = [
+///
+/// Fig 1, needing no study and quick, is a section of its own ahead of the
+/// rest of §6 (whose Fig 4 solves many lattices): the report's first
+/// files are written early.
+pub const SECTIONS: [Section; 7] = [
     Section {
-        title: "§6: wave drag, aerodynamic coefficients and stiffness derivatives (Figs 1–12; Fig 4 by the lifting surface)",
+        title: "§6: wave drag at zero lift (Fig 1)",
+        plates: coefficients::wave_drag_plates,
+    },
+    Section {
+        title: "§6: aerodynamic coefficients and stiffness derivatives (Figs 2–12; Fig 4 by the lifting surface)",
         plates: coefficients::plates,
     },
     Section {
