@@ -697,6 +697,18 @@ mod tests {
     }
 
     #[test]
+    fn the_csv_holds_the_curves_alone() {
+        let fig = crowded();
+        let csv = fig.to_csv();
+        let header = csv.lines().next().unwrap();
+        assert_eq!(header.split(',').count(), 1 + fig.series.len(), "{header}");
+        assert_eq!(csv.lines().count(), 1 + fig.series[0].points.len());
+        for word in ["faired", "sonic", "subsonic", "one cycle", "off scale"] {
+            assert!(!csv.contains(word), "{word}");
+        }
+    }
+
+    #[test]
     fn a_curve_off_scale_is_clipped_at_the_frame_with_an_arrow_and_a_note() {
         let fig = crowded();
         let svg = fig.to_svg().unwrap();
