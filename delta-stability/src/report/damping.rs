@@ -82,7 +82,7 @@ fn supersonic(study: &Study) -> [Plate; 2] {
                 "−z_θ̇",
                 |d| d.z_thetadot(),
             ),
-            "Eq (36) recovered (docs/damping-theories.md), h = 0.25; defined only for supersonic Mach numbers and subsonic leading edges.",
+            "Linear supersonic theory, h = 0.25, M > 1: eq (36) recovered (docs/damping-theories.md) while the leading edge is subsonic, the supersonic-edge theory past the dashed line where it turns sonic (continuous there; supersonic::edge_theory).",
         ),
         Plate::new(
             fig(
@@ -91,7 +91,7 @@ fn supersonic(study: &Study) -> [Plate; 2] {
                 "−m_θ̇",
                 |d| d.m_thetadot(),
             ),
-            "Eq (36), h = 0.25; §7's statement about the 45° delta at M = 1.2 is among the conclusions.",
+            "As Fig 16; §7's statement about the 45° delta at M = 1.2 (eq 36) is among the conclusions.",
         ),
     ]
 }
