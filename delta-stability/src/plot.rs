@@ -1,13 +1,23 @@
 //! Figures as SVG (plotters) and the data behind them as CSV.
+//!
+//! A [`Figure`] is its curves ([`Series`]) and what is drawn behind them:
+//! horizontal reference lines, shaded [`Band`]s (e.g. where a model is
+//! faired between theories), labelled [`VerticalLine`]s (e.g. where a
+//! wing's leading edge turns sonic) and [`Band`]s named along the top
+//! (`regions`). How it is drawn — the series' styles, the legend below the
+//! frame, the off-scale notes — is [`svg`]'s; the CSV ([`Figure::to_csv`])
+//! holds the curves' data only, its numbers written by [`num`].
 
-use plotters::prelude::*;
+mod legend;
+mod svg;
+
 use std::fmt::Write;
 
-/// The figure's size in the page (px).
-const WIDTH: u32 = 800;
-const HEIGHT: u32 = 520;
-/// The drawing's resolution relative to that.
-const SCALE: u32 = 4;
+/// Significant digits of a number in the CSV ([`num`]).
+pub const CSV_DIGITS: usize = 12;
+
+/// Significant digits of a number written on a figure (off-scale notes).
+pub const LABEL_DIGITS: usize = 3;
 
 /// One curve of a figure.
 #[derive(Debug, Clone, PartialEq)]
@@ -26,6 +36,24 @@ impl Series {
     }
 }
 
+/// A range of x: shaded behind the curves (`Figure::bands`, labelled once
+/// in the legend) or named along the top (`Figure::regions`). Either end
+/// may lie outside the figure's x range (infinite, say); it is drawn
+/// clipped to it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Band {
+    pub from: f64,
+    pub to: f64,
+    pub label: String,
+}
+
+/// A vertical dashed line at `x`, labelled above the frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VerticalLine {
+    pub x: f64,
+    pub label: String,
+}
+
 /// A line chart with labelled axes (units in the labels) and a legend.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
@@ -37,7 +65,13 @@ pub struct Figure {
     pub series: Vec<Series>,
     /// Horizontal reference lines (y, label), e.g. the one-cycle standard.
     pub reference_lines: Vec<(f64, String)>,
-    /// Fixed y range; automatic when `None`.
+    /// Shaded ranges of x behind the curves, each label once in the legend.
+    pub bands: Vec<Band>,
+    /// Ranges of x named along the top of the frame.
+    pub regions: Vec<Band>,
+    /// Vertical lines, labelled above the frame.
+    pub markers: Vec<VerticalLine>,
+    /// Fixed y range; automatic (every finite point inside) when `None`.
     pub y_range: Option<(f64, f64)>,
 }
 
@@ -55,6 +89,9 @@ impl Figure {
             y_label: y_label.into(),
             series: Vec::new(),
             reference_lines: Vec::new(),
+            bands: Vec::new(),
+            regions: Vec::new(),
+            markers: Vec::new(),
             y_range: None,
         }
     }
@@ -71,6 +108,8 @@ impl Figure {
             .filter(|(x, y)| x.is_finite() && y.is_finite())
     }
 
+    /// The axes' ranges: x over every finite point; y fixed, or over every
+    /// finite point and reference line with 5 % to spare.
     fn ranges(&self) -> ((f64, f64), (f64, f64)) {
         let (mut x0, mut x1, mut y0, mut y1) = (
             f64::INFINITY,
@@ -111,23 +150,6 @@ impl Figure {
         ((x0, x1), (y0, y1))
     }
 
-    /// The figure as an SVG document.
-    ///
-    /// plotters draws on a grid of whole pixels; the figure is drawn at
-    /// `SCALE` times its size and shown at 800 × 520 through the viewBox,
-    /// so that slowly varying curves are smooth, not stepped.
-    pub fn to_svg(&self) -> Result<String, String> {
-        let mut buf = String::new();
-        self.draw(&mut buf)
-            .map_err(|e| format!("figure {}: {e}", self.id))?;
-        let (w, h) = (WIDTH * SCALE, HEIGHT * SCALE);
-        Ok(buf.replacen(
-            &format!("width=\"{w}\" height=\"{h}\""),
-            &format!("width=\"{WIDTH}\" height=\"{HEIGHT}\""),
-            1,
-        ))
-    }
-
     /// The title as drawn: "Fig. 33 — …" for a figure of the note.
     fn caption(&self) -> String {
         if self.id.chars().all(|c| c.is_ascii_digit()) {
@@ -137,77 +159,64 @@ impl Figure {
         }
     }
 
-    fn draw(&self, buf: &mut String) -> Result<(), Box<dyn std::error::Error + '_>> {
-        let k = SCALE;
-        let root = SVGBackend::with_string(buf, (WIDTH * k, HEIGHT * k)).into_drawing_area();
-        let font = |size: u32| ("sans-serif", size * k);
-        root.fill(&WHITE)?;
-        let ((x0, x1), (y0, y1)) = self.ranges();
-        let mut chart = ChartBuilder::on(&root)
-            .caption(self.caption(), font(18))
-            .margin(14 * k)
-            .x_label_area_size(44 * k)
-            .y_label_area_size(70 * k)
-            .build_cartesian_2d(x0..x1, y0..y1)?;
-        chart
-            .configure_mesh()
-            .x_desc(self.x_label.as_str())
-            .y_desc(self.y_label.as_str())
-            .light_line_style(RGBColor(235, 235, 235))
-            .bold_line_style(BLACK.mix(0.2).stroke_width(k))
-            .axis_style(BLACK.stroke_width(k))
-            .label_style(font(12))
-            .axis_desc_style(font(13))
-            .set_all_tick_mark_size(4 * k)
-            .draw()?;
-        for (y, label) in &self.reference_lines {
-            let y = *y;
-            chart
-                .draw_series(LineSeries::new(
-                    [(x0, y), (x1, y)],
-                    BLACK.mix(0.6).stroke_width(k),
-                ))?
-                .label(label.as_str())
-                .legend(move |(x, yy)| {
-                    PathElement::new(
-                        vec![(x, yy), (x + 20 * k as i32, yy)],
-                        BLACK.mix(0.6).stroke_width(k),
-                    )
-                });
+    /// The x variable's symbol, for notes like "max 12.3 at M = 1.2": the
+    /// x label without its parenthesis, up to its first " = " ("t̂ = t/τ":
+    /// t̂), else its last word ("Mach number M": M).
+    fn x_symbol(&self) -> &str {
+        let label = self.x_label.split(" (").next().unwrap_or_default();
+        match label.split_once(" = ") {
+            Some((lhs, _)) => lhs,
+            None => label.rsplit(' ').next().unwrap_or(label),
         }
-        for (i, s) in self.series.iter().enumerate() {
-            let color = Palette99::pick(i).to_rgba();
-            let mut first = true;
-            for seg in segments(&s.points, y0, y1) {
-                let drawn = chart.draw_series(LineSeries::new(seg, color.stroke_width(2 * k)))?;
-                if first {
-                    drawn.label(s.label.as_str()).legend(move |(x, y)| {
-                        PathElement::new(
-                            vec![(x, y), (x + 20 * k as i32, y)],
-                            color.stroke_width(2 * k),
-                        )
-                    });
-                    first = false;
-                }
-            }
-        }
-        if !self.series.is_empty() || !self.reference_lines.is_empty() {
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK.mix(0.4))
-                .label_font(font(12))
-                .legend_area_size(28 * k)
-                .margin(10 * k)
-                .draw()?;
-        }
-        root.present()?;
-        Ok(())
+    }
+
+    /// Where series `s` leaves the y range [y0, y1]: its largest value
+    /// above, its smallest below, each as (x, y) — the off-scale notes.
+    fn excursions(s: &Series, (y0, y1): (f64, f64)) -> [Option<(f64, f64)>; 2] {
+        let finite = || {
+            s.points
+                .iter()
+                .copied()
+                .filter(|p| p.0.is_finite() && p.1.is_finite())
+        };
+        let above = finite()
+            .filter(|p| p.1 > y1)
+            .max_by(|a, b| a.1.total_cmp(&b.1));
+        let below = finite()
+            .filter(|p| p.1 < y0)
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        [above, below]
+    }
+
+    /// Series `s`'s note when it leaves the y range, for its legend entry:
+    /// "↑ off scale: max 12.3 at M = 1.2".
+    fn off_scale_note(&self, s: &Series, y: (f64, f64)) -> Option<String> {
+        let [above, below] = Self::excursions(s, y);
+        let say = |arrow: &str, what: &str, (x, v): (f64, f64)| {
+            format!(
+                "{arrow} off scale: {what} {} at {} = {}",
+                short(v),
+                self.x_symbol(),
+                short(x)
+            )
+        };
+        let notes: Vec<String> = [
+            above.map(|p| say("↑", "max", p)),
+            below.map(|p| say("↓", "min", p)),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        (!notes.is_empty()).then(|| notes.join("; "))
+    }
+
+    /// The figure as an SVG document (800 × 520).
+    pub fn to_svg(&self) -> Result<String, String> {
+        svg::render(self)
     }
 
     /// The data as CSV, one column per series sharing x when they do, else
-    /// long form (series, x, y).
+    /// long form (series, x, y). Bands, regions and lines are not data.
     pub fn to_csv(&self) -> String {
         let mut s = String::new();
         let shared_x = self.series.windows(2).all(|w| {
@@ -252,30 +261,36 @@ impl Figure {
     }
 }
 
-/// The drawable runs of a curve: split at non-finite points and at points
-/// far outside the y range [y0, y1].
-fn segments(points: &[(f64, f64)], y0: f64, y1: f64) -> Vec<Vec<(f64, f64)>> {
-    let mut out: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
-    for &(x, y) in points {
-        if x.is_finite() && y.is_finite() && y >= y0 - (y1 - y0) && y <= y1 + (y1 - y0) {
-            if let Some(seg) = out.last_mut() {
-                seg.push((x, y));
-            }
-        } else if out.last().is_some_and(|seg| !seg.is_empty()) {
-            out.push(Vec::new());
-        }
-    }
-    out.retain(|s| !s.is_empty());
-    out
+/// `v` rounded to `digits` significant digits (through the decimal
+/// representation, so that 0.5700000000000001 to 12 digits is the double
+/// nearest 0.57); −0 becomes 0.
+fn rounded(v: f64, digits: usize) -> f64 {
+    let r: f64 = format!("{v:.prec$e}", prec = digits.saturating_sub(1))
+        .parse()
+        .unwrap_or(v);
+    r + 0.0
 }
 
-/// A CSV number: empty for a non-finite value (never NaN in the output).
+/// A CSV number, the one rule for every number the figures write: rounded
+/// to [`CSV_DIGITS`] (12) significant digits, then written as the shortest
+/// decimal that reads back as that rounded value (Rust's `Display`, no
+/// exponent). So the Mach grid's 0.5 + 0.01·7 = 0.5700000000000001 is
+/// written 0.57 — float noise from building the grid is not data — while a
+/// computed value keeps 12 significant digits, more than any model here is
+/// accurate to, and a change in its last bits does not change the file.
+/// Empty for a non-finite value (never NaN in the output).
 pub fn num(v: f64) -> String {
     if v.is_finite() {
-        format!("{v}")
+        format!("{}", rounded(v, CSV_DIGITS))
     } else {
         String::new()
     }
+}
+
+/// A number written on a figure or its caption: [`LABEL_DIGITS`]
+/// significant digits, shortest form (12.3, 1.2, 100).
+pub fn short(v: f64) -> String {
+    format!("{}", rounded(v, LABEL_DIGITS))
 }
 
 /// A CSV field, quoted when needed.
@@ -292,35 +307,68 @@ mod tests {
     use super::*;
 
     #[test]
-    fn svg_has_axes_labels_and_legend() {
-        let fig = Figure::new("33", "Cycles to half amplitude", "Mach number M", "cycles")
-            .with(Series::new(
-                "45° delta",
-                vec![(0.5, 0.3), (1.0, f64::NAN), (1.5, 0.8)],
-            ))
-            .with(Series::new(
-                "60° delta",
-                vec![(0.5, 0.2), (1.0, 0.4), (1.5, 0.5)],
-            ));
-        let svg = fig.to_svg().unwrap();
-        assert!(svg.starts_with("<svg"));
-        for text in [
-            "Fig. 33",
-            "Mach number M",
-            "cycles",
-            "45° delta",
-            "60° delta",
-        ] {
-            assert!(svg.contains(text), "{text}");
-        }
-        assert!(!svg.contains("NaN"));
-    }
-
-    #[test]
     fn csv_shares_x_and_blanks_non_finite() {
         let fig = Figure::new("x", "t", "M", "y")
             .with(Series::new("a", vec![(0.5, 1.0), (1.0, f64::NAN)]))
             .with(Series::new("b", vec![(0.5, 2.0), (1.0, 3.0)]));
         assert_eq!(fig.to_csv(), "M,y [a],y [b]\n0.5,1,2\n1,,3\n");
+    }
+
+    #[test]
+    fn csv_numbers_carry_no_grid_noise_and_twelve_significant_digits() {
+        // the report's Mach grid, built as a + step·i
+        let ms = stability_core::study::grid(0.5, 2.0, 0.01);
+        assert_eq!(ms[7], 0.5 + 0.01 * 7.0);
+        assert_ne!(ms[7], 0.57, "the grid point carries float noise");
+        let fig = Figure::new("x", "t", "Mach number M", "y")
+            .with(Series::new("a", ms.iter().map(|&m| (m, m)).collect()));
+        let csv = fig.to_csv();
+        assert!(csv.lines().any(|l| l == "0.57,0.57"), "{csv}");
+        assert!(!csv.contains("00000000"), "{csv}");
+        // every x reads back as the decimal grid point, 0.50 … 2.00
+        for (i, line) in csv.lines().skip(1).enumerate() {
+            let x: f64 = line.split(',').next().unwrap().parse().unwrap();
+            let decimal = format!("{}.{:02}", (50 + i) / 100, (50 + i) % 100);
+            assert_eq!(x, decimal.parse::<f64>().unwrap(), "{line}");
+        }
+        // data keep 12 significant digits, whatever their magnitude
+        assert_eq!(num(0.11371015967272328), "0.113710159673");
+        assert_eq!(num(-123456.78901234567), "-123456.789012");
+        assert_eq!(num(1.0 / 3.0 * 1e-7), "0.0000000333333333333");
+        assert_eq!(num(2.0), "2");
+        assert_eq!(num(-0.0), "0");
+        assert_eq!(num(f64::NAN), "");
+        assert_eq!(num(f64::INFINITY), "");
+    }
+
+    #[test]
+    fn the_x_symbol_names_the_variable() {
+        let sym = |x: &str| Figure::new("1", "t", x, "y").x_symbol().to_string();
+        assert_eq!(sym("Mach number M"), "M");
+        assert_eq!(sym("t̂ = t/τ"), "t̂");
+        assert_eq!(sym("m = β cot Λ = cot Λ/tan μ"), "m");
+        assert_eq!(sym("aspect ratio A (true delta, A = 4 cot Λ)"), "A");
+        assert_eq!(sym("c.g. position h (fraction of M.A.C.)"), "h");
+    }
+
+    #[test]
+    fn a_curve_leaving_a_fixed_range_is_noted_with_its_extreme() {
+        let mut fig = Figure::new("33", "t", "Mach number M", "cycles").with(Series::new(
+            "45° delta",
+            vec![
+                (1.0, 2.0),
+                (1.02, 12.34),
+                (1.04, 7.0),
+                (1.1, -3.0),
+                (1.2, 1.0),
+            ],
+        ));
+        fig.y_range = Some((-2.0, 6.0));
+        let note = fig.off_scale_note(&fig.series[0], (-2.0, 6.0));
+        assert_eq!(
+            note.as_deref(),
+            Some("↑ off scale: max 12.3 at M = 1.02; ↓ off scale: min -3 at M = 1.1")
+        );
+        assert_eq!(fig.off_scale_note(&fig.series[0], (-5.0, 20.0)), None);
     }
 }

@@ -3,6 +3,7 @@
 //! damping derivatives (Figs 19–24), with Mangler's frequency-consistent
 //! theory near M = 1 beside them.
 
+use super::regimes::{self, Basis};
 use super::study::{WINGS, curve, label, mach_fig};
 use super::{Plate, Study};
 use crate::plot::{Figure, Series};
@@ -66,10 +67,12 @@ pub fn supersonic_series(ms: &[f64], deg: f64, f: fn(&DampingDerivatives) -> f64
 }
 
 fn supersonic(study: &Study) -> [Plate; 2] {
+    // one theory, no fairing: the sonic edges alone, where (36) ends
     let fig = |id: &str, title: &str, y: &str, f: fn(&DampingDerivatives) -> f64| {
-        WINGS.iter().fold(mach_fig(id, title, y), |fig, &deg| {
+        let fig = WINGS.iter().fold(mach_fig(id, title, y), |fig, &deg| {
             fig.with(supersonic_series(&study.ms, deg, f))
-        })
+        });
+        regimes::sonic_edges(fig, &WINGS)
     };
     [
         Plate::new(
@@ -79,7 +82,7 @@ fn supersonic(study: &Study) -> [Plate; 2] {
                 "−z_θ̇",
                 |d| d.z_thetadot(),
             ),
-            "Eq (36) recovered (docs/damping-theories.md), h = 0.25; defined only for supersonic Mach numbers and subsonic leading edges.",
+            "Linear supersonic theory, h = 0.25, M > 1: eq (36) recovered (docs/damping-theories.md) while the leading edge is subsonic, the supersonic-edge theory past the dashed line where it turns sonic (continuous there; supersonic::edge_theory).",
         ),
         Plate::new(
             fig(
@@ -88,7 +91,7 @@ fn supersonic(study: &Study) -> [Plate; 2] {
                 "−m_θ̇",
                 |d| d.m_thetadot(),
             ),
-            "Eq (36), h = 0.25; §7's statement about the 45° delta at M = 1.2 is among the conclusions.",
+            "As Fig 16; §7's statement about the 45° delta at M = 1.2 (eq 36) is among the conclusions.",
         ),
     ]
 }
@@ -99,7 +102,7 @@ fn fig18() -> Plate {
         Figure::new(
             "18",
             "Functions H, E in the theory of Mangler, Ribner & Malvestuto",
-            "β cot Λ = cot Λ/cot μ",
+            "β cot Λ = cot Λ/tan μ",
             "value",
         )
         .with(Series::new(
@@ -179,7 +182,7 @@ fn faired(study: &Study) -> Vec<Plate> {
                 "20" => format!("As Fig 19; {}", positive_zwdot(study)),
                 _ => "As Fig 19.".to_string(),
             };
-            Plate::new(fig, caption)
+            Plate::new(regimes::faired(fig, study, &WINGS, Basis::Damping), caption)
         })
         .collect()
 }

@@ -1,11 +1,13 @@
 //! The note's whole study on its built-in cases (`delta-stability report`):
-//! the figures it draws, grouped as the note groups them — §6 coefficients
-//! and stiffness ([`coefficients`], Figs 2–12), §7 damping ([`damping`],
-//! 13–24; the lifting-surface Figs 4 and 14–15 from [`lifting_surface`]),
-//! §8 the standard ([`standard`], 25–26), §9 the quartic and
-//! margins ([`quartic`], 27–35), §10 taper ([`taper`], 36), §11 responses
-//! ([`responses`], 37–38) — then the [`summary`] of what was found, the
-//! note's [`conclusions`] set beside it, and the page ([`html`]).
+//! the figures it draws, grouped as the note groups them — §6 wave drag,
+//! coefficients and stiffness ([`coefficients`], Figs 1–12), §7 damping
+//! ([`damping`], 13–24; the lifting-surface Figs 4 and 14–15 from
+//! [`lifting_surface`]), §8 the standard ([`standard`], 25–26), §9 the
+//! quartic and margins ([`quartic`], 27–35), §10 taper ([`taper`], 36),
+//! §11 responses ([`responses`], 37–38), with the regime bands and sonic
+//! edges of [`regimes`] on those against Mach number — then the
+//! [`summary`] of what was found, the note's [`conclusions`] set beside
+//! it, and the page ([`html`]).
 //!
 //! Everything here computes; writing the files is `cmd::report`'s.
 
@@ -15,6 +17,7 @@ pub mod damping;
 pub mod html;
 pub mod lifting_surface;
 pub mod quartic;
+pub mod regimes;
 pub mod responses;
 pub mod standard;
 pub mod study;
@@ -61,7 +64,15 @@ pub struct Section {
 }
 
 /// The note's sections with figures, in its order.
-pub const SECTIONS: [Section; 6] = [
+///
+/// Fig 1, needing no study and quick, is a section of its own ahead of the
+/// rest of §6 (whose Fig 4 solves many lattices): the report's first
+/// files are written early.
+pub const SECTIONS: [Section; 7] = [
+    Section {
+        title: "§6: wave drag at zero lift (Fig 1)",
+        plates: coefficients::wave_drag_plates,
+    },
     Section {
         title: "§6: aerodynamic coefficients and stiffness derivatives (Figs 2–12; Fig 4 by the lifting surface)",
         plates: coefficients::plates,

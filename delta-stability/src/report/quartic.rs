@@ -2,7 +2,8 @@
 //! (32) and cycles to half amplitude (33), the static and manoeuvre
 //! margins (34–35).
 
-use super::study::{across, curve};
+use super::regimes::{self, Basis};
+use super::study::{WINGS, across, curve};
 use super::{Plate, Study};
 use stability_core::case::{Case, CaseResult};
 use stability_core::criteria::Margins;
@@ -22,13 +23,22 @@ pub fn plates(study: &Study) -> Vec<Plate> {
         let fig = study.pair(id, &title, name, &|r| {
             Some(r.analysis.quartic.to_array()[k])
         });
-        Plate::new(fig, "Eq (6) corrected (docs/errata.md); μ₁ = 50.")
+        Plate::new(
+            faired(fig, study),
+            "Eq (6) corrected (docs/errata.md); μ₁ = 50.",
+        )
     })
     .collect();
     out.push(fig32(study));
     out.push(fig33(study));
     out.extend(margins(study));
     out
+}
+
+/// A figure of the note's two wings with the regimes of the coefficients
+/// and the damping derivatives both: the quartic is built on both.
+fn faired(fig: crate::plot::Figure, study: &Study) -> crate::plot::Figure {
+    regimes::faired(fig, study, &WINGS, Basis::Both)
 }
 
 fn fig32(study: &Study) -> Plate {
@@ -43,7 +53,7 @@ fn fig32(study: &Study) -> Plate {
                 .and_then(|m| m.frequency_parameter)
         },
     );
-    for (k, &deg) in super::study::WINGS.iter().enumerate() {
+    for (k, &deg) in WINGS.iter().enumerate() {
         f = f.with(curve(
             &format!("{deg}°, √(−m_w/(μ₁i_B)) (§9)"),
             &study.ms,
@@ -52,7 +62,7 @@ fn fig32(study: &Study) -> Plate {
         ));
     }
     Plate::new(
-        f,
+        faired(f, study),
         "The exact short period's ω̄ = s/μ₁ beside §9's first approximation √(−m_w/(μ₁i_B)); how close they are is among the conclusions.",
     )
 }
@@ -88,7 +98,7 @@ pub fn fig33(study: &Study) -> Plate {
     let diverges = f.series.iter().any(|s| s.points.iter().any(|p| p.1 < 0.0));
     f.y_range = Some((if diverges { -2.0 } else { 0.0 }, 6.0));
     Plate::new(
-        f,
+        faired(f, study),
         "Exact roots; 0 where the short period is not oscillatory. The report's Fig 33: serious instability of the 45° delta for 0.97 < M < 1.5; the 60° delta adequate for μ₁ below about 200.",
     )
 }
@@ -103,20 +113,26 @@ fn margins(study: &Study) -> [Plate; 2] {
     };
     [
         Plate::new(
-            study.pair(
-                "34",
-                "Contribution of the wing to the static margin",
-                "K_n (eq 42)",
-                &|r| of(r).static_margin,
+            faired(
+                study.pair(
+                    "34",
+                    "Contribution of the wing to the static margin",
+                    "K_n (eq 42)",
+                    &|r| of(r).static_margin,
+                ),
+                study,
             ),
             "From E by eq (42).",
         ),
         Plate::new(
-            study.pair(
-                "35",
-                "Contribution of the wing to the manoeuvre margin",
-                "H_m (§9)",
-                &|r| of(r).manoeuvre_margin,
+            faired(
+                study.pair(
+                    "35",
+                    "Contribution of the wing to the manoeuvre margin",
+                    "H_m (§9)",
+                    &|r| of(r).manoeuvre_margin,
+                ),
+                study,
             ),
             "From C by §9's relation C ≈ (μ₁/i_B)(∂C_L/∂α)H_m (sign corrected, see criteria.rs).",
         ),

@@ -1,6 +1,7 @@
 //! §8: the one-cycle damping standard's margin Δm_θ̇ (eq 41) across sweep
 //! (Fig 25), μ₁ and c.g. position (Fig 26).
 
+use super::regimes::{self, Basis};
 use super::study::{across, curve, label, mach_fig};
 use super::{Plate, Study};
 use stability_core::case::{Case, CaseResult};
@@ -12,10 +13,12 @@ pub fn margin(r: &CaseResult) -> Option<f64> {
 
 /// The sweeps of Fig 25.
 pub const SWEEPS: [f64; 4] = [30.0, 45.0, 60.0, 75.0];
-/// The relative densities of Fig 26 (60° delta) …
+/// The relative densities of Fig 26, on the delta of this sweep …
 pub const MU1S: [f64; 4] = [50.0, 100.0, 200.0, 400.0];
-/// … and its c.g. positions (45° delta).
+pub const MU1S_WING: f64 = 60.0;
+/// … and its c.g. positions, on the delta of this sweep.
 pub const CGS: [f64; 2] = [0.15, 0.35];
+pub const CGS_WING: f64 = 45.0;
 
 pub fn plates(study: &Study) -> Vec<Plate> {
     let ms = &study.ms;
@@ -34,14 +37,16 @@ pub fn plates(study: &Study) -> Vec<Plate> {
         "Δm_θ̇ (eq 41)",
     );
     for mu1 in MU1S {
-        let rs = across(60.0, ms, |c| Case { mu1, ..c });
-        f26 = f26.with(curve(&format!("60°, μ₁ = {mu1}"), ms, &rs, margin));
+        let rs = across(MU1S_WING, ms, |c| Case { mu1, ..c });
+        f26 = f26.with(curve(&format!("{MU1S_WING}°, μ₁ = {mu1}"), ms, &rs, margin));
     }
     for h in CGS {
-        let rs = across(45.0, ms, |c| Case { h, ..c });
-        f26 = f26.with(curve(&format!("45°, h = {h}"), ms, &rs, margin));
+        let rs = across(CGS_WING, ms, |c| Case { h, ..c });
+        f26 = f26.with(curve(&format!("{CGS_WING}°, h = {h}"), ms, &rs, margin));
     }
     f26.reference_lines.push((0.0, "standard met above".into()));
+    let f25 = regimes::faired(f25, study, &SWEEPS, Basis::Both);
+    let f26 = regimes::faired(f26, study, &[MU1S_WING, CGS_WING], Basis::Both);
     vec![
         Plate::new(
             f25,

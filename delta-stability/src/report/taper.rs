@@ -1,6 +1,7 @@
 //! §10: the effect of taper on the damping in pitch (Fig 36): the 45°
 //! delta with its tips cropped to taper 1/7, the c.g. held in place.
 
+use super::regimes::{self, Basis};
 use super::study::{across, curve, mach_fig};
 use super::{Plate, Study};
 use crate::fmt::sig;
@@ -46,7 +47,7 @@ pub fn plates(study: &Study) -> Vec<Plate> {
         m_thetadot,
     ));
     vec![Plate::new(
-        fig,
+        regimes::faired(fig, study, &[45.0], Basis::Both),
         "§10: cropping the tips acts like a shift of axis; the cropped wing's theories are the true delta's at its own aspect ratio.",
     )]
 }

@@ -1,0 +1,226 @@
+//! What the figures against Mach number show behind their curves: where a
+//! curve is faired between theories (a shaded band, "faired between
+//! theories" in the legend; the theories on either side named along the
+//! top), and where each wing's leading edge turns sonic (a labelled dashed
+//! line). Each is read from the library, where it is defined once:
+//!
+//! - the damping derivatives' joins (Figs 19–24): the faired model's
+//!   regimes, `stability_core::faired::regimes` — lifting surface to 0.9,
+//!   faired to Mangler's theory at 1 and on to linear theory at 1.2;
+//! - the coefficients' joins (Figs 2–3, 5–12): as the study's results say
+//!   their coefficients were had (`aero::Origin`) — the methods of
+//!   `aero::defaults` are faired between `SUBSONIC_LIMIT` and
+//!   `SUPERSONIC_LIMIT` (0.8 to 1.2); a coefficient of the faired model's
+//!   own theories has its joins;
+//! - the figures built on both (the standard, the quartic, the margins,
+//!   taper: Figs 25–36) shade the union;
+//! - the sonic leading edge, M = 1/cos Λ (`geometry::sonic_leading_edge_mach`:
+//!   45°, √2; 60°, 2), where the supersonic theories change — (36) to the
+//!   supersonic-edge theory in the faired model, the lift slope's two forms
+//!   in the methods.
+//!
+//! Not on the figures of one theory (13, 16–18: Figs 16–17 get the sonic
+//! edge alone, where (36) ends), against aspect ratio (4, 14–15), edge
+//! parameter (1) or time (37–38).
+
+use super::Study;
+use crate::plot::{Band, Figure, VerticalLine};
+use stability_core::aero::{Origin, defaults};
+use stability_core::case::CaseResult;
+use stability_core::faired::{self, RegimeKind};
+use stability_core::geometry::{Planform, Size, sonic_leading_edge_mach};
+
+/// What a figure's curves are built from, so which joins it shows.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Basis {
+    /// The coefficients and stiffness derivatives of §6.
+    Coefficients,
+    /// The damping derivatives of §7.
+    Damping,
+    /// Both: the standard, the quartic and what follows from it.
+    Both,
+}
+
+/// The note's delta of leading-edge sweep `deg` (degrees), as the faired
+/// model's regimes take it.
+fn delta(deg: f64) -> Option<Planform> {
+    Planform::new(deg.to_radians(), 0.0, Size::RootChord(1.0)).ok()
+}
+
+/// The faired model's regimes of the delta of sweep `deg`.
+fn regimes(deg: f64) -> Vec<faired::Regime> {
+    delta(deg).map_or_else(Vec::new, |p| faired::regimes(&p))
+}
+
+/// The bands' label, the faired model's own words.
+fn faired_label() -> &'static str {
+    regimes(45.0)
+        .iter()
+        .find(|r| r.kind == RegimeKind::Faired)
+        .map_or("faired between theories", |r| r.label)
+}
+
+/// The damping derivatives' joins for the wings of sweeps `sweeps`.
+fn damping_joins(sweeps: &[f64]) -> Vec<(f64, f64)> {
+    sweeps
+        .iter()
+        .flat_map(|&deg| regimes(deg))
+        .filter(|r| r.kind == RegimeKind::Faired)
+        .map(|r| (r.from, r.to))
+        .collect()
+}
+
+/// The coefficients' joins, as the results had them.
+fn coefficient_joins<'a>(results: impl Iterator<Item = &'a CaseResult>) -> Vec<(f64, f64)> {
+    let methods = (defaults::SUBSONIC_LIMIT, defaults::SUPERSONIC_LIMIT);
+    let mut out = Vec::new();
+    for r in results {
+        let o = r.coefficients.origin;
+        for origin in [
+            o.lift_slope,
+            o.zero_lift_drag,
+            o.drag_due_to_lift,
+            o.aerodynamic_centre,
+        ] {
+            match origin {
+                Origin::Method => out.push(methods),
+                Origin::DampingModel(_) | Origin::LiftingSurface => out.extend(faired::JOINS),
+                Origin::Table => {}
+            }
+        }
+    }
+    out
+}
+
+/// The union of intervals, as disjoint intervals in order (touching ones
+/// joined).
+fn merged(mut joins: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+    joins.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut out: Vec<(f64, f64)> = Vec::new();
+    for (a, b) in joins {
+        match out.last_mut() {
+            Some(last) if a <= last.1 => last.1 = last.1.max(b),
+            _ => out.push((a, b)),
+        }
+    }
+    out
+}
+
+/// `fig` with the bands where its curves (built on `basis` for the wings of
+/// `sweeps`) are faired between theories, the theories' regions named
+/// along the top, and the wings' sonic leading edges.
+pub fn faired(mut fig: Figure, study: &Study, sweeps: &[f64], basis: Basis) -> Figure {
+    let mut joins = Vec::new();
+    if basis != Basis::Damping {
+        joins.extend(coefficient_joins(study.results.iter().flatten().flatten()));
+    }
+    if basis != Basis::Coefficients {
+        joins.extend(damping_joins(sweeps));
+    }
+    let bands = merged(joins);
+    let label = faired_label();
+    fig.bands = bands
+        .iter()
+        .map(|&(from, to)| Band {
+            from,
+            to,
+            label: label.into(),
+        })
+        .collect();
+    if let (Some(first), Some(last)) = (bands.first(), bands.last()) {
+        let region = |from, to, label: &str| Band {
+            from,
+            to,
+            label: label.into(),
+        };
+        fig.regions = std::iter::once(region(f64::NEG_INFINITY, first.0, "subsonic theory"))
+            .chain(bands.iter().map(|&(a, b)| region(a, b, "faired")))
+            .chain(std::iter::once(region(
+                last.1,
+                f64::INFINITY,
+                "supersonic theory",
+            )))
+            .collect();
+    }
+    sonic_edges(fig, sweeps)
+}
+
+/// `fig` with a dashed line where the leading edge of each wing of
+/// `sweeps` turns sonic, "45° edge sonic".
+pub fn sonic_edges(mut fig: Figure, sweeps: &[f64]) -> Figure {
+    for &deg in sweeps {
+        let x = sonic_leading_edge_mach(deg.to_radians());
+        if !fig.markers.iter().any(|m| m.x == x) {
+            fig.markers.push(VerticalLine {
+                x,
+                label: format!("{deg}° edge sonic"),
+            });
+        }
+    }
+    fig
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_sonic_edge_is_where_the_faired_model_changes_theory() {
+        for (deg, edge) in [(45.0, 2f64.sqrt()), (60.0, 2.0)] {
+            let x = sonic_leading_edge_mach(f64::to_radians(deg));
+            assert!((x - edge).abs() < 1e-12, "{deg}°: {x}");
+            let r = regimes(deg);
+            let sup = r
+                .iter()
+                .find(|r| r.kind == RegimeKind::SupersonicEdge)
+                .unwrap();
+            assert_eq!(sup.from, x, "{deg}°");
+        }
+    }
+
+    /// The band of a coefficient figure is where its curve is faired:
+    /// below it the lift slope (Fig 5) is the subsonic method's, above it
+    /// the supersonic method's, inside it neither.
+    #[test]
+    fn the_coefficients_band_is_where_the_lift_slope_is_neither_method() {
+        use stability_core::case::evaluate;
+        use stability_core::study::{grid, report_wing};
+        let ms = grid(0.5, 2.0, 0.02);
+        let results: Vec<(f64, CaseResult)> = ms
+            .iter()
+            .filter_map(|&m| evaluate(&report_wing(45.0, m)).ok().map(|r| (m, r)))
+            .collect();
+        assert_eq!(results.len(), ms.len());
+        let bands = merged(coefficient_joins(results.iter().map(|(_, r)| r)));
+        let [(from, to)] = bands[..] else {
+            panic!("{bands:?}")
+        };
+        let p = delta(45.0).unwrap();
+        for (m, r) in &results {
+            let a = r.coefficients.lift_slope.value;
+            let sub = defaults::lift_slope_subsonic(&p, *m).value;
+            let sup = defaults::lift_slope_supersonic(&p, *m).value;
+            let same = |b: f64| (a - b).abs() < 1e-9 * b.abs();
+            if *m <= from {
+                assert!(same(sub), "M = {m}: {a} vs {sub}");
+            } else if *m >= to {
+                assert!(same(sup), "M = {m}: {a} vs {sup}");
+            } else {
+                assert!(!same(sub) && !same(sup), "M = {m}: {a}");
+            }
+        }
+    }
+
+    #[test]
+    fn joins_merge_into_disjoint_bands() {
+        assert_eq!(
+            merged(vec![(1.0, 1.2), (0.8, 1.2), (0.9, 1.0), (1.5, 1.6)]),
+            vec![(0.8, 1.2), (1.5, 1.6)]
+        );
+        // the faired model's two joins touch at M = 1: one band, 0.9 to 1.2
+        assert_eq!(
+            merged(damping_joins(&[45.0, 60.0])),
+            vec![(faired::LIFTING_SURFACE_LIMIT, faired::SUPERSONIC_FROM)]
+        );
+    }
+}
