@@ -124,7 +124,7 @@ fn the_faired_model_joins_its_theories_continuously_and_smoothly() {
 
 #[test]
 fn the_faired_models_lift_slope_and_aerodynamic_centre_are_its_theories() {
-    for deg in [45.0, 60.0] {
+    for deg in [45.0_f64, 60.0] {
         let p = Planform::new(deg.to_radians(), 0.0, Size::RootChord(10.0)).unwrap();
         let own = |m: f64| {
             evaluate(&case(deg, m, 50.0, DampingModel::Faired))

@@ -1,6 +1,7 @@
 //! The library sweep (`stability_core::sweep`): each point's values are
 //! those `case::evaluate_point` gives that design point alone — for the
-//! slender and faired models, the lifting surface (solved once per planform
+//! slender and faired models (the faired model's frequency iteration
+//! interpolated in the lattice's tables), the lifting surface (solved once per planform
 //! and Mach number, reused across c.g., μ₁ and i_B), and the frequency
 //! iteration (with direct solves exactly; interpolated within the table's
 //! accuracy) — its errors are the points', and the columns line up.
@@ -81,25 +82,40 @@ fn assert_alone(sweep: &Sweep, points: &Points, harmonic: Harmonic, tol: f64) {
 
 #[test]
 fn each_point_is_the_design_point_alone() {
-    for (damping, aero) in [
-        (DampingModel::Faired, AeroModelName::Default),
+    // the faired model iterates each point's ω̄, in a sweep by the lattice's
+    // frequency tables (`Harmonic::Interpolated`): its points are
+    // `evaluate_point_with` the same, bit for bit
+    for (damping, aero, harmonic) in [
+        (
+            DampingModel::Faired,
+            AeroModelName::Default,
+            Harmonic::Interpolated,
+        ),
+        (
+            DampingModel::FairedSlender,
+            AeroModelName::Default,
+            Harmonic::Direct,
+        ),
         (
             DampingModel::Theory(Theory::Slender),
             AeroModelName::Default,
+            Harmonic::Direct,
         ),
         (
             DampingModel::Theory(Theory::LiftingSurface),
             AeroModelName::Default,
+            Harmonic::Direct,
         ),
         (
             DampingModel::Theory(Theory::LiftingSurface),
             AeroModelName::LiftingSurface,
+            Harmonic::Direct,
         ),
     ] {
         let b = base(damping, aero);
         let sweep = Sweep::new(b.clone(), axes()).unwrap();
         let points = sweep.run(true);
-        assert_alone(&sweep, &points, Harmonic::Direct, 0.0);
+        assert_alone(&sweep, &points, harmonic, 0.0);
         // evaluated in pieces, the same columns
         let mut again = sweep.evaluate(0..17, true);
         let rest = sweep.evaluate(17..sweep.len(), true);
@@ -261,7 +277,8 @@ fn a_physical_sweep_gives_each_planform_its_own_flight_parameters() {
             (own.mu1(), own.i_b(), own.cl_m2())
         );
         assert_eq!(points.mu1[i], own.mu1());
-        let alone = evaluate_point(&case).unwrap();
+        // (the faired model: its lattice interpolated, as the sweep has it)
+        let alone = evaluate_point_with(&case, Harmonic::Interpolated).unwrap();
         assert_eq!(
             points.sp_re[i].to_bits(),
             alone.analysis.modes.short_period().unwrap().re.to_bits()

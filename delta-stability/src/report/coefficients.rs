@@ -38,14 +38,14 @@ const FIGURES: [(&str, &str, &str, Of, &str); 10] = [
         "Slope of the lift curve",
         "∂C_L/∂α (per radian)",
         |r| r.coefficients.lift_slope.value,
-        "DATCOM subsonic, linear conical-flow theory supersonic, faired between.",
+        "The faired model's own: the doublet lattice's steady lift slope to M = 0.9, linear supersonic theory's (36) from 1.2 (4/β past the sonic leading edge), a monotone cubic between (docs/models.md).",
     ),
     (
         "6",
         "Aerodynamic centre",
         "H₀ (fraction of M.A.C.)",
         |r| r.coefficients.aerodynamic_centre.value,
-        "Slender-wing to two-dimensional blend subsonic; ½ supersonic.",
+        "The faired model's own: the doublet lattice's neutral point to M = 0.9, linear theory's ½ (two-thirds of the root chord) from 1.2, a monotone cubic between.",
     ),
     (
         "7",

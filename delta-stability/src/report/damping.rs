@@ -167,7 +167,7 @@ fn positive_zwdot(study: &Study) -> String {
 }
 
 fn faired(study: &Study) -> Vec<Plate> {
-    let base = "Faired theories: slender wing (37) to M = 1, blended into (36) by M = 1.2; beside them Mangler's (39)–(40) with ω̄ iterated to the short period's own frequency.";
+    let base = "The faired model (docs/damping-theories.md): the doublet lattice at the short period's own ω̄ to M = 0.9, Mangler's (39)–(40) at M = 1, linear supersonic theory (36) from 1.2 (the supersonic-edge theory past the sonic leading edge), joined by monotone cubics in the shaded bands; beside them Mangler's (39)–(40) alone, ω̄ iterated, near M = 1.";
     FAIRED
         .iter()
         .map(|&(id, title, y, f)| {
