@@ -24,8 +24,9 @@
 //! or that the verdict holds over the whole range; a reversal and its undoing
 //! within one step would not be seen.
 
+use super::standard::CGS;
 use super::study::{Assumed, Assumption, Study, WINGS};
-use super::summary::{CG_FORWARD_AFT, CROPPED_TAPER, Findings, SWEEPS, Worst, show_intervals};
+use super::summary::{CROPPED_TAPER, Findings, SWEEPS_ABOUT_60, Worst, show_intervals};
 use crate::fmt::sig;
 use serde::Serialize;
 use stability_core::faired::{LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM};
@@ -530,10 +531,10 @@ fn diminishing_returns(f: &Findings) -> Assessment {
         agreement: Agreement::at_least(s, DIMINISHING_AGREES, DIMINISHING_PARTLY),
         computed: format!(
             "The margin Δm_θ̇ (eq 41) gained from {}° to {}° and from {}° to {}°: on average over Mach number {} then {}; the second at most half the first (or none where the first is none) at M {} ({} of the Mach numbers).",
-            SWEEPS[0],
-            SWEEPS[1],
-            SWEEPS[1],
-            SWEEPS[2],
+            SWEEPS_ABOUT_60[0],
+            SWEEPS_ABOUT_60[1],
+            SWEEPS_ABOUT_60[1],
+            SWEEPS_ABOUT_60[2],
             sig(mean(0), 2),
             sig(mean(1), 2),
             where_true(&holds),
@@ -634,7 +635,7 @@ fn omega_maximum(f: &Findings) -> Assessment {
 /// half of them).
 fn forward_cg(f: &Findings) -> Assessment {
     let better = f.forward_cg_better();
-    let [fwd, aft] = CG_FORWARD_AFT;
+    let [fwd, aft] = CGS;
     Assessment {
         agreement: Agreement::at_least(share(better), 1.0, 0.5),
         computed: format!(

@@ -12,7 +12,7 @@
 use super::Study;
 use super::conclusions::{ConclusionJson, Judged, conclusions_json};
 use super::quartic::cycles;
-use super::standard::margin;
+use super::standard::{CGS, margin};
 use super::study::{Assumed, WINGS};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -31,13 +31,9 @@ pub fn mu1_machs() -> Vec<f64> {
     grid(0.5, 2.0, 0.05)
 }
 
-/// The c.g. positions of Fig 26 that §8's "forward movement of the C.G."
-/// compares: forward, aft.
-pub const CG_FORWARD_AFT: [f64; 2] = [0.15, 0.35];
-
-/// The sweeps §8 compares for its diminishing returns (Fig 25): 45°, 60°,
-/// 75°.
-pub const SWEEPS: [f64; 3] = [45.0, 60.0, 75.0];
+/// The sweeps §8's diminishing returns are judged on: its 60°, and Fig 25's
+/// sweeps either side of it.
+pub const SWEEPS_ABOUT_60: [f64; 3] = [45.0, 60.0, 75.0];
 
 /// §10's cropped tips: taper λ = 1/7 (as Fig 36).
 pub const CROPPED_TAPER: f64 = 1.0 / 7.0;
@@ -306,12 +302,12 @@ impl Findings {
     }
 
     /// Whether the 45° delta's margin Δm_θ̇ (eq 41) is larger with the c.g.
-    /// forward than aft ([`CG_FORWARD_AFT`]), by Mach number.
+    /// forward than aft (Fig 26's c.g. positions, `standard::CGS`), by Mach
+    /// number.
     pub fn forward_cg_better(&self) -> &[(f64, bool)] {
         self.forward_cg_better.get_or_init(|| {
             let ms = &self.study.ms;
-            let [fwd, aft] =
-                CG_FORWARD_AFT.map(|h| self.study.across(45.0, ms, |c| Case { h, ..c }));
+            let [fwd, aft] = CGS.map(|h| self.study.across(WINGS[0], ms, |c| Case { h, ..c }));
             ms.iter()
                 .zip(fwd.iter().zip(&aft))
                 .filter_map(|(&m, (a, b))| Some((m, margin(a.as_ref()?)? > margin(b.as_ref()?)?)))
@@ -324,7 +320,7 @@ impl Findings {
     /// on the unstated inputs.)
     pub fn m_thetadot_36(&self) -> &[(f64, f64)] {
         self.m_thetadot_36.get_or_init(|| {
-            let case = report_wing(45.0, SUPERSONIC_FROM);
+            let case = report_wing(WINGS[0], SUPERSONIC_FROM);
             let wing = WingInput::from(&case.planform);
             practical_cg_range()
                 .iter()
@@ -347,9 +343,14 @@ impl Findings {
 
     fn crop(&self, deg: f64) -> Option<Cropping> {
         let sweep = deg.to_radians();
-        let h = cropped_h(0.25, sweep, CROPPED_TAPER).ok()?;
-        let planform = Planform::new(sweep, CROPPED_TAPER, Size::RootChord(10.0)).ok()?;
         let case = self.study.case(deg, SUPERSONIC_FROM);
+        let h = cropped_h(case.h, sweep, CROPPED_TAPER).ok()?;
+        let planform = Planform::new(
+            sweep,
+            CROPPED_TAPER,
+            Size::RootChord(case.planform.root_chord),
+        )
+        .ok()?;
         let m_thetadot = |c: &Case| -> Option<f64> {
             let r = stability_core::case::evaluate_point(c).ok()?;
             Some(-r.damping.derivatives.m_thetadot())
@@ -365,12 +366,12 @@ impl Findings {
         })
     }
 
-    /// The margin Δm_θ̇ (eq 41) of the wings of [`SWEEPS`] by Mach number
+    /// The margin Δm_θ̇ (eq 41) of the wings of [`SWEEPS_ABOUT_60`] by Mach number
     /// (where all three have one), as Fig 25.
     pub fn sweep_margins(&self) -> &[(f64, [f64; 3])] {
         self.sweep_margins.get_or_init(|| {
             let s = &self.study;
-            let extra = s.across(SWEEPS[2], &s.ms, |c| c);
+            let extra = s.across(SWEEPS_ABOUT_60[2], &s.ms, |c| c);
             let at = |rs: &[Option<CaseResult>], i: usize| rs[i].as_ref().and_then(margin);
             (0..s.ms.len())
                 .filter_map(|i| {
