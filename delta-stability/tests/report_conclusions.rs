@@ -10,6 +10,7 @@ mod common;
 use common::{Scratch, path, run_ok, stdout};
 use delta_stability::report::Study;
 use delta_stability::report::conclusions::{Agreement, CONCLUSIONS, Judged, judge_all};
+use delta_stability::report::study::Assumption;
 use delta_stability::report::summary::{Findings, Worst};
 use stability_core::study::intervals;
 
@@ -81,6 +82,35 @@ fn each_conclusions_verdict_is_the_expected_one() {
         reversed.is_empty(),
         "findings reversed — explain each, then update EXPECTED:\n{}",
         reversed.join("\n")
+    );
+}
+
+/// A conclusion declared independent of the unstated inputs (not swept) is
+/// judged the same, to the word, with both at the far ends of their ranges:
+/// the declaration is checked, not trusted.
+#[test]
+fn a_conclusion_not_swept_does_not_depend_on_the_unstated_inputs() {
+    let ours = Findings::new(Study::new());
+    let far = Assumption::ALL
+        .iter()
+        .fold(ours.assumed(), |a, x| x.set(a, x.range().1));
+    let other = Findings::new(Study::assuming(far));
+    let independent: Vec<_> = CONCLUSIONS
+        .iter()
+        .filter(|c| c.depends_on.is_empty())
+        .collect();
+    assert!(!independent.is_empty());
+    for c in independent {
+        assert_eq!((c.assess)(&ours), (c.assess)(&other), "{}", c.id);
+    }
+    // while one that is swept does change there (ω̄ ≈ √(−m_w/(μ₁i_B)))
+    let swept = CONCLUSIONS
+        .iter()
+        .find(|c| c.id == "omega-maximum")
+        .unwrap();
+    assert_ne!(
+        (swept.assess)(&ours).computed,
+        (swept.assess)(&other).computed
     );
 }
 
