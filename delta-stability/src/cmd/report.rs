@@ -10,9 +10,10 @@
 use crate::Failure;
 use crate::diag::IoError;
 use crate::files::write_error;
-use crate::fmt::sig;
 use crate::output::AtomicDir;
-use crate::report::{SECTIONS, Study, conclusions, html, summary};
+use crate::report::conclusions::{self, Judged};
+use crate::report::summary::{self, Findings};
+use crate::report::{SECTIONS, Study, html};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::path::Path;
 
@@ -70,55 +71,84 @@ pub fn run(out: &Path) -> Result<(), Failure> {
         dir.write(name, bytes)
             .map_err(|e| Failure::Io(write_error(&dir.path().join(name), &e)))
     };
-    let bar = progress_bar(SECTIONS.len() + 2);
+    let bar = progress_bar(SECTIONS.len() + 3);
     bar.set_message("the 45° and 60° deltas across Mach number");
     let study = Study::new();
     bar.inc(1);
-    let mut plates = Vec::new();
+    let mut sections = Vec::new();
     for section in &SECTIONS {
         bar.set_message(section.title);
-        for p in (section.plates)(&study) {
+        let plates = (section.plates)(&study);
+        for p in &plates {
             for (name, bytes) in p
                 .files()
                 .map_err(|m| IoError::new("cannot draw", &out.join(p.name()), m))?
             {
                 write(&name, &bytes)?;
             }
-            plates.push(p);
         }
+        sections.push((section.title, plates));
         bar.inc(1);
     }
     bar.set_message("summary: intervals and the largest μ₁ (bisection)");
-    let findings = summary::findings(&study);
-    let json = serde_json::to_string_pretty(&summary::summary_json(&findings)).unwrap_or_default();
+    let findings = Findings::new(study);
+    findings.max_mu1(0);
+    findings.max_mu1(1);
+    bar.inc(1);
+    bar.set_message("conclusions, swept over i_B and C_L·M²");
+    let judged = conclusions::judge_all(&findings);
+    let json = serde_json::to_string_pretty(&summary::summary_json(&findings, &judged))
+        .unwrap_or_default();
     write("summary.json", json.as_bytes())?;
-    let assessed = conclusions::assess_all(&findings);
     write(
         "index.html",
-        html::index_html(&plates, &assessed).as_bytes(),
+        html::index_html(&sections, &judged).as_bytes(),
     )?;
     for (name, text) in html::DOCS {
         write(name, text.as_bytes())?;
     }
     dir.commit().map_err(|e| write_error(out, &e))?;
     bar.finish_and_clear();
-    let mut text = format!(
-        "wrote {} figures (SVG and CSV), summary.json and index.html to {}\n",
-        plates.len(),
-        out.display()
+    let figures: usize = sections.iter().map(|(_, p)| p.len()).sum();
+    let text = format!(
+        "wrote {figures} figures (SVG and CSV), summary.json and index.html to {}\n{}",
+        out.display(),
+        terminal_summary(&findings, &judged)
     );
-    for w in &findings.wings {
+    crate::output::print(&text)
+}
+
+/// What the terminal shows of the findings: each wing's intervals and the
+/// worst case of its largest μ₁ (a Mach number where none meets the
+/// standard is the worst), then each conclusion's verdict.
+fn terminal_summary(f: &Findings, judged: &[Judged]) -> String {
+    let mut text = String::new();
+    for (k, w) in f.wings.iter().enumerate() {
         text.push_str(&format!(
-            "  {}° delta: short period divergent for M in {}; more than one cycle to halve for M in {}; smallest largest-μ₁ {}\n",
+            "  {}° delta: short period divergent for M in {}; more than one cycle to halve for M in {}; largest μ₁ meeting the standard, at worst: {}\n",
             w.sweep_deg,
             summary::show_intervals(&w.unstable),
             summary::show_intervals(&w.fails),
-            w.least_max_mu1.map_or("—".into(), |(m, v)| format!(
-                "{} at M = {}",
-                sig(v, 3),
-                sig(m, 3)
-            ))
+            f.max_mu1(k).worst().map_or("—".into(), |w| w.describe())
         ));
     }
-    crate::output::print(&text)
+    let n = judged.iter().filter(|j| j.reproduced()).count();
+    text.push_str(&format!(
+        "  the note's conclusions: {n} of {} reproduced (index.html)\n",
+        judged.len()
+    ));
+    for j in judged {
+        let c = j.conclusion;
+        text.push_str(&format!(
+            "    {:<15} {} ({})\n",
+            if j.reproduced() {
+                "reproduced"
+            } else {
+                "not reproduced"
+            },
+            c.subject,
+            c.section
+        ));
+    }
+    text
 }

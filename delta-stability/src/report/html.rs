@@ -1,11 +1,11 @@
-//! `index.html`: the study's page — its assumptions, the note's
-//! conclusions beside ours (generated from the computed results), and the
-//! figures. Every link is relative to the page: the documents it cites are
+//! `index.html`: the study's page — its assumptions, a table of contents,
+//! the note's conclusions beside ours (generated from the computed results,
+//! with their verdicts), and the figures by section. Every link is relative to the page: the documents it cites are
 //! written beside it ([`DOCS`]), so the page works wherever `--out` puts
 //! it.
 
 use super::Plate;
-use super::conclusions::{Agreement, Assessment, Conclusion};
+use super::conclusions::{Agreement, Judged};
 use crate::fmt::sig;
 use stability_core::study::report_wing;
 use std::fmt::Write;
@@ -32,7 +32,7 @@ const HEAD: &str = "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf
 fn introduction() -> String {
     let (w45, w60) = (report_wing(45.0, 1.0), report_wing(60.0, 1.0));
     format!(
-        "<p>W.B. McCarter's note studies tailless true deltas of 45° and 60° leading-edge sweep (aspect ratios {} and {}), 6&nbsp;% thick, c.g. at h&nbsp;=&nbsp;{}, relative density μ₁&nbsp;=&nbsp;{}, against a standard: the short period must damp to half amplitude within one cycle (§8). His aerodynamic curves (Figs 1–6, 19–24) were faired through data we do not have; here every coefficient comes from a named method (<a href=\"docs/models.md\">docs/models.md</a>), the damping derivatives from his own theories (<a href=\"docs/damping-theories.md\">docs/damping-theories.md</a>) faired through Mach number, the quartic from his eq (4) with the three misprints of eq (6) corrected (<a href=\"docs/errata.md\">docs/errata.md</a>), and the roots exactly. The pitching inertia i_B&nbsp;=&nbsp;{} and the level-flight C_L·M²&nbsp;=&nbsp;{}, which the note does not state, are our assumptions. Numbers: <a href=\"summary.json\">summary.json</a>.</p>",
+        "<p>W.B. McCarter's note studies tailless true deltas of 45° and 60° leading-edge sweep (aspect ratios {} and {}), 6&nbsp;% thick, c.g. at h&nbsp;=&nbsp;{}, relative density μ₁&nbsp;=&nbsp;{}, against a standard: the short period must damp to half amplitude within one cycle (§8). His aerodynamic curves (Figs 1–6, 19–24) were faired through data we do not have; here every coefficient comes from a named method (<a href=\"docs/models.md\">docs/models.md</a>), the damping derivatives from his own theories (<a href=\"docs/damping-theories.md\">docs/damping-theories.md</a>) faired through Mach number, the quartic from his eq (4) with the three misprints of eq (6) corrected (<a href=\"docs/errata.md\">docs/errata.md</a>), and the roots exactly. The pitching inertia i_B&nbsp;=&nbsp;{} and the level-flight C_L·M²&nbsp;=&nbsp;{}, which the note does not state, are our assumptions: each conclusion that rests on them is judged again across a range of each. Numbers: <a href=\"summary.json\">summary.json</a>.</p>",
         sig(w45.planform.aspect_ratio(), 3),
         sig(w60.planform.aspect_ratio(), 3),
         w45.h,
@@ -50,32 +50,98 @@ fn class(a: Agreement) -> &'static str {
     }
 }
 
-/// The note's conclusions beside ours, and where they part, why.
-fn conclusions(assessed: &[(&Conclusion, Assessment)]) -> String {
-    let mut s = String::from(
-        "<h2>His conclusions and ours</h2><table><tr><th>subject</th><th>the note</th><th>our models</th><th></th></tr>\n",
+/// "reproduced" or "not reproduced".
+fn verdict(j: &Judged) -> &'static str {
+    if j.reproduced() {
+        "reproduced"
+    } else {
+        "not reproduced"
+    }
+}
+
+/// The anchor of the `k`th section of figures.
+fn section_id(k: usize) -> String {
+    format!("section-{}", k + 1)
+}
+
+/// The anchor of a conclusion's row.
+fn conclusion_id(j: &Judged) -> String {
+    format!("conclusion-{}", j.conclusion.id)
+}
+
+/// The table of contents: the conclusions (each, with its verdict), then
+/// each section of figures; every link an anchor of this page or a file
+/// beside it.
+fn contents(sections: &[(&str, Vec<Plate>)], judged: &[Judged]) -> String {
+    let n = judged.iter().filter(|j| j.reproduced()).count();
+    let mut s = format!(
+        "<nav id=\"contents\"><h2>Contents</h2><ol>\n<li><a href=\"#conclusions\">His conclusions and ours</a> ({n} of {} reproduced)<ol>",
+        judged.len()
     );
-    for (c, a) in assessed {
+    for j in judged {
+        let c = j.conclusion;
+        let _ = write!(
+            s,
+            "<li><a href=\"#{}\">{} ({})</a>: <span class=\"{}\">{}</span></li>",
+            conclusion_id(j),
+            esc(c.subject),
+            esc(c.section),
+            class(j.assessment.agreement),
+            verdict(j)
+        );
+    }
+    s.push_str("</ol></li>\n");
+    for (k, (title, plates)) in sections.iter().enumerate() {
+        let figs: Vec<String> = plates
+            .iter()
+            .map(|p| format!("<a href=\"#{}\">{}</a>", p.name(), esc(&p.figure.id)))
+            .collect();
         let _ = writeln!(
             s,
-            "<tr><td>{}</td><td>{} ({})</td><td>{}</td><td class=\"{}\">{}</td></tr>",
+            "<li><a href=\"#{}\">{}</a>: Figs {}</li>",
+            section_id(k),
+            esc(title),
+            figs.join(", ")
+        );
+    }
+    s.push_str("<li><a href=\"summary.json\">summary.json</a>: the numbers</li></ol></nav>\n");
+    s
+}
+
+/// The note's conclusions beside ours, with the verdict and its tolerance,
+/// and where they part, why.
+fn conclusions(judged: &[Judged]) -> String {
+    let mut s = String::from(
+        "<h2 id=\"conclusions\">His conclusions and ours</h2><p>Each claim of the note beside what our models compute, with the numbers; “reproduced” means our numbers bear the claim out within the tolerance stated under the verdict. Where the verdict rests on the unstated i_B or C_L·M², the study is redone across a range of each, and the value that would reverse the verdict is given.</p><table><tr><th>the note</th><th>our models</th><th>verdict</th></tr>\n",
+    );
+    for j in judged {
+        let c = j.conclusion;
+        let a = &j.assessment;
+        let _ = writeln!(
+            s,
+            "<tr id=\"{}\"><td><b>{}</b>: {} ({})</td><td>{}</td><td class=\"{}\">{} ({})<br><small>Reproduced if: {}.</small></td></tr>",
+            conclusion_id(j),
             esc(c.subject),
             esc(c.claim),
-            esc(c.source),
-            esc(&a.computed),
+            esc(c.section),
+            esc(&j.ours()),
             class(a.agreement),
-            a.agreement.as_str()
+            verdict(j),
+            a.agreement.as_str(),
+            esc(&a.tolerance)
         );
     }
     s.push_str("</table>\n");
-    let parting: Vec<String> = assessed
+    let parting: Vec<String> = judged
         .iter()
-        .filter(|(c, a)| a.agreement != Agreement::Agrees && !c.when_they_part.is_empty())
-        .map(|(c, _)| {
+        .filter(|j| !j.reproduced() && !j.conclusion.when_they_part.is_empty())
+        .map(|j| {
+            let c = j.conclusion;
             format!(
-                "<li>{} ({}): {}</li>",
+                "<li><a href=\"#{}\">{} ({})</a>: {}</li>",
+                conclusion_id(j),
                 esc(c.subject),
-                esc(c.source),
+                esc(c.section),
                 esc(c.when_they_part)
             )
         })
@@ -96,15 +162,27 @@ fn figure(p: &Plate) -> String {
     )
 }
 
-pub fn index_html(plates: &[Plate], assessed: &[(&Conclusion, Assessment)]) -> String {
+/// The page: the introduction, the contents, the conclusions, then each
+/// section (its title, from `report::SECTIONS`) with its figures.
+pub fn index_html(sections: &[(&str, Vec<Plate>)], judged: &[Judged]) -> String {
     let mut s = String::from(HEAD);
     s.push('\n');
     s.push_str(&introduction());
     s.push('\n');
-    s.push_str(&conclusions(assessed));
-    for p in plates {
-        s.push_str(&figure(p));
-        s.push('\n');
+    s.push_str(&contents(sections, judged));
+    s.push_str(&conclusions(judged));
+    for (k, (title, plates)) in sections.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "<section id=\"{}\"><h2>{}</h2>",
+            section_id(k),
+            esc(title)
+        );
+        for p in plates {
+            s.push_str(&figure(p));
+            s.push('\n');
+        }
+        s.push_str("</section>\n");
     }
     s.push_str("</body></html>\n");
     s

@@ -1,6 +1,8 @@
 //! What every section draws on: the two wings of the note (45° and 60°
 //! tailless deltas) evaluated across Mach number, and the same near M = 1
-//! with Mangler's frequency-dependent theory.
+//! with Mangler's frequency-dependent theory; and the same study under
+//! other values of the inputs the note does not state ([`Assumed`]), which
+//! the conclusions are swept over.
 
 use crate::plot::{Figure, Series};
 use rayon::prelude::*;
@@ -25,6 +27,14 @@ pub fn eval_all(cases: Vec<Case>) -> Vec<Option<CaseResult>> {
 /// `vary`.
 pub fn across(deg: f64, ms: &[f64], vary: impl Fn(Case) -> Case) -> Vec<Option<CaseResult>> {
     eval_all(ms.iter().map(|&m| vary(report_wing(deg, m))).collect())
+}
+
+/// The cases of the note's wing of sweep `deg` across `ms` with the values
+/// `assumed`, varied by `vary`.
+fn wing_cases(assumed: Assumed, deg: f64, ms: &[f64], vary: impl Fn(Case) -> Case) -> Vec<Case> {
+    ms.iter()
+        .map(|&m| vary(assumed.apply(report_wing(deg, m))))
+        .collect()
 }
 
 /// A curve of `f` over a Mach grid of results (non-finite where no result).
@@ -53,6 +63,81 @@ pub fn label(deg: f64) -> String {
     format!("{deg}° delta")
 }
 
+/// An input of the study that the note does not state.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Assumption {
+    /// The pitching inertia i_B = B/(mc̄²).
+    IB,
+    /// C_L·M² of level flight (eq 24).
+    ClM2,
+}
+
+impl Assumption {
+    pub const ALL: [Assumption; 2] = [Assumption::IB, Assumption::ClM2];
+
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Assumption::IB => "i_B",
+            Assumption::ClM2 => "C_L·M²",
+        }
+    }
+
+    /// The values a conclusion is swept over: i_B from 0.04 to 0.2 (a
+    /// tailless delta's radius of gyration in pitch between 0.2c̄ and
+    /// 0.45c̄); C_L·M² = W/(½ρa²S) from 0.02 to 0.2 (wing loadings of
+    /// 30–50 lb/ft² from sea level to about 40 000 ft).
+    pub fn range(self) -> (f64, f64) {
+        match self {
+            Assumption::IB => (0.04, 0.2),
+            Assumption::ClM2 => (0.02, 0.2),
+        }
+    }
+
+    /// Its value in `a`.
+    pub fn of(self, a: Assumed) -> f64 {
+        match self {
+            Assumption::IB => a.i_b,
+            Assumption::ClM2 => a.cl_m2,
+        }
+    }
+
+    /// `a` with this input set to `v`.
+    pub fn set(self, a: Assumed, v: f64) -> Assumed {
+        match self {
+            Assumption::IB => Assumed { i_b: v, ..a },
+            Assumption::ClM2 => Assumed { cl_m2: v, ..a },
+        }
+    }
+}
+
+/// The values taken for the inputs the note does not state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Assumed {
+    pub i_b: f64,
+    pub cl_m2: f64,
+}
+
+impl Assumed {
+    /// Ours: those of `stability_core::study::report_wing` (i_B = 0.08,
+    /// C_L·M² = 0.05; docs/models.md).
+    pub fn ours() -> Assumed {
+        let c = report_wing(WINGS[0], 1.0);
+        Assumed {
+            i_b: c.i_b,
+            cl_m2: c.cl_m2,
+        }
+    }
+
+    /// `case` with these values.
+    pub fn apply(self, case: Case) -> Case {
+        Case {
+            i_b: self.i_b,
+            cl_m2: self.cl_m2,
+            ..case
+        }
+    }
+}
+
 /// The shared results.
 pub struct Study {
     /// The Mach numbers of the figures.
@@ -63,6 +148,8 @@ pub struct Study {
     /// frequency-dependent theory (39)–(40), ω̄ iterated to consistency.
     pub near_sonic: Vec<f64>,
     pub mangler: Vec<Option<CaseResult>>,
+    /// The values taken for the inputs the note does not state.
+    pub assumed: Assumed,
 }
 
 impl Default for Study {
@@ -85,7 +172,38 @@ impl Study {
             results,
             near_sonic,
             mangler,
+            assumed: Assumed::ours(),
         }
+    }
+
+    /// The study with other values of the unstated inputs: both wings
+    /// across the same Mach numbers (not Mangler's theory near M = 1, which
+    /// only illustrates).
+    pub fn assuming(assumed: Assumed) -> Study {
+        let ms = machs();
+        let results = WINGS.map(|deg| eval_all(wing_cases(assumed, deg, &ms, |c| c)));
+        Study {
+            ms,
+            results,
+            near_sonic: Vec::new(),
+            mangler: Vec::new(),
+            assumed,
+        }
+    }
+
+    /// As [`across`], with this study's values of the unstated inputs.
+    pub fn across(
+        &self,
+        deg: f64,
+        ms: &[f64],
+        vary: impl Fn(Case) -> Case,
+    ) -> Vec<Option<CaseResult>> {
+        eval_all(wing_cases(self.assumed, deg, ms, vary))
+    }
+
+    /// The note's wing of sweep `deg` at `mach`, with this study's values.
+    pub fn case(&self, deg: f64, mach: f64) -> Case {
+        self.assumed.apply(report_wing(deg, mach))
     }
 
     /// A figure with one curve of `f` per wing.

@@ -1,0 +1,245 @@
+//! The report's conclusions as computed (issue 11, items 4–5): each of the
+//! note's conclusions judged on the study, against one table of the verdicts
+//! our models give, so that a model change that reverses a finding fails
+//! here and must be explained; and a Mach number where no μ₁ meets the
+//! standard counted as the worst case, in `summary.json` and on the
+//! terminal.
+
+mod common;
+
+use common::{Scratch, path, run_ok, stdout};
+use delta_stability::report::Study;
+use delta_stability::report::conclusions::{Agreement, CONCLUSIONS, Judged, judge_all};
+use delta_stability::report::study::Assumption;
+use delta_stability::report::summary::{Findings, Worst};
+use stability_core::study::intervals;
+
+/// The verdict each conclusion gets on our models, by id — the one place
+/// they are written. The tolerance of each is its own, stated in
+/// `report::conclusions` beside the constant it uses (and on the page under
+/// the verdict): "Agrees" is reproduced, "Partly" and "Differs" are not.
+/// When a model change moves a row, change it here and say in the commit
+/// which finding reversed and why.
+const EXPECTED: &[(&str, Agreement)] = &[
+    // fails one cycle at 1.16–1.50, diverges nowhere: 65 % of 0.97–1.5
+    ("45-transonic", Agreement::Partly),
+    // the worst largest μ₁ is 99.6 (M = 2); within 160–250 at M 1.20–1.50
+    ("60-mu1-limit", Agreement::Partly),
+    // the frequency rises from zero, the damping b/2 by 1.7 % only
+    ("subcritical-trend", Agreement::Partly),
+    // slender-wing m_ẇ = z_ẇ(5/8 − h) carries 27–28 % of b
+    ("mwdot-negligible", Agreement::Differs),
+    // m_θ̇ of (36) from +0.30 (x₀/c₀ = 0.4) to +0.07 (0.6)
+    ("45-m-thetadot-positive", Agreement::Agrees),
+    // −m_θ̇ gains +0.081 (45°), loses 0.16 (60°)
+    ("cropping", Agreement::Agrees),
+    // holds at M 0.50–1.53; beyond, 45° and 60° meet and 75° gains
+    ("sweep-diminishing", Agreement::Partly),
+    // within 10 % only at M ≥ 1.09, where the short period is lightly damped
+    ("omega-approximation", Agreement::Partly),
+    // 0.591 (45°, M = 1.16)
+    ("omega-maximum", Agreement::Agrees),
+    // forward is better at M 0.50–1.13 and 1.81–2.00 only
+    ("45-forward-cg", Agreement::Partly),
+];
+
+/// Whether, on our models, some Mach number has no μ₁ meeting the standard
+/// for the 45° delta (M = 1.20–1.30 today).
+const NO_MU1_SOMEWHERE_45: bool = true;
+
+fn expected(id: &str) -> Agreement {
+    EXPECTED
+        .iter()
+        .find(|(e, _)| *e == id)
+        .unwrap_or_else(|| panic!("no expected verdict for `{id}`: add it to EXPECTED"))
+        .1
+}
+
+#[test]
+fn each_conclusions_verdict_is_the_expected_one() {
+    let findings = Findings::new(Study::new());
+    let judged = judge_all(&findings);
+    // the table and the conclusions are the same set
+    assert_eq!(judged.len(), CONCLUSIONS.len());
+    assert_eq!(EXPECTED.len(), CONCLUSIONS.len(), "a stale row in EXPECTED");
+    let mut reversed = Vec::new();
+    for j in &judged {
+        let c = j.conclusion;
+        let want = expected(c.id);
+        if j.assessment.agreement != want {
+            reversed.push(format!(
+                "{} ({}): expected {:?}, computed {:?}: {}",
+                c.id,
+                c.section,
+                want,
+                j.assessment.agreement,
+                j.ours()
+            ));
+        }
+        assert_is_computed(j);
+    }
+    assert!(
+        reversed.is_empty(),
+        "findings reversed — explain each, then update EXPECTED:\n{}",
+        reversed.join("\n")
+    );
+}
+
+/// A conclusion declared independent of the unstated inputs (not swept) is
+/// judged the same, to the word, with both at the far ends of their ranges:
+/// the declaration is checked, not trusted.
+#[test]
+fn a_conclusion_not_swept_does_not_depend_on_the_unstated_inputs() {
+    let ours = Findings::new(Study::new());
+    let far = Assumption::ALL
+        .iter()
+        .fold(ours.assumed(), |a, x| x.set(a, x.range().1));
+    let other = Findings::new(Study::assuming(far));
+    let independent: Vec<_> = CONCLUSIONS
+        .iter()
+        .filter(|c| c.depends_on.is_empty())
+        .collect();
+    assert!(!independent.is_empty());
+    for c in independent {
+        assert_eq!((c.assess)(&ours), (c.assess)(&other), "{}", c.id);
+    }
+    // while one that is swept does change there (ω̄ ≈ √(−m_w/(μ₁i_B)))
+    let swept = CONCLUSIONS
+        .iter()
+        .find(|c| c.id == "omega-maximum")
+        .unwrap();
+    assert_ne!(
+        (swept.assess)(&ours).computed,
+        (swept.assess)(&other).computed
+    );
+}
+
+/// A judgement carries numbers, its tolerance, and a sweep over each
+/// unstated input it depends on — which says where the verdict reverses or
+/// that it holds.
+fn assert_is_computed(j: &Judged) {
+    let ours = j.ours();
+    assert!(ours.chars().any(|c| c.is_ascii_digit()), "{ours}");
+    assert!(!j.assessment.tolerance.is_empty());
+    assert_eq!(j.sweeps.len(), j.conclusion.depends_on.len());
+    for r in &j.sweeps {
+        assert_eq!(r.reproduced, j.reproduced());
+        let said = r.describe();
+        assert!(ours.contains(&said), "{ours}");
+        assert!(said.contains(r.assumption.symbol()), "{said}");
+        for v in r.below.into_iter().chain(r.above) {
+            assert!(v > r.range.0 && v < r.range.1, "{said}");
+        }
+    }
+}
+
+/// The 45° delta's worst largest μ₁ is the Mach numbers where none meets
+/// the standard, not the smallest finite value elsewhere.
+#[test]
+fn a_mach_number_without_any_mu1_is_the_worst_case() {
+    let findings = Findings::new(Study::new());
+    let m = findings.max_mu1(0);
+    let (ms, none): (Vec<f64>, Vec<bool>) =
+        m.by_mach.iter().map(|(x, v)| (*x, v.is_none())).unzip();
+    assert_eq!(none.iter().any(|&n| n), NO_MU1_SOMEWHERE_45);
+    let worst = m.worst().unwrap();
+    if NO_MU1_SOMEWHERE_45 {
+        assert_eq!(worst, Worst::NoneMeets(intervals(&ms, &none)));
+        // a finite smaller largest μ₁ would have hidden it
+        assert!(m.by_mach.iter().any(|(_, v)| v.is_some()));
+    } else {
+        assert!(matches!(worst, Worst::Least { .. }));
+    }
+}
+
+/// `report --out` somewhere nested: summary.json's conclusions have the
+/// keys scripts read first, the wings keep theirs and say their worst case
+/// (null where no μ₁ meets the standard, as the terminal says); the page's
+/// contents link to the conclusions and every section, and every link and
+/// anchor resolves.
+#[test]
+fn the_report_writes_its_conclusions_worst_case_and_contents() {
+    let dir = Scratch::new();
+    let out = dir.path().join("x/y");
+    let run = run_ok(&["report", "--out", path(&out)]);
+    let terminal = stdout(&run);
+    let text = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    let summary: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let conclusions = summary["conclusions"].as_array().unwrap();
+    assert_eq!(conclusions.len(), CONCLUSIONS.len());
+    for c in conclusions {
+        let id = c["id"].as_str().unwrap();
+        assert_eq!(
+            c["reproduced"].as_bool(),
+            Some(expected(id).reproduced()),
+            "{id}"
+        );
+    }
+    // each entry's first keys, in the file's order
+    let entries: Vec<&str> = text.split("\"claim\":").skip(1).collect();
+    assert_eq!(entries.len(), CONCLUSIONS.len());
+    for e in entries {
+        let at = |k: &str| e.find(&format!("\"{k}\":")).unwrap_or(usize::MAX);
+        let order = ["section", "ours", "reproduced", "id"].map(at);
+        assert!(order.windows(2).all(|w| w[0] < w[1]), "{e}");
+    }
+    for wing in ["delta_45", "delta_60"] {
+        for key in ["unstable_mach", "fails_one_cycle_mach", "max_mu1_one_cycle"] {
+            assert!(summary[wing][key].is_array(), "{wing} {key}");
+        }
+    }
+    let worst = &summary["delta_45"]["worst_max_mu1"];
+    let nulls: Vec<f64> = summary["delta_45"]["max_mu1_one_cycle"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|p| p[1].is_null())
+        .map(|p| p[0].as_f64().unwrap())
+        .collect();
+    assert_eq!(!nulls.is_empty(), NO_MU1_SOMEWHERE_45);
+    if NO_MU1_SOMEWHERE_45 {
+        assert!(worst["mu1"].is_null(), "{worst}");
+        let first = worst["mach"][0][0].as_f64().unwrap();
+        assert_eq!(first, nulls[0]);
+        assert!(
+            terminal.contains(&format!("no μ₁ meets it at M {first:.2}")),
+            "{terminal}"
+        );
+    }
+    assert_page_contents(
+        &std::fs::read_to_string(out.join("index.html")).unwrap(),
+        &out,
+    );
+}
+
+fn assert_page_contents(html: &str, out: &std::path::Path) {
+    let attr = |name: &str| -> Vec<String> {
+        html.split(&format!("{name}=\""))
+            .skip(1)
+            .map(|p| p.split('"').next().unwrap().to_string())
+            .collect()
+    };
+    let ids = attr("id");
+    let hrefs = attr("href");
+    for section in 1..=delta_stability::report::SECTIONS.len() {
+        assert!(
+            hrefs.contains(&format!("#section-{section}")),
+            "section {section}"
+        );
+    }
+    assert!(hrefs.contains(&"#conclusions".to_string()));
+    for c in CONCLUSIONS {
+        assert!(hrefs.contains(&format!("#conclusion-{}", c.id)), "{}", c.id);
+    }
+    for t in hrefs.iter().chain(&attr("src")) {
+        if let Some(anchor) = t.strip_prefix('#') {
+            assert!(ids.iter().any(|i| i == anchor), "no anchor #{anchor}");
+        } else {
+            assert!(
+                !t.contains("://") && !t.starts_with('/') && !t.starts_with(".."),
+                "{t}"
+            );
+            assert!(out.join(t).is_file(), "{t} is not in the report");
+        }
+    }
+}
