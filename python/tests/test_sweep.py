@@ -19,19 +19,21 @@ PHYSICAL = "examples/delta-60-physical.toml"
 INTERPOLATED = 1e-3
 
 
-def same(column_value, value, rel=0.0):
-    """A column's value is the attribute's (NaN where it is None)."""
+def same(column_value, value, scale=0.0):
+    """A column's value is the attribute's (NaN where it is None): exactly,
+    or within `scale` when one is given."""
     if value is None:
         return bool(np.isnan(column_value))
-    if rel == 0.0:
+    if scale == 0.0:
         return column_value == value
-    return abs(column_value - value) <= rel * abs(value)
+    return abs(column_value - value) <= scale
 
 
 def assert_point(s, i, a, what):
     """Point i of the sweep s is the analysis a: exactly, or within
-    INTERPOLATED where a iterated its frequency (and the sweep did not solve
-    the lattice at each iterate)."""
+    INTERPOLATED (of each root's modulus, of m_θ̇) where a iterated its
+    frequency parameter (the sweep interpolating in the lattice's frequency
+    table, analyze solving at each iterate)."""
     assert s["error"][i] == "", (what, s["error"][i])
     assert s["verdict"][i] == a.verdict and s["stable"][i] == a.stable, what
     f = a.damping["frequency"]
@@ -40,15 +42,20 @@ def assert_point(s, i, a, what):
     if sp is None:  # split into two real roots
         assert np.isnan(s["sp_re"][i]) and np.isnan(s["sp_cycles_to_half"][i]), what
     else:
-        assert same(s["sp_re"][i], sp.re, rel) and same(s["sp_im"][i], sp.im, rel), what
-        assert same(s["sp_cycles_to_half"][i], sp.cycles_to_half, rel), what
-        assert same(s["sp_damping_ratio"][i], sp.damping_ratio, rel), what
-        assert same(s["sp_omega_bar"][i], sp.frequency_parameter, rel), what
+        lam = rel * abs(sp.root)
+        assert same(s["sp_re"][i], sp.re, lam) and same(s["sp_im"][i], sp.im, lam), what
+        cycles = (sp.cycles_to_half or 0.0) * lam / abs(sp.re)
+        assert same(s["sp_cycles_to_half"][i], sp.cycles_to_half, 2 * cycles), what
+        assert same(s["sp_damping_ratio"][i], sp.damping_ratio, 2 * rel), what
+        assert same(s["sp_omega_bar"][i], sp.frequency_parameter,
+                    lam / s["mu1"][i]), what
     if ph is not None:
-        assert same(s["ph_re"][i], ph.re, 10 * rel) and same(s["ph_im"][i], ph.im, 10 * rel), what
+        lam = 10 * rel * abs(ph.root)
+        assert same(s["ph_re"][i], ph.re, lam) and same(s["ph_im"][i], ph.im, lam), what
     d = a.criteria["damping_standard"]
-    assert same(s["m_thetadot"][i], d["m_thetadot"], rel), what
-    assert same(s["delta_m_thetadot"][i], d["margin"], 10 * rel), what
+    m = rel * abs(d["m_thetadot"])
+    assert same(s["m_thetadot"][i], d["m_thetadot"], m), what
+    assert same(s["delta_m_thetadot"][i], d["margin"], m), what
     return rel
 
 
@@ -91,7 +98,9 @@ def test_a_sweep_is_a_loop_over_analyze(damping):
     s = ds.sweep(BASE, damping=damping, **grid)
     assert s.shape == (5, 3, 2, 2, 2) and len(s["mach"]) == 120
     c = loop(s, grid, report_wing, damping=damping)
-    assert c["exact"] + c["interpolated"] + c["error"] == 120 and c["exact"] >= 60, c
+    # the supersonic points (M = 1.3, 1.9) at least are quasi-steady
+    assert c["exact"] + c["interpolated"] + c["error"] == 120 and c["exact"] >= 48, c
+    assert c["error"] <= 12, c
     if damping == "faired-slender":
         assert c["interpolated"] == 0, c
 
