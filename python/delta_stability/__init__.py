@@ -147,8 +147,9 @@ def sweep(
     only in μ₁ and i_B unless the damping theory iterates ω̄ (eqs 39–40, the
     lattice's), the doublet lattice is solved once per planform and Mach
     number, and a point's frequency iteration interpolates in that wing's
-    table of solved frequencies (within 2·10⁻⁴ of ``analyze``'s direct
-    solves). With a physical flight condition in the config (``[flight]
+    table of solved frequencies (stability-core's tests hold the short
+    period's roots within 2·10⁻⁴ of ``analyze``'s, which solves the lattice at
+    every iterate). With a physical flight condition in the config (``[flight]
     altitude``, ``mass``, ``I_y``) each planform's μ₁, i_B and C_L·M² (eq 24)
     follow from it — the ``mu1`` and ``i_b`` axes may then not be given — and
     the columns carry the modes in seconds.
