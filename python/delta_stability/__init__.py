@@ -7,9 +7,13 @@ arrays in and out. Equation numbers are the note's.
 - :func:`quartic` — a derivative set (any notation) → the stability quartic
   (eqs 4–6), its roots and modes (eqs 7–8), Routh's test (§4), the §8
   criteria;
-- :func:`analyze` — a planform at a flight condition → coefficients (§6),
-  derivatives (§5–7), and the same;
-- :func:`sweep` — a Cartesian grid of design points, in parallel, as columns;
+- :func:`analyze` — a planform at a flight condition (non-dimensional, or
+  physical: altitude, mass, I_y, eq 24) → coefficients (§6), derivatives
+  (§5–7), and the same, with the engineer's outputs (mode shapes, ``damp``,
+  the short-period frequency requirement); ``mach``, ``cg``, ``damping``,
+  ``aero`` and ``omega_bar`` are the command line's overrides;
+- :func:`sweep` — a Cartesian grid of design points, in parallel, as columns
+  (the library's sweep, as ``delta-stability sweep`` evaluates it);
 - :func:`batch_roots` — the quartic solver on an (N, 5) array;
 - :func:`response` (§11), :func:`convert` (the appendix's notations),
   :func:`sensitivity` (§10), :func:`damping_derivatives` (§7's theories),
@@ -73,34 +77,19 @@ __all__ = [
     "theories",
 ]
 
-#: The grid's columns, in order (the last varies fastest).
-GRID_COLUMNS = ("mach", "sweep_deg", "cg", "mu1", "i_b")
-#: The result columns of every design point, as in ``delta-stability sweep``'s
-#: CSV.
-RESULT_COLUMNS = (
-    "stable",
-    "verdict",
-    "sp_re",
-    "sp_im",
-    "sp_cycles_to_half",
-    "sp_damping_ratio",
-    "sp_omega_bar",
-    "ph_re",
-    "ph_im",
-    "m_thetadot",
-    "delta_m_thetadot",
-)
-
-
 class SweepResult(dict):
-    """The columns of a sweep, one numpy array each (a ``dict``), named as
-    ``delta-stability sweep``'s CSV: the grid values ``mach``, ``sweep_deg``,
-    ``cg``, ``mu1``, ``i_b``; ``stable`` (Routh, §4); ``verdict`` (the §8
-    one-cycle standard: ``meets``, ``fails``, ``divergent``, or ``""`` where
-    the point has no result); the short period's root ``sp_re``, ``sp_im``
-    (1/τ), ``sp_cycles_to_half`` (eq 8), ``sp_damping_ratio``,
-    ``sp_omega_bar`` (ω̄ = s/μ₁, §9); the phugoid's ``ph_re``, ``ph_im``;
-    ``m_thetadot`` and ``delta_m_thetadot`` (eq 41's margin); with
+    """The columns of a sweep, one numpy array each (a ``dict``), named and
+    ordered as ``delta-stability sweep``'s CSV: the grid values ``mach``,
+    ``sweep_deg``, ``cg``, ``mu1``, ``i_b``; ``stable`` (Routh, §4);
+    ``verdict`` (the §8 one-cycle standard: ``meets``, ``fails``,
+    ``divergent``, or ``""`` where the point has no result); the short
+    period's root ``sp_re``, ``sp_im`` (1/τ), ``sp_cycles_to_half`` (eq 8),
+    ``sp_damping_ratio``, ``sp_omega_bar`` (ω̄ = s/μ₁, §9); the phugoid's
+    ``ph_re``, ``ph_im``; ``m_thetadot`` and ``delta_m_thetadot`` (its margin
+    over eq 41's m_θ̇max); at a physical flight condition, the modes in
+    seconds (``v_m_s``, ``c_l``, ``tau_s``, ``sp_re_s``, ``sp_im_s``,
+    ``sp_natural_frequency_rad_s``, ``sp_period_s``, ``ph_re_s``,
+    ``ph_im_s``: V = M·a, C_L and τ at each Mach number, eq 24); with
     ``derivatives=True`` the fifteen quartic inputs; and ``error`` (``""`` or
     why the point has no result, e.g. outside a theory's validity). Numbers
     that are undefined (a short period that does not oscillate) are NaN.
@@ -133,25 +122,41 @@ def sweep(
     mu1: Axis = None,
     i_b: Axis = None,
     damping: Optional[str] = None,
+    aero: Optional[str] = None,
+    omega_bar: Optional[float] = None,
     derivatives: bool = False,
 ) -> SweepResult:
     """Design points over a Cartesian grid of Mach number, leading-edge sweep
     (degrees), c.g. position h, relative density μ₁ and pitching inertia i_B:
-    what ``delta-stability sweep`` computes, evaluated in Rust in parallel with
-    the GIL released, and returned as columns of numpy arrays
-    (:class:`SweepResult`, with ``to_pandas()``), no CSV in between.
+    what ``delta-stability sweep`` computes — the same library grid
+    (``stability_core::sweep``), evaluated in Rust in parallel with the GIL
+    released — returned as columns of numpy arrays (:class:`SweepResult`,
+    with ``to_pandas()``), no CSV in between.
 
     ``config`` is a path to a TOML file or a dict of the same shape (see
     :func:`analyze`): the base design point. Each axis is None (the config's
     value), a number, a sequence or 1-D array, or the command line's
-    ``"A:B:STEP"``. ``damping`` overrides the config's damping model
-    (:func:`damping_models`). Each point goes planform → coefficients (§6) →
+    ``"A:B:STEP"``. Each point goes planform → coefficients (§6) →
     derivatives (§5–7) → quartic (eqs 4–6) → roots → modes (eq 8) → Routh (§4)
     → the §8 standard and eq (41)'s margin. Points are in grid order, the last
     axis (i_B) varying fastest.
 
-    Raises :class:`InputError` for a bad config or axis value; a point outside
-    a theory's validity is not an error but has its ``error`` column set.
+    ``damping``, ``aero`` and ``omega_bar`` override the config's model as
+    the command line's ``--damping``, ``--aero`` and ``--omega-bar`` do (see
+    :func:`analyze`). The aerodynamics are shared by the points that differ
+    only in μ₁ and i_B unless the damping theory iterates ω̄ (eqs 39–40, the
+    lattice's), the doublet lattice is solved once per planform and Mach
+    number, and a point's frequency iteration interpolates in that wing's
+    table of solved frequencies (stability-core's tests hold the short
+    period's roots within 2·10⁻⁴ of ``analyze``'s, which solves the lattice at
+    every iterate). With a physical flight condition in the config (``[flight]
+    altitude``, ``mass``, ``I_y``) each planform's μ₁, i_B and C_L·M² (eq 24)
+    follow from it — the ``mu1`` and ``i_b`` axes may then not be given — and
+    the columns carry the modes in seconds.
+
+    Raises :class:`InputError` for a bad config, option or axis value; a point
+    outside a theory's validity is not an error but has its ``error`` column
+    set.
     """
     raw = _native.sweep_columns(
         config,
@@ -161,22 +166,17 @@ def sweep(
         mu1=mu1,
         i_b=i_b,
         damping=damping,
+        aero=aero,
+        omega_bar=omega_bar,
         derivatives=derivatives,
     )
-    verdicts = _np.array(list(raw.pop("verdicts")) + [""])
-    messages = _np.array(list(raw.pop("messages")) + [""], dtype=object)
-    verdict = verdicts[raw.pop("verdict_code")]
-    error = messages[raw.pop("error_code")]
+    verdicts = _np.array(list(raw["verdicts"]) + [""])
+    messages = _np.array(list(raw["messages"]) + [""], dtype=object)
+    decode = {"verdict": verdicts, "error": messages}
     out = SweepResult()
-    for k in GRID_COLUMNS:
-        out[k] = raw.pop(k)
-    out["stable"] = raw.pop("stable")
-    out["verdict"] = verdict
-    for k in RESULT_COLUMNS[2:]:
-        out[k] = raw.pop(k)
-    out.shape = tuple(raw.pop("shape"))
-    out.update(raw)  # the derivatives, when asked for
-    out["error"] = error
+    for k in raw["columns"]:
+        out[k] = decode[k][raw[k]] if k in decode else raw[k]
+    out.shape = tuple(raw["shape"])
     return out
 
 

@@ -128,7 +128,11 @@ class Quartic:
         """As ``delta-stability quartic FILE --json``."""
 
 class Analysis:
-    """A design point's analysis: ``delta-stability analyze``'s result."""
+    """A design point's analysis: ``delta-stability analyze``'s result —
+    coefficients (§6), derivatives (§5–7), the quartic (eqs 4–6), modes
+    (eq 8), Routh (§4), the §8–9 criteria, and the engineer's outputs of
+    ``analyze --json`` (mode shapes; with a physical flight condition the
+    modes in seconds, ``damp`` and the MIL-F-8785C short-period frequency)."""
 
     derivatives: Derivatives
     coefficients: npt.NDArray[np.float64]
@@ -145,6 +149,18 @@ class Analysis:
     damping: dict[str, Any]
     case: dict[str, Any]
     warnings: list[str]
+    tau_s: Optional[float]
+    """τ = m/(½ρSV) in seconds, at a physical flight condition."""
+    flight: Optional[dict[str, Any]]
+    """The physical flight condition at the point's Mach number (ρ, a, V,
+    μ₁, i_B, C_L·M² of eq 24, C_L, τ), or None."""
+    mode_shapes: list[dict[str, Any]]
+    """Each mode's eigenvector (u/V, α, q, θ) of eqs (2)–(3), θ = 1."""
+    damp: Optional[list[dict[str, Any]]]
+    """The modes in seconds (``damp``), when τ is known."""
+    short_period_frequency: Optional[dict[str, Any]]
+    """MIL-F-8785C §3.2.2.1.1: ω_sp against n/α, the CAP and the levels,
+    when τ is known and the short period oscillates."""
     def to_dict(self) -> dict[str, Any]:
         """As ``delta-stability analyze CONFIG --json``."""
 
@@ -160,8 +176,12 @@ def analyze(
     mach: Optional[float] = None,
     cg: Optional[float] = None,
     damping: Optional[str] = None,
+    aero: Optional[str] = None,
+    omega_bar: Optional[float] = None,
 ) -> Analysis:
-    """A design point through §5–8: ``delta-stability analyze``."""
+    """A design point through §5–8: ``delta-stability analyze``, the keywords
+    its ``--mach``, ``--cg``, ``--damping``, ``--aero`` (``default`` or
+    ``lifting-surface``) and ``--omega-bar``."""
 
 def sweep_columns(
     config: ConfigSource,
@@ -172,9 +192,14 @@ def sweep_columns(
     mu1: Axis = None,
     i_b: Axis = None,
     damping: Optional[str] = None,
+    aero: Optional[str] = None,
+    omega_bar: Optional[float] = None,
     derivatives: bool = False,
 ) -> dict[str, Any]:
-    """The raw columns of ``delta_stability.sweep``."""
+    """The raw columns of ``delta_stability.sweep`` (the library's grid,
+    ``stability_core::sweep``): ``columns`` (the CSV's names, in order), each
+    column (``verdict`` and ``error`` as codes into ``verdicts`` and
+    ``messages``) and ``shape``."""
 
 def batch_roots(
     coefficients: npt.NDArray[np.float64], *, nan: bool = False

@@ -16,6 +16,7 @@ mod convert;
 mod errors;
 mod inputs;
 mod json;
+mod overrides;
 mod quartic;
 mod response;
 mod roots;

@@ -6,10 +6,10 @@
 
 use crate::errors::{argument, failure, input_error};
 use crate::guard;
-use crate::inputs::{self, derivative_file};
+use crate::inputs::derivative_file;
 use crate::json::{to_py, view_to_py};
+use crate::overrides::{Model, overridden};
 use delta_stability::cmd;
-use delta_stability::config::Config;
 use delta_stability::input::DerivativeFile;
 use numpy::{Complex64, IntoPyArray, PyArray1};
 use pyo3::exceptions::{PyAttributeError, PyTypeError};
@@ -17,7 +17,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
 use stability_core::cap::AirplaneClass;
-use stability_core::case::{CaseResult, DampingModel};
+use stability_core::case::CaseResult;
 use stability_core::modes::Mode as CoreMode;
 
 /// A longitudinal derivative set in the report's notation (§3, eqs 2–4):
@@ -569,11 +569,21 @@ pub fn quartic(
 ///   for `Quartic`;
 /// - `aerodynamics`: the coefficients of §6 (∂C_L/∂α, C_D0, K, H₀ and
 ///   their Mach derivatives); `damping`: the theory, its equations and
-///   z_θ̇, m_θ̇ (§7); `case`: the planform's sizes and the flight condition;
+///   z_θ̇, m_θ̇ (§7), with the frequency iteration of a frequency-dependent
+///   theory; `case`: the planform's sizes and the flight condition;
+/// - with a physical flight condition (`[flight] altitude`, `mass`, `I_y`):
+///   `flight` (ρ, a, V = M·a, μ₁ = m/(½ρSc̄), i_B, C_L·M² of eq 24, τ) and
+///   `tau_s`, and the modes in seconds too;
+/// - the engineer's outputs: `mode_shapes` (each mode's eigenvector of the
+///   linear model of eqs 2–3), `damp` (the modes in seconds, as MATLAB's
+///   `damp`) and `short_period_frequency` (MIL-F-8785C's ω_sp against n/α)
+///   when τ is known;
 /// - `warnings`: validity limits approached; `to_dict()`: the `--json`.
 #[pyclass(frozen, module = "delta_stability")]
 pub struct Analysis {
     result: CaseResult,
+    /// τ = m/(½ρSV) (s) at a physical flight condition.
+    tau: Option<f64>,
     json: Value,
 }
 
@@ -602,17 +612,53 @@ impl Analysis {
     fn roots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<Complex64>> {
         roots(py, &self.result.analysis)
     }
+    /// The modes, fastest first (with their times in seconds at a
+    /// physical flight condition).
     #[getter]
     fn modes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
-        modes(py, &self.result.analysis.modes, None)
+        modes(py, &self.result.analysis.modes, self.tau)
     }
     #[getter]
     fn short_period<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, Mode>>> {
-        named_mode(py, &self.result.analysis, None, true)
+        named_mode(py, &self.result.analysis, self.tau, true)
     }
     #[getter]
     fn phugoid<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, Mode>>> {
-        named_mode(py, &self.result.analysis, None, false)
+        named_mode(py, &self.result.analysis, self.tau, false)
+    }
+    /// τ = m/(½ρSV) in seconds, at a physical flight condition; else None.
+    #[getter]
+    fn tau_s(&self) -> Option<f64> {
+        self.tau
+    }
+    /// The physical flight condition at the point's Mach number (the
+    /// `flight` object of the JSON), or None.
+    #[getter]
+    fn flight<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "flight")
+    }
+    /// Each mode's eigenvector (u/V, α, q, θ) of the linear model ẋ = Ax
+    /// of eqs (2)–(3), scaled so that θ = 1: each state's magnitude and
+    /// phase relative to θ (`analyze --json`'s `mode_shapes`).
+    #[getter]
+    fn mode_shapes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "mode_shapes")
+    }
+    /// The modes in seconds, as MATLAB's `damp` tabulates them: each
+    /// mode's root (1/s), ζ, ωₙ (rad/s), period, times to half or double
+    /// amplitude (s) and cycles (eq 8), when τ is known (a physical flight
+    /// condition); else None.
+    #[getter]
+    fn damp<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "damp")
+    }
+    /// MIL-F-8785C §3.2.2.1.1: the short period's ω_sp (rad/s) against
+    /// n/α = −z_w/C_L (g/rad), the CAP ω_sp²/(n/α) and the level in each
+    /// flight-phase category (Class IV), when the short period oscillates
+    /// and τ is known; else None.
+    #[getter]
+    fn short_period_frequency<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        key(py, &self.json, "short_period_frequency")
     }
     /// The §8 one-cycle standard: `meets`, `fails` or `divergent`.
     #[getter]
@@ -663,30 +709,6 @@ impl Analysis {
     }
 }
 
-/// The config with `analyze`'s overrides applied.
-pub fn overridden(
-    config: &Bound<'_, PyAny>,
-    mach: Option<f64>,
-    cg: Option<f64>,
-    damping: Option<&str>,
-) -> PyResult<Config> {
-    let mut cfg = inputs::config(config)?;
-    let damping = damping
-        .map(|d| {
-            DampingModel::parse(d)
-                .map_err(|e| argument("damping", format!("unknown damping model: {e}")))
-        })
-        .transpose()?;
-    let o = cmd::analyze::Overrides {
-        damping,
-        mach,
-        cg,
-        ..Default::default()
-    };
-    cmd::analyze::apply(&mut cfg, &o).map_err(failure)?;
-    Ok(cfg)
-}
-
 /// A design point — a planform at a flight condition with a damping model —
 /// through the note's method: aerodynamic coefficients (§6), stiffness
 /// derivatives (eqs 9–14, 25–29), damping derivatives of a §7 theory, the
@@ -696,21 +718,35 @@ pub fn overridden(
 /// `config` is a path to a TOML file (examples/delta-45.toml) or a dict of
 /// the same shape: {"planform": {"sweep": 45, "taper": 0, "root_chord": 10},
 /// "flight": {"mach": 0.9, "cg": 0.25, "mu1": 50, "i_b": 0.08, "cl_m2":
-/// 0.05}, "model": {"damping": "faired"}}. `mach`, `cg` and `damping`
-/// override the config's, as the command line's --mach, --cg, --damping.
-/// Raises InputError with the command line's message.
+/// 0.05}, "model": {"damping": "faired"}}; its flight condition may be
+/// physical instead (`units`, `altitude`, `mass`, `I_y`: μ₁, i_B and C_L·M²
+/// of eq 24 from them, and the modes in seconds). The keywords override
+/// the config as the command line's flags do: `mach` (--mach), `cg` (h,
+/// --cg), `damping` (--damping: `damping_models()`), `aero` (--aero:
+/// `default` or `lifting-surface`, the doublet lattice's ∂C_L/∂α and H₀ with
+/// their exact Mach derivatives for eqs 25–29, M < 1) and `omega_bar`
+/// (--omega-bar: a frequency-dependent theory, eqs 39–40 or the lattice's,
+/// at ω̄ = W instead of iterated to the short period's s/μ₁). Raises
+/// InputError with the command line's message.
 #[pyfunction]
-#[pyo3(signature = (config, /, *, mach=None, cg=None, damping=None))]
+#[pyo3(signature = (config, /, *, mach=None, cg=None, damping=None, aero=None, omega_bar=None))]
 pub fn analyze(
     py: Python<'_>,
     config: &Bound<'_, PyAny>,
     mach: Option<f64>,
     cg: Option<f64>,
     damping: Option<&str>,
+    aero: Option<&str>,
+    omega_bar: Option<f64>,
 ) -> PyResult<Analysis> {
     guard(|| {
-        let cfg = overridden(config, mach, cg, damping)?;
-        let (result, json) = py
+        let model = Model {
+            damping,
+            aero,
+            omega_bar,
+        };
+        let cfg = overridden(config, mach, cg, model)?;
+        let (result, tau, json) = py
             .detach(|| -> Result<_, delta_stability::Failure> {
                 let options = cmd::quartic::Options {
                     json: true,
@@ -719,10 +755,11 @@ pub fn analyze(
                 };
                 let r = cmd::analyze::results(&cfg, &options)?;
                 let json = serde_json::to_value(cmd::analyze::to_json(&cfg, &r));
-                Ok((r.result, json))
+                let tau = r.flight.map(|(_, p)| p.tau);
+                Ok((r.result, tau, json))
             })
             .map_err(failure)?;
         let json = json.map_err(|e| PyTypeError::new_err(e.to_string()))?;
-        Ok(Analysis { result, json })
+        Ok(Analysis { result, tau, json })
     })
 }

@@ -146,6 +146,48 @@ def test_analyze_is_the_cli_json(cli, path, overrides):
     assert len(a.warnings) == len(j["warnings"])
 
 
+OPTIONS = [
+    ("examples/delta-45.toml", {"mach": 0.7, "aero": "lifting-surface"}),
+    ("examples/delta-45.toml", {"mach": 0.5, "aero": "lifting-surface",
+                                "damping": "lifting-surface", "omega_bar": 0.3}),
+    ("examples/delta-60.toml", {"mach": 0.8, "damping": "lifting-surface-frequency"}),
+    ("examples/delta-60.toml", {"mach": 1.0, "damping": "transonic-frequency",
+                                "omega_bar": 0.1}),
+    ("examples/delta-60.toml", {"aero": "default", "cg": 0.3}),
+    ("examples/delta-60-physical.toml", {}),
+    ("examples/delta-60-physical.toml", {"mach": 1.5, "damping": "faired-slender"}),
+    ("examples/delta-60-physical.toml", {"mach": 0.6, "aero": "lifting-surface"}),
+]
+
+
+@pytest.mark.parametrize("path,options", OPTIONS)
+def test_analyze_options_are_the_cli_flags(cli, path, options):
+    """aero= and omega_bar= as --aero and --omega-bar; a physical flight
+    condition; and the engineer's outputs (damp, mode_shapes,
+    short_period_frequency) as the JSON's."""
+    flags = [x for k, v in options.items() for x in (f"--{k.replace('_', '-')}", v)]
+    j = cli.json("analyze", path, *flags)
+    a = ds.analyze(path, **options)
+    assert a.to_dict() == j
+    assert a.mode_shapes == j["mode_shapes"] and len(a.mode_shapes) >= 2
+    assert a.damp == j.get("damp") and a.flight == j.get("flight")
+    assert a.short_period_frequency == j.get("short_period_frequency")
+    assert [m.to_dict() for m in a.modes] == j["modes"]
+    assert a.damping == j["damping"] and a.aerodynamics == j["aerodynamics"]
+    physical = "physical" in path
+    assert (a.tau_s is not None) == physical == (a.damp is not None)
+    if physical:
+        assert a.tau_s == j["flight"]["tau_s"]
+        assert a.short_period.period_s == pytest.approx(a.short_period.period * a.tau_s)
+        assert a.short_period_frequency["natural_frequency_rad_s"] == pytest.approx(
+            abs(a.short_period.root) / a.tau_s, rel=1e-12)
+    if "omega_bar" in options:  # not iterated
+        f = a.damping["frequency"]
+        assert f is None or (f["iterations"] == 0 and f["converged"] == options["omega_bar"])
+    if "aero" in options and options["aero"] != "default":
+        assert a.aerodynamics != ds.analyze(path, **{**options, "aero": "default"}).aerodynamics
+
+
 def test_analyze_a_dict_as_the_file(cli):
     j = cli.json("analyze", "examples/delta-45.toml", "--mach", "1.2")
     cfg = {
@@ -207,22 +249,68 @@ def test_damping_derivatives_are_analyze_s(cli, theory, mach):
     assert d["fig18"] == j["damping"]["fig18"]
 
 
-def test_sweep_is_the_cli_csv(cli, tmp_path):
+SWEEPS = {
+    "derivatives": ("examples/delta-60.toml",
+                    dict(mach="0.5:2:0.25", cg="0.2:0.3:0.05", mu1="50:450:200",
+                         sweep="45:75:15", derivatives=True)),
+    "the config's sweep, faired-slender": ("examples/delta-45.toml",
+                                           dict(mach="0.6:1.6:0.2", i_b="0.06:0.1:0.02",
+                                                damping="faired-slender")),
+    "the lattice at a fixed frequency": ("examples/delta-45.toml",
+                                         dict(mach="0.4:0.8:0.2", mu1="50:450:400",
+                                              damping="lifting-surface",
+                                              aero="lifting-surface", omega_bar=0.25)),
+    "the lattice's frequency iterated": ("examples/delta-60.toml",
+                                         dict(mach="0.5:0.9:0.2", mu1="40:200:160",
+                                              sweep="55:65:10",
+                                              damping="lifting-surface-frequency")),
+    "errors: supersonic theory below M = 1": ("examples/delta-60.toml",
+                                              dict(mach="0.8:1.4:0.2", damping="supersonic")),
+    "a physical flight condition": ("examples/delta-60-physical.toml",
+                                    dict(mach="0.5:2:0.25", sweep="50:70:10",
+                                         cg="0.2:0.3:0.1", derivatives=True)),
+}
+
+
+def _flags(kwargs):
+    """The command line's flags for sweep()'s keyword arguments."""
+    names = {"i_b": "--ib", "omega_bar": "--omega-bar", "derivatives": "--derivatives"}
+    out = []
+    for k, v in kwargs.items():
+        flag = names.get(k, f"--{k}")
+        out += [flag] if v is True else [flag, v]
+    return out
+
+
+@pytest.mark.parametrize("case", sorted(SWEEPS))
+def test_sweep_is_the_cli_csv(cli, tmp_path, case):
+    """Column for column and value for value: the CSV's columns, in its
+    order, and each cell (empty: NaN; a number: the same float)."""
+    path, kwargs = SWEEPS[case]
     out = tmp_path / "sweep.csv"
-    cli.run("sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.25", "--cg", "0.2:0.3:0.05",
-            "--mu1", "50:450:200", "--sweep", "45:75:15", "--derivatives", "-o", out)
-    theirs = list(csv.DictReader(out.open()))
-    ours = ds.sweep("examples/delta-60.toml", mach="0.5:2:0.25", cg="0.2:0.3:0.05",
-                    mu1="50:450:200", sweep="45:75:15", derivatives=True)
-    assert len(ours["mach"]) == len(theirs) == 7 * 3 * 3 * 3
-    for k in theirs[0]:
+    cli.run("sweep", path, *_flags(kwargs), "-o", out)
+    with out.open(newline="") as f:
+        header, *rows = list(csv.reader(f))
+    ours = ds.sweep(path, **kwargs)
+    # the CSV repeats mu1 and i_b among the quartic inputs, and with a
+    # physical flight condition c_l (the flight point's C_L, eq 24, then the
+    # quartic input, computed apart: equal to rounding): a dict holds each
+    # name once, its first column, and every repetition must be that column
+    assert list(ours) == list(dict.fromkeys(header)), (list(ours), header)
+    assert len(ours["mach"]) == len(rows) == int(np.prod(ours.shape)) > 1
+    error = header.index("error")
+    assert any(r[error] == "" for r in rows)
+    assert any(r[error] != "" for r in rows) == case.startswith("errors")
+    for j, k in enumerate(header):
         col = ours[k]
-        for i, row in enumerate(theirs):
+        for i, row in enumerate(rows):
             if k in ("verdict", "error"):
-                assert col[i] == row[k], (k, i)
+                assert col[i] == row[j], (k, i)
             elif k == "stable":
-                assert (row[k] == "true") == bool(col[i]) or row["error"], (k, i)
-            elif row[k] == "":
+                assert (row[j] == "true") == bool(col[i]), (k, i)
+            elif row[j] == "":
                 assert math.isnan(col[i]), (k, i)
+            elif header.index(k) < j:  # a repetition
+                assert col[i] == pytest.approx(float(row[j]), rel=1e-15), (k, j, i)
             else:
-                assert col[i] == float(row[k]), (k, i, col[i], row[k])
+                assert col[i] == float(row[j]), (k, j, i, col[i], row[j])

@@ -80,6 +80,59 @@ def test_overrides_and_theory_domains_raise_as_the_cli(cli):
         assert str(e.value) == message
 
 
+def test_the_new_options_raise_as_the_cli(cli):
+    """--omega-bar with a model that takes no frequency, --aero
+    lifting-surface beyond M = 1: the command line's message, file and all;
+    for sweep() too (its axes are the command line's flags)."""
+    for flags, kwargs in [(["--omega-bar", "0.3"], {"omega_bar": 0.3}),
+                          (["--omega-bar", "0.3", "--damping", "slender"],
+                           {"omega_bar": 0.3, "damping": "slender"}),
+                          (["--omega-bar", "1e9", "--damping", "lifting-surface"],
+                           {"omega_bar": 1e9, "damping": "lifting-surface"})]:
+        message = cli.error("analyze", "examples/delta-45.toml", *flags)
+        with pytest.raises(ds.InputError) as e:
+            ds.analyze("examples/delta-45.toml", **kwargs)
+        assert str(e.value) == message and e.value.file == "examples/delta-45.toml"
+        assert "omega-bar" in message
+        with pytest.raises(ds.InputError) as e:
+            ds.sweep("examples/delta-45.toml", mach=[0.5, 0.9], **kwargs)
+        assert str(e.value) == message
+    message = cli.error("analyze", "examples/delta-45.toml", "--mach", "1.5", "--aero",
+                        "lifting-surface")
+    with pytest.raises(ds.InputError) as e:
+        ds.analyze("examples/delta-45.toml", mach=1.5, aero="lifting-surface")
+    assert str(e.value) == message
+    s = ds.sweep("examples/delta-45.toml", mach=[0.9, 1.5], aero="lifting-surface")
+    assert s["error"][0] == "" and s["error"][1] and s["error"][1] in message
+    with pytest.raises(ds.InputError) as e:
+        ds.analyze("examples/delta-45.toml", aero="lifting-surfaces")
+    assert e.value.field == "aero" and "default, lifting-surface" in e.value.message
+
+
+def test_a_physical_config_s_errors(cli, tmp_path):
+    """A physical flight condition fixes μ₁ and i_B (the sweep's mu1 and i_b
+    axes are refused, as --mu1 and --ib are); a bad physical field names its
+    line, as the command line does."""
+    text = open("examples/delta-60-physical.toml").read()
+    for name, flag in [("mu1", "--mu1"), ("i_b", "--ib")]:
+        theirs = cli.error("sweep", "examples/delta-60-physical.toml", "--mach", "0.9", flag,
+                           "50", "-o", tmp_path / "x.csv")
+        with pytest.raises(ds.InputError) as e:
+            ds.sweep("examples/delta-60-physical.toml", mach=0.9, **{name: 50.0})
+        assert e.value.field == name and e.value.message in theirs
+        assert "fixes μ₁ and i_B" in e.value.message
+    both = _write(tmp_path, "both.toml", text.replace("mass = 12000.0", "mass = 12000.0\nmu1 = 50"))
+    heavy = _write(tmp_path, "neg.toml", text.replace("mass = 12000.0", "mass = -12000.0"))
+    for path in [both, heavy]:
+        message = cli.error("analyze", path)
+        with pytest.raises(ds.InputError) as e:
+            ds.analyze(path)
+        assert str(e.value) == message and e.value.line > 0
+        with pytest.raises(ds.InputError) as e:
+            ds.sweep(path, mach=[0.8, 0.9])
+        assert str(e.value) == message
+
+
 def test_a_dict_s_error_names_its_field():
     with pytest.raises(ds.InputError) as e:
         ds.quartic(x_u=-0.03, x_w=0.25, mu1=50.0)

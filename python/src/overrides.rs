@@ -1,0 +1,66 @@
+//! The command line's overrides of a config as keyword arguments:
+//! `analyze(…, mach=, cg=, damping=, aero=, omega_bar=)` and `sweep(…,
+//! damping=, aero=, omega_bar=)` are `--mach`, `--cg`, `--damping`,
+//! `--aero` and `--omega-bar`, applied by the command line's own
+//! [`cmd::analyze::apply`] (each value within its range, the same
+//! messages).
+
+use crate::errors::{argument, failure};
+use crate::inputs;
+use delta_stability::cmd;
+use delta_stability::config::Config;
+use pyo3::prelude::*;
+use stability_core::aero::AeroModelName;
+use stability_core::case::DampingModel;
+
+/// The model options, as given (names not yet parsed).
+#[derive(Debug, Default, Clone, Copy)]
+pub struct Model<'a> {
+    /// `faired` (the default), `faired-slender` or a §7 theory.
+    pub damping: Option<&'a str>,
+    /// `default` or `lifting-surface` (the lattice's lift slope and
+    /// aerodynamic centre, eqs 25–29's inputs).
+    pub aero: Option<&'a str>,
+    /// A frequency-dependent theory at ω̄ = W, not iterated.
+    pub omega_bar: Option<f64>,
+}
+
+/// The damping model named `name`.
+fn damping(name: &str) -> PyResult<DampingModel> {
+    DampingModel::parse(name)
+        .map_err(|e| argument("damping", format!("unknown damping model: {e}")))
+}
+
+/// The aerodynamic model named `name`.
+fn aero(name: &str) -> PyResult<AeroModelName> {
+    AeroModelName::parse(name).ok_or_else(|| {
+        let names: Vec<&str> = AeroModelName::ALL.iter().map(|m| m.name()).collect();
+        argument(
+            "aero",
+            format!(
+                "unknown aerodynamic model `{name}`; the models: {}",
+                names.join(", ")
+            ),
+        )
+    })
+}
+
+/// The config read, with the overrides applied as the command line
+/// applies its flags.
+pub fn overridden(
+    config: &Bound<'_, PyAny>,
+    mach: Option<f64>,
+    cg: Option<f64>,
+    model: Model<'_>,
+) -> PyResult<Config> {
+    let mut cfg = inputs::config(config)?;
+    let o = cmd::analyze::Overrides {
+        damping: model.damping.map(damping).transpose()?,
+        mach,
+        cg,
+        aero: model.aero.map(aero).transpose()?,
+        omega_bar: model.omega_bar,
+    };
+    cmd::analyze::apply(&mut cfg, &o).map_err(failure)?;
+    Ok(cfg)
+}
