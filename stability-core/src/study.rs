@@ -3,8 +3,9 @@
 //! the one-cycle standard, and the largest μ₁ that meets it.
 
 use crate::aero::AeroModel;
-use crate::case::{Case, DampingModel, evaluate_point};
+use crate::case::{Case, DampingModel, evaluate_point_with};
 use crate::geometry::{Planform, Size};
+use crate::lifting_surface::Harmonic;
 
 /// The report's tailless true delta of leading-edge sweep `deg`: c.g. at
 /// h = 0.25 (x₀/c₀ = 0.5), μ₁ = 50 (Figs 27–31), i_B = 0.08 and
@@ -74,7 +75,9 @@ const LOG_MU1_TOLERANCE: f64 = 4e-7;
 /// oscillate: hence the scan, whose first hit from the top is the last hit
 /// of a scan from the bottom — the same bracket, in far fewer evaluations
 /// where the limit is large.) `None` when no μ₁ in the range meets it; 10⁴
-/// when every one does.
+/// when every one does. A frequency-dependent damping model (the default
+/// `faired` below M = 1.2) has its lattice interpolated between tabled ω̄
+/// ([`Harmonic::Interpolated`]).
 pub fn max_mu1_one_cycle(case: &Case) -> Option<f64> {
     let meets = |log_mu1: f64| meets_at(case, log_mu1);
     let log_mu1 = |i: usize| i as f64 * LOG_MU1_STEP;
@@ -89,7 +92,9 @@ pub fn max_mu1_one_cycle(case: &Case) -> Option<f64> {
 fn meets_at(case: &Case, log_mu1: f64) -> bool {
     let mut c = case.clone();
     c.mu1 = 10f64.powf(log_mu1);
-    evaluate_point(&c)
+    // the lattice of a frequency-dependent model interpolated between its
+    // tabled ω̄: every μ₁ tried has its own
+    evaluate_point_with(&c, Harmonic::Interpolated)
         .map(|r| r.analysis.verdict.is_met())
         .unwrap_or(false)
 }

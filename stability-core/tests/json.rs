@@ -5,9 +5,18 @@
 //! ```sh
 //! delta-stability quartic examples/tailless-delta-45.toml --json
 //! delta-stability quartic examples/tailless-delta-60-dimensional.toml --json
-//! delta-stability analyze examples/delta-45.toml --json
+//! delta-stability analyze examples/delta-45.toml --json --mach 0.7
 //! delta-stability analyze examples/delta-45.toml --json --mach 1.0 --damping transonic-frequency
 //! ```
+//!
+//! (The first `analyze` file was re-recorded when the default `faired`
+//! model became the note's fairing in issue 11 — the lattice at M = 0.7, its
+//! frequency iterated, so `damping.frequency` is an object where it was
+//! null and the values moved; every key kept. It was recorded at the
+//! example's own M = 0.9 before, where the new model's phugoid is two real
+//! roots and the eq (7) and phugoid-level keys print null: M = 0.7 keeps
+//! both modes oscillatory, so every key of the hand-assembled JSON is
+//! checked.)
 //!
 //! (The transonic-frequency file's values were re-recorded, key order and
 //! keys kept, when the frequency iteration became a secant in issue 14: it
@@ -130,9 +139,10 @@ fn quartic_json_with_tau() {
 
 #[test]
 fn analyze_json() {
-    let case = report_wing(45.0, 0.9);
+    let case = report_wing(45.0, 0.7);
     let r = evaluate(&case).unwrap();
-    let want = without(fixture("analyze-delta-45.json"), &["file"]);
+    // (`mode_shapes`: the command's engineering outputs, `Engineering`'s)
+    let want = without(fixture("analyze-delta-45.json"), &["file", "mode_shapes"]);
     assert_same(serde_json::to_value(r.view(&case)).unwrap(), want);
 
     let mut case = report_wing(45.0, 1.0);

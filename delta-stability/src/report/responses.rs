@@ -4,7 +4,6 @@
 
 use super::{Plate, Study};
 use crate::plot::{Figure, Series};
-use stability_core::case::evaluate;
 use stability_core::response::{Input, Simplifications, StateSpace, TwoDof};
 use stability_core::study::{grid, report_wing};
 
@@ -21,7 +20,7 @@ fn fig37() -> Plate {
         "ŵ/m₀ (eqs 44–45)",
     );
     for m in [0.8, 1.0, 1.2, 1.6] {
-        if let Ok(r) = evaluate(&report_wing(45.0, m)) {
+        if let Some(r) = super::study::eval(&report_wing(45.0, m)) {
             let two = TwoDof::of(&r.derivatives);
             f = f.with(Series::new(
                 format!("M = {m}"),
@@ -47,7 +46,7 @@ fn fig38() -> Plate {
         z0: 0.0,
         m0: 1.0,
     };
-    if let Ok(r) = evaluate(&report_wing(45.0, 1.2)) {
+    if let Some(r) = super::study::eval(&report_wing(45.0, 1.2)) {
         for (name, neglect) in [("with z_q, z_ẇ", false), ("z_q = z_ẇ = 0", true)] {
             let simp = Simplifications {
                 neglect_zq_zwdot: neglect,

@@ -6,21 +6,39 @@
 
 use crate::plot::{Figure, Series};
 use rayon::prelude::*;
-use stability_core::case::{Case, CaseResult, DampingModel, evaluate};
+use stability_core::case::{Case, CaseResult, DampingModel, evaluate_harmonic};
 use stability_core::damping::Theory;
+use stability_core::faired::LIFTING_SURFACE_LIMIT;
+use stability_core::lifting_surface::Harmonic;
 use stability_core::study::{grid, report_wing};
 
 /// The note's two wings, by leading-edge sweep (degrees).
 pub const WINGS: [f64; 2] = [45.0, 60.0];
 
-/// The Mach numbers of the figures: 0.5 to 2.0.
+/// The Mach numbers of the figures: 0.5 to 0.9 in steps of 0.05, where the
+/// faired model is the lifting surface — smooth in Mach number, and one
+/// lattice (a frequency table) per wing and Mach number — then in steps of
+/// 0.01 to 2.0, through the joins and the supersonic theories, where the
+/// curves turn.
 pub fn machs() -> Vec<f64> {
-    grid(0.5, 2.0, 0.01)
+    let mut ms = grid(0.5, LIFTING_SURFACE_LIMIT, 0.05);
+    ms.extend(grid(LIFTING_SURFACE_LIMIT + 0.01, 2.0, 0.01));
+    ms
 }
 
-/// Each case's result (`None` where a theory does not apply), in parallel.
+/// One case's result as the report evaluates it (`None` where a theory
+/// does not apply): whole (eq 7's check too), the lattice's harmonic
+/// solutions of the frequency-dependent models (the default `faired` below
+/// M = 1.2) interpolated in each wing's frequency table, so that the study,
+/// its sweeps over the unstated inputs and the largest-μ₁ searches solve the
+/// lattice once per wing, Mach number and tabled ω̄, not once per iterate.
+pub fn eval(case: &Case) -> Option<CaseResult> {
+    evaluate_harmonic(case, Harmonic::Interpolated).ok()
+}
+
+/// Each case's result ([`eval`]), in parallel.
 pub fn eval_all(cases: Vec<Case>) -> Vec<Option<CaseResult>> {
-    cases.par_iter().map(|c| evaluate(c).ok()).collect()
+    cases.par_iter().map(eval).collect()
 }
 
 /// The note's wing of sweep `deg` across the Mach numbers `ms`, varied by

@@ -352,7 +352,7 @@ impl Findings {
         )
         .ok()?;
         let m_thetadot = |c: &Case| -> Option<f64> {
-            let r = stability_core::case::evaluate_point(c).ok()?;
+            let r = super::study::eval(c)?;
             Some(-r.damping.derivatives.m_thetadot())
         };
         Some(Cropping {
