@@ -238,12 +238,53 @@ fn analyze_gives_the_derivatives_coefficients_modes_and_criteria() {
     ] {
         assert!(d[name].is_number(), "{name}");
     }
-    // slender-wing damping (faired, subsonic) at h = 0.25, A = 4, by hand (eq 37)
-    let pi = std::f64::consts::PI;
-    assert!((d["z_q"].as_f64().unwrap() + 1.5 * pi).abs() < 1e-12);
-    assert!((d["m_q"].as_f64().unwrap() + 0.75 * pi).abs() < 1e-12);
     // level flight, eq (24): C_L = 0.05/0.36
     assert!((d["c_l"].as_f64().unwrap() - 0.05 / 0.36).abs() < 1e-15);
+    // the default (faired) model subsonic is the lattice at the short
+    // period's own ω̄: the lifting surface asked for at that ω̄ by name, with
+    // its own lift slope and aerodynamic centre, gives the same derivatives
+    let w = v["damping"]["frequency"]["converged"]
+        .as_f64()
+        .expect("iterated");
+    assert!((w - v["modes"][0]["frequency_parameter"].as_f64().unwrap()).abs() < 1e-9);
+    let by_name = run_ok(&[
+        "analyze",
+        "examples/delta-45.toml",
+        "--json",
+        "--mach",
+        "0.6",
+        "--damping",
+        "lifting-surface",
+        "--aero",
+        "lifting-surface",
+        "--omega-bar",
+        &format!("{w:?}"),
+    ]);
+    let l: serde_json::Value = serde_json::from_str(&common::stdout(&by_name)).unwrap();
+    for name in ["z_q", "z_wdot", "m_q", "m_wdot", "z_w", "m_w", "z_u", "m_u"] {
+        let (a, b) = (
+            d[name].as_f64().unwrap(),
+            l["derivatives"][name].as_f64().unwrap(),
+        );
+        assert!(
+            (a - b).abs() < 1e-12 * b.abs().max(1.0),
+            "{name}: {a} vs {b}"
+        );
+    }
+    // the slender fairing's damping subsonic at h = 0.25, A = 4, by hand (eq 37)
+    let slender = run_ok(&[
+        "analyze",
+        "examples/delta-45.toml",
+        "--json",
+        "--mach",
+        "0.6",
+        "--damping",
+        "faired-slender",
+    ]);
+    let s: serde_json::Value = serde_json::from_str(&common::stdout(&slender)).unwrap();
+    let pi = std::f64::consts::PI;
+    assert!((s["derivatives"]["z_q"].as_f64().unwrap() + 1.5 * pi).abs() < 1e-12);
+    assert!((s["derivatives"]["m_q"].as_f64().unwrap() + 0.75 * pi).abs() < 1e-12);
 }
 
 #[test]
@@ -694,8 +735,11 @@ fn sweep_json_is_an_array_of_objects() {
     assert_eq!(a[1]["sweep_deg"].as_f64(), Some(45.0));
     for p in a {
         assert!(p["stable"].is_boolean() || p["error"].is_string(), "{p}");
-        if p["stable"] == false {
-            assert_eq!(p["verdict"], "divergent");
+        // a divergent short period is an unstable aircraft (Routh, §4); an
+        // unstable one may be its phugoid alone, with the short period
+        // judged on its own (§8)
+        if p["verdict"] == "divergent" {
+            assert_eq!(p["stable"], false, "{p}");
         }
     }
     // the file is the user's to read
@@ -783,6 +827,9 @@ fn a_killed_sweep_leaves_no_half_written_file() {
     let out_path = dir.path().join("big.csv");
     let mut child = bin()
         .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.00001"])
+        // the quasi-steady fairing: the default iterates every point through
+        // the lattice, and this is about the file, not the model
+        .args(["--damping", "faired-slender"])
         .args(["--cg", "0.2:0.3:0.001", "-o"])
         .arg(&out_path)
         .stderr(std::process::Stdio::null())
@@ -871,11 +918,16 @@ fn sweep_points_are_those_analyze_computes_alone() {
             .iter()
             .find(|m| m["name"] == "short_period")
             .unwrap();
+        // the default faired model iterates ω̄ through the lattice below
+        // M = 1.2: a sweep interpolates it in the lattice's frequency table,
+        // `analyze` solves it at each iterate (within the table's accuracy,
+        // docs/damping-theories.md); from 1.2 it is quasi-steady and exact
+        let tol = if *mach == "0.9" { 1e-5 } else { 1e-12 };
         for (col, key) in [(7, "re"), (8, "im")] {
             let ours: f64 = row[col].parse().unwrap();
             let alone = sp[key].as_f64().unwrap();
             assert!(
-                (ours - alone).abs() <= 1e-12 * alone.abs(),
+                (ours - alone).abs() <= tol * alone.abs(),
                 "M {mach} {key}: {ours} vs {alone}"
             );
         }

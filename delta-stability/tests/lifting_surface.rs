@@ -99,6 +99,8 @@ fn analyze_json_carries_the_lattices_derivatives_under_the_same_keys() {
         "examples/delta-45.toml",
         "--mach",
         "0.5",
+        "--damping",
+        "faired-slender",
         "--json",
     ]));
     assert!(short_period(&slender).is_none());
@@ -168,13 +170,22 @@ fn omega_bar_fixes_the_frequency_of_every_frequency_dependent_theory() {
 #[test]
 fn what_does_not_apply_is_an_error_naming_the_flag_or_field() {
     let out = run_err(
-        &["analyze", "examples/delta-45.toml", "--omega-bar", "0.3"],
+        &[
+            "analyze",
+            "examples/delta-45.toml",
+            "--damping",
+            "faired-slender",
+            "--omega-bar",
+            "0.3",
+        ],
         2,
     );
     let err = stderr(&out);
     assert!(
-        err.contains("--omega-bar: the damping model `faired` takes no frequency parameter")
-            && err.contains("lifting-surface, lifting-surface-frequency"),
+        err.contains("--omega-bar: the damping model `faired-slender` takes no frequency parameter")
+            && err.contains(
+                "the models that do: faired, transonic-frequency, lifting-surface, lifting-surface-frequency"
+            ),
         "{err}"
     );
     let out = run_err(
@@ -372,6 +383,8 @@ fn a_sweep_at_a_fixed_frequency_is_analyze_at_it() {
             "examples/delta-45.toml",
             "--mach",
             "0.6",
+            "--damping",
+            "slender",
             "--omega-bar",
             "0.3",
             "-o",
@@ -379,7 +392,7 @@ fn a_sweep_at_a_fixed_frequency_is_analyze_at_it() {
         ],
         2,
     );
-    assert!(stderr(&out).contains("--omega-bar: the damping model `faired`"));
+    assert!(stderr(&out).contains("--omega-bar: the damping model `slender`"));
 }
 
 #[test]

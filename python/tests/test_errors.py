@@ -84,7 +84,8 @@ def test_the_new_options_raise_as_the_cli(cli):
     """--omega-bar with a model that takes no frequency, --aero
     lifting-surface beyond M = 1: the command line's message, file and all;
     for sweep() too (its axes are the command line's flags)."""
-    for flags, kwargs in [(["--omega-bar", "0.3"], {"omega_bar": 0.3}),
+    for flags, kwargs in [(["--omega-bar", "0.3", "--damping", "faired-slender"],
+                           {"omega_bar": 0.3, "damping": "faired-slender"}),
                           (["--omega-bar", "0.3", "--damping", "slender"],
                            {"omega_bar": 0.3, "damping": "slender"}),
                           (["--omega-bar", "1e9", "--damping", "lifting-surface"],

@@ -260,7 +260,8 @@ mod tests {
         let args = grid_args(&grid).unwrap_or_else(|e| panic!("{e}"));
         assert!(crate::root().join(&args[0]).is_file(), "{}", args[0]);
         let flags: Vec<&str> = args[1..].iter().step_by(2).map(String::as_str).collect();
-        assert_eq!(flags, ["--mach", "--cg", "--mu1", "--sweep"]);
+        assert_eq!(flags, ["--damping", "--mach", "--cg", "--mu1", "--sweep"]);
+        assert_eq!(args[2], "faired-slender");
         assert!(grid["pointwise"].as_u64().is_some_and(|n| n > 0));
     }
 }

@@ -81,13 +81,13 @@ pub fn apply(cfg: &mut config::Config, o: &Overrides) -> Result<(), Failure> {
 
 /// Why `--omega-bar` does not apply to `model`.
 fn no_omega_bar(model: DampingModel) -> String {
-    let takers: Vec<&str> = Theory::ALL
+    let takers: Vec<&str> = DampingModel::ALL
         .into_iter()
-        .filter(|t| t.takes_omega_bar())
-        .map(Theory::name)
+        .filter(|m| m.takes_omega_bar())
+        .map(DampingModel::name)
         .collect();
     format!(
-        "the damping model `{}` takes no frequency parameter; the theories that do: {}",
+        "the damping model `{}` takes no frequency parameter; the models that do: {}",
         model.name(),
         takers.join(", ")
     )
