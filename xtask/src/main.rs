@@ -33,7 +33,15 @@ Measures `delta-stability sweep` in design points per second on the grid of
 benches/sweep-grid.json (about a million points), side by side with
 python-control point by point and numpy's batched eigenvalues on the same
 points (a Python venv with numpy and python-control is made under
-target/bench/ on first use). Writes target/bench/sweep-throughput.md and .json.";
+target/bench/ on first use). Writes target/bench/sweep-throughput.md and .json.
+
+cargo xtask bench-report
+
+Times the main job, `delta-stability report` (release), three times on every
+core and three times on one (RAYON_NUM_THREADS=1), each a fresh process
+whose lattice solves start from an empty cache; prints the medians, their
+ratio and the share of the 10 s budget (issue 11). Writes
+target/bench/report-time.md.";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -46,6 +54,7 @@ fn main() -> ExitCode {
         ["regen"] => regen::regen(&root(), false),
         ["regen", "--check"] | ["--check", "regen"] => regen::regen(&root(), true),
         ["bench"] => bench::bench(&root()),
+        ["bench-report"] => bench::bench_report(&root()),
         ["help"] | ["--help"] | ["-h"] | [] => {
             println!("{USAGE}");
             Ok(())
