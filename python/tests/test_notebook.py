@@ -34,7 +34,7 @@ def test_the_note_study_notebook_executes():
     text = "".join(
         o.get("text", "") for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])
     )
-    assert "Fig 33 agrees with the report's CSV at 151 Mach numbers on 4 curves" in text
+    assert "Fig 33 agrees with the report's CSV at 119 Mach numbers on 4 curves" in text
     errors = [o for c in nb.cells if c.cell_type == "code" for o in c.get("outputs", [])
               if o.output_type == "error"]
     assert not errors, errors
