@@ -89,17 +89,7 @@ impl fmt::Display for Warning {
                 kappa,
                 limit,
                 validity_mach,
-            } => {
-                write!(
-                    f,
-                    "supersonic: linear theory ((36) and past the sonic edge) is first order in frequency, valid for ω̄/(M² − 1) ≪ 1 (the rule: κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ {limit}); at M = {} the short period's ω̄ = {omega_bar:.3} gives ω̄/(M² − 1) = {nu:.3}, κ = {kappa:.3}, so its z_ẇ, m_ẇ are outside it; ",
-                    Num(mach)
-                )?;
-                match validity_mach {
-                    Some(m) => write!(f, "at this ω̄ it holds above M = {m:.3}"),
-                    None => write!(f, "at this ω̄ it holds at no Mach number (ω̄c₀/c̄ ≥ {limit})"),
-                }
-            }
+            } => low_frequency(f, mach, omega_bar, (nu, kappa, limit), validity_mach),
             Warning::FrequencyUnchecked {
                 mach,
                 omega_max,
@@ -143,6 +133,26 @@ impl fmt::Display for Warning {
                 "lifting surface at ω̄ = {omega_bar:.3}: the default lattice resolves ω̄ ≲ 2 (boxes short against the wavelength)"
             ),
         }
+    }
+}
+
+/// [`Warning::LowFrequency`] in words: (36)'s low-frequency rule failed at
+/// the short period's ω̄ (`ratios`: ν = ω̄/(M² − 1), κ and the rule's limit).
+fn low_frequency(
+    f: &mut fmt::Formatter<'_>,
+    mach: f64,
+    omega_bar: f64,
+    (nu, kappa, limit): (f64, f64, f64),
+    validity_mach: Option<f64>,
+) -> fmt::Result {
+    write!(
+        f,
+        "supersonic: linear theory ((36) and past the sonic edge) is first order in frequency, valid for ω̄/(M² − 1) ≪ 1 (the rule: κ = ω̄(c₀/c̄)M²/(M² − 1) ≤ {limit}); at M = {} the short period's ω̄ = {omega_bar:.3} gives ω̄/(M² − 1) = {nu:.3}, κ = {kappa:.3}, so its z_ẇ, m_ẇ are outside it; ",
+        Num(mach)
+    )?;
+    match validity_mach {
+        Some(m) => write!(f, "at this ω̄ it holds above M = {m:.3}"),
+        None => write!(f, "at this ω̄ it holds at no Mach number (ω̄c₀/c̄ ≥ {limit})"),
     }
 }
 
