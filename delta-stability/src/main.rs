@@ -258,16 +258,21 @@ enum Command {
     ///
     /// The built-in cases are the note's: tailless true deltas of 45° and 60°
     /// leading-edge sweep, c.g. at h = 0.25, μ₁ = 50, Mach 0.5 to 2.0, with
-    /// the variations it studies (sweep 30°–75°, c.g., μ₁ up to 400, taper).
-    /// Writes into DIR: figNN.svg and figNN.csv under the note's figure
-    /// numbers, summary.json (intervals of Mach where each wing's short
-    /// period diverges or takes more than one cycle to halve, and the largest
-    /// μ₁ meeting the standard at each Mach number) and index.html (the
-    /// note's conclusions judged against ours, with the numbers; its links
-    /// work wherever DIR is). The files are written into a temporary
-    /// directory beside DIR that replaces DIR only when complete, so a killed
-    /// run leaves the previous report whole; DIR, if it exists, must be an
-    /// earlier report or empty.
+    /// the variations it studies (sweep 30°–75°, c.g., μ₁ up to 400, taper),
+    /// under the default `faired` damping model (the note's fairing of its
+    /// theories: docs/damping-theories.md). Writes into DIR: figNN.svg and
+    /// figNN.csv under the note's figure numbers (Figs 1–38), summary.json
+    /// (`delta_45`, `delta_60`: the intervals of Mach where each wing's short
+    /// period diverges or takes more than one cycle to halve, the largest μ₁
+    /// meeting the standard at each Mach number and the worst of them;
+    /// `conclusions`: each of the note's conclusions as {claim, section,
+    /// ours, reproduced, …}, swept over the unstated i_B and C_L·M²;
+    /// `assumptions`) and index.html (the same conclusions with the numbers,
+    /// a table of contents and the figures; its links work wherever DIR
+    /// is). About 8 s on 2 cores, most of it the doublet lattice. The files
+    /// are written into a temporary directory beside DIR that replaces DIR
+    /// only when complete, so a killed run leaves the previous report whole;
+    /// DIR, if it exists, must be an earlier report or empty.
     Report {
         /// The output directory.
         #[arg(long, default_value = "report")]
