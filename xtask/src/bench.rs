@@ -68,6 +68,20 @@ fn read_grid(root: &Path) -> Result<Value, String> {
 /// The release binary, and the Python of target/bench/venv (made on first
 /// use, with numpy and python-control).
 fn setup(root: &Path, dir: &Path) -> Result<(PathBuf, PathBuf), String> {
+    let bin = build_release(root, dir)?;
+    let python = dir.join("venv/bin/python");
+    if !python.exists() {
+        eprintln!("making target/bench/venv with numpy and python-control…");
+        run(Command::new("python3")
+            .args(["-m", "venv"])
+            .arg(dir.join("venv")))?;
+        run(Command::new(&python).args(["-m", "pip", "install", "-q", "numpy", "control"]))?;
+    }
+    Ok((bin, python))
+}
+
+/// Makes `dir` and builds the release binary, returning its path.
+fn build_release(root: &Path, dir: &Path) -> Result<PathBuf, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     eprintln!("building delta-stability (release)…");
     run(Command::new(env!("CARGO")).current_dir(root).args([
@@ -77,15 +91,7 @@ fn setup(root: &Path, dir: &Path) -> Result<(PathBuf, PathBuf), String> {
         "-p",
         "delta-stability",
     ]))?;
-    let python = dir.join("venv/bin/python");
-    if !python.exists() {
-        eprintln!("making target/bench/venv with numpy and python-control…");
-        run(Command::new("python3")
-            .args(["-m", "venv"])
-            .arg(dir.join("venv")))?;
-        run(Command::new(&python).args(["-m", "pip", "install", "-q", "numpy", "control"]))?;
-    }
-    Ok((root.join("target/release/delta-stability"), python))
+    Ok(root.join("target/release/delta-stability"))
 }
 
 /// One timed `sweep` over the grid into `dir/out`, in seconds.
@@ -278,16 +284,7 @@ fn timed_reports(root: &Path, bin: &Path, threads: Option<usize>) -> Result<f64,
 /// one core, in the same run, and against the budget.
 pub fn bench_report(root: &Path) -> Result<(), String> {
     let dir = root.join("target/bench");
-    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    eprintln!("building delta-stability (release)…");
-    run(Command::new(env!("CARGO")).current_dir(root).args([
-        "build",
-        "--release",
-        "-q",
-        "-p",
-        "delta-stability",
-    ]))?;
-    let bin = root.join("target/release/delta-stability");
+    let bin = build_release(root, &dir)?;
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     eprintln!("delta-stability report, 3 runs on {threads} cores and 3 on one…");
     let all = timed_reports(root, &bin, None)?;
