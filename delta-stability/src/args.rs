@@ -2,14 +2,15 @@
 //! with its one-line meaning in `--help`; the lists come from the library
 //! (its damping theories and notations), not restated here.
 
-use crate::input::dimensional_notation::DIMENSIONAL;
 use clap::ValueEnum;
 use clap::builder::PossibleValue;
 use stability_core::aero::AeroModelName;
 use stability_core::cap::AirplaneClass;
 use stability_core::case::DampingModel;
 use stability_core::damping::Theory;
+use stability_core::display::Num;
 use stability_core::notation::Notation;
+use stability_io::input::dimensional_notation::DIMENSIONAL;
 use std::sync::OnceLock;
 
 /// A damping model: `faired` or one of the library's theories.
@@ -210,7 +211,10 @@ pub fn finite(s: &str) -> Result<f64, String> {
     match s.trim().parse::<f64>() {
         Ok(x) if x.is_finite() => Ok(x),
         Ok(x) => Err(format!("{x} is not a finite number")),
-        Err(_) => Err(format!("`{}` is not a number", crate::diag::quote(s))),
+        Err(_) => Err(format!(
+            "`{}` is not a number",
+            stability_io::diag::quote(s)
+        )),
     }
 }
 
@@ -220,7 +224,7 @@ pub fn positive(s: &str) -> Result<f64, String> {
     if x > 0.0 {
         Ok(x)
     } else {
-        Err(format!("{} is not positive", crate::diag::num(x)))
+        Err(format!("{} is not positive", Num(x)))
     }
 }
 

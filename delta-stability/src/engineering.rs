@@ -2,9 +2,9 @@
 //! short-period frequency requirement, the `damp()` table in seconds and
 //! the mode shapes, from the library's [`Engineering`].
 
-use crate::fmt::sig;
 use stability_core::cap::ShortPeriodFrequency;
 use stability_core::damp::Damp;
+use stability_core::display::sig;
 use stability_core::engineering::Engineering;
 use stability_core::linear::TimeUnit;
 use stability_core::mode_shape::ModeShape;

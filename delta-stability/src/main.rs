@@ -6,11 +6,7 @@
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
-use delta_stability::args::{
-    AeroArg, ClassArg, DampingArg, NotationArg, ResponseInput, TargetNotation, finite, positive,
-};
 use delta_stability::cmd;
-use stability_core::response::MAX_STEPS;
 
 /// The exit statuses and the limits on input files, after every command's
 /// help.
@@ -106,52 +102,14 @@ enum Command {
     ///
     /// See examples/aircraft/*.toml (five published sets, with their sources).
     #[command(verbatim_doc_comment)]
-    Quartic {
-        /// The derivative file (TOML).
-        file: String,
-        /// Print one JSON object (keys coefficients, routh_discriminant, stable, roots, modes, criteria, mode_shapes; with [dimensional] also damp and short_period_frequency) instead of a table.
-        #[arg(long)]
-        json: bool,
-        #[command(flatten)]
-        engineering: EngineeringArgs,
-    },
+    Quartic(cmd::quartic::Args),
     /// The longitudinal response (§11) to an elevon step or an initial disturbance.
     ///
     /// Solved exactly from the state-space form of eqs (2) (matrix
     /// exponential of the augmented system; not a fixed-step integrator).
     /// Time t̂ is in units of τ. For a step, the CSV also carries the
     /// report's two-degree-of-freedom closed form, eqs (44)–(45).
-    Response {
-        /// The derivative file (TOML), as for `quartic`.
-        file: String,
-        /// What disturbs the aircraft.
-        #[arg(long, value_enum, default_value = "step")]
-        input: ResponseInput,
-        /// End time, in units of τ (positive).
-        #[arg(long, value_parser = positive)]
-        until: f64,
-        /// Number of intervals (1 to 10⁶).
-        #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=MAX_STEPS as i64))]
-        steps: u32,
-        /// Size of the moment step m₀ (eqs 2 units; finite).
-        #[arg(long, default_value_t = 1.0, value_parser = finite)]
-        m0: f64,
-        /// Initial ŵ = w/V for `--input initial` (finite).
-        #[arg(long, default_value_t = 0.01, value_parser = finite)]
-        w0: f64,
-        /// Set z_q = z_ẇ = 0 (the report's Fig 38).
-        #[arg(long)]
-        neglect_zq_zwdot: bool,
-        /// Hold û = 0: two degrees of freedom (§11).
-        #[arg(long)]
-        neglect_u: bool,
-        /// Write the time history as CSV.
-        #[arg(long)]
-        csv: Option<String>,
-        /// Write a plot as SVG.
-        #[arg(long)]
-        svg: Option<String>,
-    },
+    Response(cmd::response::Args),
     /// From a planform and flight condition to derivatives, modes and criteria.
     ///
     /// CONFIG (TOML) gives the planform (§2.2), the flight condition and the
@@ -187,30 +145,7 @@ enum Command {
     /// quantity given in both forms (mu1 and mass, say) is an error. See
     /// examples/delta-60-physical.toml.
     #[command(verbatim_doc_comment)]
-    Analyze {
-        /// The design-point config (TOML).
-        config: String,
-        /// Override the damping model.
-        #[arg(long, value_enum)]
-        damping: Option<DampingArg>,
-        /// Override the aerodynamic model (lift slope and aerodynamic centre; a table in the config still wins).
-        #[arg(long, value_enum)]
-        aero: Option<AeroArg>,
-        /// Evaluate a frequency-dependent damping theory at ω̄ = ωc̄/V = W, not iterated: lifting-surface (else quasi-steady), lifting-surface-frequency, transonic-frequency.
-        #[arg(long = "omega-bar", value_name = "W", value_parser = positive)]
-        omega_bar: Option<f64>,
-        /// Override the Mach number.
-        #[arg(long, value_parser = finite)]
-        mach: Option<f64>,
-        /// Override the c.g. position h (fraction of the M.A.C.).
-        #[arg(long, value_parser = finite)]
-        cg: Option<f64>,
-        /// Print one JSON object (keys derivatives, coefficients, modes, criteria, mode_shapes, …; with a physical flight condition also flight, damp and short_period_frequency).
-        #[arg(long)]
-        json: bool,
-        #[command(flatten)]
-        engineering: EngineeringArgs,
-    },
+    Analyze(cmd::analyze::Args),
     /// Convert a derivative file from one notation to another.
     ///
     /// The notations: report (this report's, after Bryant & Gates: ½ρ, chord
@@ -241,19 +176,7 @@ enum Command {
     /// specs/notation.toml and checked against the report's appendix; the
     /// appendix's misprints are listed in docs/errata.md.
     #[command(verbatim_doc_comment)]
-    Convert {
-        /// The file's notation.
-        #[arg(long, value_enum)]
-        from: NotationArg,
-        /// The notation to write.
-        #[arg(long, value_enum)]
-        to: TargetNotation,
-        /// The derivative file (TOML).
-        file: String,
-        /// Print one JSON object instead of TOML.
-        #[arg(long)]
-        json: bool,
-    },
+    Convert(cmd::convert::Args),
     /// Run the note's whole study and write its figures, data and conclusions.
     ///
     /// The built-in cases are the note's: tailless true deltas of 45° and 60°
@@ -273,11 +196,7 @@ enum Command {
     /// are written into a temporary directory beside DIR that replaces DIR
     /// only when complete, so a killed run leaves the previous report whole;
     /// DIR, if it exists, must be an earlier report or empty.
-    Report {
-        /// The output directory.
-        #[arg(long, default_value = "report")]
-        out: String,
-    },
+    Report(cmd::report::Args),
     /// Design points over a Cartesian grid of Mach, sweep, c.g., μ₁ and i_B.
     ///
     /// Each range is A:B:STEP (inclusive) or a single value; those not given
@@ -307,7 +226,7 @@ enum Command {
     /// 450, 31 × 11 × 5 points:
     ///
     /// delta-stability sweep examples/delta-60.toml --mach 0.5:2:0.05 --cg 0.2:0.3:0.01 --mu1 50:450:100 -o sweep.csv
-    Sweep(cmd::sweep::Options),
+    Sweep(cmd::sweep::Args),
     /// How each mode's root moves with each derivative: dλ/dp for every input.
     ///
     /// For each mode (short period, phugoid, aperiodic roots) and each of
@@ -324,96 +243,19 @@ enum Command {
     /// multiple root has no derivative and says so.
     ///
     /// FILE is a derivative file, as for `quartic`.
-    Sensitivity {
-        /// The derivative file (TOML).
-        file: String,
-        /// Print one JSON object (keys file, notation, tau_s, modes[].sensitivities[] with input, value, d_re, d_im, d_damping_ratio, d_cycles_to_half, damping_drive, and d_re_s, d_im_s when τ is known).
-        #[arg(long)]
-        json: bool,
-    },
-}
-
-/// The options that write the engineer's outputs (`quartic`, `analyze`).
-#[derive(clap::Args)]
-struct EngineeringArgs {
-    /// Write the state space ẋ = A x + B δ, x = (u/V, α, q, θ), in seconds when the flight condition is dimensional (else in τ), to OUT.json, with a python-control script OUT.py and a MATLAB script OUT.m beside it. B needs a [control] table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; optional name); without one, A only.
-    #[arg(long, value_name = "OUT.json")]
-    state_space: Option<String>,
-    /// The MIL-F-8785C airplane class (§1.3) whose Category C floors the short-period frequency requirement applies.
-    #[arg(long = "class", value_enum, default_value = "IV")]
-    class: ClassArg,
-}
-
-impl EngineeringArgs {
-    fn options(self, json: bool) -> cmd::quartic::Options {
-        cmd::quartic::Options {
-            json,
-            state_space: self.state_space,
-            class: self.class.0,
-        }
-    }
+    Sensitivity(cmd::sensitivity::Args),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        Command::Quartic {
-            file,
-            json,
-            engineering,
-        } => cmd::quartic::run(&file, &engineering.options(json)),
-        Command::Sensitivity { file, json } => cmd::sensitivity::run(&file, json),
-        Command::Report { out } => cmd::report::run(std::path::Path::new(&out)),
-        Command::Sweep(o) => cmd::sweep::run(&o),
-        Command::Convert {
-            from,
-            to,
-            file,
-            json,
-        } => cmd::convert::run(from, to, &file, json),
-        Command::Analyze {
-            config,
-            damping,
-            aero,
-            omega_bar,
-            mach,
-            cg,
-            json,
-            engineering,
-        } => cmd::analyze::run(
-            &config,
-            &cmd::analyze::Overrides {
-                damping: damping.map(|d| d.0),
-                aero: aero.map(|a| a.0),
-                omega_bar,
-                mach,
-                cg,
-            },
-            &engineering.options(json),
-        ),
-        Command::Response {
-            file,
-            input,
-            until,
-            steps,
-            m0,
-            w0,
-            neglect_zq_zwdot,
-            neglect_u,
-            csv,
-            svg,
-        } => cmd::response::run(&cmd::response::Options {
-            file,
-            input,
-            until,
-            steps: steps as usize,
-            m0,
-            w0,
-            neglect_zq_zwdot,
-            neglect_u,
-            csv,
-            svg,
-        }),
+        Command::Quartic(a) => cmd::quartic::run(&a),
+        Command::Sensitivity(a) => cmd::sensitivity::run(&a),
+        Command::Report(a) => cmd::report::run(&a),
+        Command::Sweep(a) => cmd::sweep::run(&a),
+        Command::Convert(a) => cmd::convert::run(&a),
+        Command::Analyze(a) => cmd::analyze::run(&a),
+        Command::Response(a) => cmd::response::run(&a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -128,10 +128,10 @@ pub fn print(text: &str) -> Result<(), crate::Failure> {
     let mut out = std::io::stdout().lock();
     match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
-            Err(crate::Failure::Io(crate::diag::IoError::new(
+            Err(crate::Failure::Io(stability_io::diag::IoError::new(
                 "cannot write",
                 Path::new("standard output"),
-                crate::files::reason(&e),
+                stability_io::files::reason(&e),
             )))
         }
         _ => Ok(()),
@@ -142,6 +142,24 @@ pub fn print(text: &str) -> Result<(), crate::Failure> {
 /// cannot be written, there is no one to tell, and nothing else is done.
 pub fn warn(text: &str) {
     let _ = writeln!(std::io::stderr().lock(), "{text}");
+}
+
+/// Prints each of a reader's warnings, `warning: ` before each.
+pub fn warn_all(warnings: &[String]) {
+    for w in warnings {
+        warn(&format!("warning: {w}"));
+    }
+}
+
+/// Prints `value` as pretty JSON (the `--json` of every command).
+pub fn print_json(value: &impl serde::Serialize) -> Result<(), crate::Failure> {
+    let text = serde_json::to_string_pretty(value).map_err(|e| {
+        crate::Failure::Input(stability_io::diag::InputError::file(
+            "<output>",
+            format!("the result cannot be written as JSON: {e}"),
+        ))
+    })?;
+    print(&format!("{text}\n"))
 }
 
 /// Write `bytes` to `path` through a temporary file in the same directory,

@@ -3,9 +3,9 @@
 //! the modes (eq 8), the report's eq (7), the short-period approximation
 //! and the damping standard (§8–9, eq 41), the MIL-F-8785C levels.
 
-use crate::fmt::sig;
 use stability_core::analysis::Analysis;
 use stability_core::criteria::{Category, Verdict, phugoid_level, short_period_level};
+use stability_core::display::sig;
 use stability_core::modes::{Mode, Modes, Origin};
 use std::fmt::Write;
 

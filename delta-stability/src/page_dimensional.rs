@@ -4,10 +4,10 @@
 //! seconds (eq 8), the §8 verdict, the MIL-F-8785C levels and, with a
 //! `[reference]`, the set in the report's notation with eq (41).
 
-use crate::fmt::sig;
 use crate::page::{aligned, verdict_words};
 use stability_core::dimensional::analysis::InReportNotation;
 use stability_core::dimensional::{Axes, DimensionalAnalysis, DimensionalModel, Units};
+use stability_core::display::sig;
 use stability_core::modes::{Mode, ModeName, Origin};
 use std::fmt::Write;
 

@@ -13,9 +13,6 @@ mod svg;
 
 use std::fmt::Write;
 
-/// Significant digits of a number in the CSV ([`num`]).
-pub const CSV_DIGITS: usize = 12;
-
 /// Significant digits of a number written on a figure (off-scale notes).
 pub const LABEL_DIGITS: usize = 3;
 
@@ -261,46 +258,19 @@ impl Figure {
     }
 }
 
-/// `v` rounded to `digits` significant digits (through the decimal
-/// representation, so that 0.5700000000000001 to 12 digits is the double
-/// nearest 0.57); −0 becomes 0.
-fn rounded(v: f64, digits: usize) -> f64 {
-    let r: f64 = format!("{v:.prec$e}", prec = digits.saturating_sub(1))
-        .parse()
-        .unwrap_or(v);
-    r + 0.0
-}
-
-/// A CSV number, the one rule for every number the figures write: rounded
-/// to [`CSV_DIGITS`] (12) significant digits, then written as the shortest
-/// decimal that reads back as that rounded value (Rust's `Display`, no
-/// exponent). So the Mach grid's 0.5 + 0.01·7 = 0.5700000000000001 is
-/// written 0.57 — float noise from building the grid is not data — while a
-/// computed value keeps 12 significant digits, more than any model here is
-/// accurate to, and a change in its last bits does not change the file.
-/// Empty for a non-finite value (never NaN in the output).
-pub fn num(v: f64) -> String {
-    if v.is_finite() {
-        format!("{}", rounded(v, CSV_DIGITS))
-    } else {
-        String::new()
-    }
-}
+/// A CSV number: [`stability_io::csv::number`], the one rule for every
+/// number the program writes in CSV (12 significant digits, the shortest
+/// decimal that reads back, exponent form for the very small and large,
+/// empty where not finite).
+pub use stability_io::csv::number as num;
 
 /// A number written on a figure or its caption: [`LABEL_DIGITS`]
 /// significant digits, shortest form (12.3, 1.2, 100).
 pub fn short(v: f64) -> String {
-    format!("{}", rounded(v, LABEL_DIGITS))
+    format!("{}", stability_core::display::round_to(v, LABEL_DIGITS))
 }
 
-/// A CSV field, quoted when needed.
-pub fn csv_field(s: &str) -> String {
-    if s.contains([',', '"', '\n']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
+pub use stability_io::csv::field as csv_field;
 
 #[cfg(test)]
 mod tests {
@@ -334,7 +304,7 @@ mod tests {
         // data keep 12 significant digits, whatever their magnitude
         assert_eq!(num(0.11371015967272328), "0.113710159673");
         assert_eq!(num(-123456.78901234567), "-123456.789012");
-        assert_eq!(num(1.0 / 3.0 * 1e-7), "0.0000000333333333333");
+        assert_eq!(num(1.0 / 3.0 * 1e-7), "3.33333333333e-8");
         assert_eq!(num(2.0), "2");
         assert_eq!(num(-0.0), "0");
         assert_eq!(num(f64::NAN), "");

@@ -680,6 +680,12 @@ fn sweep_csv_covers_the_grid_and_agrees_with_the_state_matrix() {
             .position(|h| *h == n)
             .unwrap_or_else(|| panic!("{n}"))
     };
+    // each column once, `--derivatives` included (issue 19: mu1, i_b, c_l
+    // were repeated)
+    let mut names = header.clone();
+    names.sort_unstable();
+    names.dedup();
+    assert_eq!(names.len(), header.len(), "{header:?}");
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     // 8 Mach numbers × 3 c.g. × 3 μ₁, in order, the last axis fastest
     assert_eq!(rows.len(), 8 * 3 * 3);
@@ -690,7 +696,16 @@ fn sweep_csv_covers_the_grid_and_agrees_with_the_state_matrix() {
     for r in &rows {
         assert_eq!(r.len(), header.len());
         assert_eq!(r[col("error")], "", "{r:?}");
-        let d: [f64; 15] = std::array::from_fn(|k| r[col("x_u") + k].parse().unwrap());
+        // the twelve derivatives and c_l, then μ₁ and i_B from the grid's
+        // columns (each column once: issue 19)
+        let d: [f64; 15] = std::array::from_fn(|k| {
+            let c = match k {
+                13 => col("mu1"),
+                14 => col("i_b"),
+                _ => col("x_u") + k,
+            };
+            r[c].parse().unwrap()
+        });
         let eig = eigenvalues_of_eqs_2(&d);
         let sp = num_complex::Complex64::new(
             r[col("sp_re")].parse().unwrap(),

@@ -30,7 +30,7 @@ fn fixture(name: &str) -> Value {
 
 fn derivatives(example: &str) -> Derivatives {
     let p = root().join("examples").join(example);
-    delta_stability::input::read(path(&p))
+    stability_io::input::read(path(&p))
         .expect("the example reads")
         .derivatives
 }

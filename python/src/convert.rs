@@ -5,10 +5,10 @@ use crate::errors::{argument, input_error};
 use crate::guard;
 use crate::inputs::derivative_file;
 use crate::json::view_to_py;
-use delta_stability::cmd::convert::{converted, to_json};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use stability_core::notation::Notation;
+use stability_io::convert::{ConvertJson, converted};
 
 /// A derivative set converted into the notation `to` by the factors
 /// derived from each author's definitions (specs/notation.toml; the
@@ -42,7 +42,10 @@ pub fn convert<'py>(
         })?;
         let file = derivative_file(source, notation, kwargs)?;
         let values = converted(&file, target).map_err(|e| input_error(&e))?;
-        view_to_py(py, &to_json(&file, &file.notation, target, &values))
+        view_to_py(
+            py,
+            &ConvertJson::new(&file, &file.notation, target, &values),
+        )
     })
 }
 
@@ -50,5 +53,5 @@ pub fn convert<'py>(
 /// from AVL's .st output).
 #[pyfunction]
 pub fn notations() -> Vec<&'static str> {
-    delta_stability::input::notations()
+    stability_io::input::notations()
 }

@@ -4,10 +4,10 @@
 //! field as attributes; a file that cannot be read (exit status 3) is an
 //! `OSError` (`FileNotFoundError` when it does not exist).
 
-use delta_stability::Failure;
-use delta_stability::diag;
 use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyValueError};
 use pyo3::prelude::*;
+use stability_io::Failure;
+use stability_io::diag;
 
 pyo3::create_exception!(
     delta_stability,

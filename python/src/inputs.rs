@@ -7,12 +7,12 @@
 
 use crate::errors::failure;
 use crate::json::{table, toml_text};
-use delta_stability::config::{self, Config};
-use delta_stability::input::{self, DerivativeFile, rows};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use stability_core::notation::{Notation, tables};
+use stability_io::config::{self, Config};
+use stability_io::input::{self, DerivativeFile, rows};
 
 /// The name a dict is read under, in messages.
 pub const DICT: &str = "<dict>";

@@ -23,6 +23,7 @@ mod roots;
 mod sensitivity;
 mod sweep;
 mod theories;
+mod views;
 
 pub use errors::InputError;
 

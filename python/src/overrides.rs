@@ -2,16 +2,15 @@
 //! `analyze(…, mach=, cg=, damping=, aero=, omega_bar=)` and `sweep(…,
 //! damping=, aero=, omega_bar=)` are `--mach`, `--cg`, `--damping`,
 //! `--aero` and `--omega-bar`, applied by the command line's own
-//! [`cmd::analyze::apply`] (each value within its range, the same
+//! [`stability_io::config::apply`] (each value within its range, the same
 //! messages).
 
 use crate::errors::{argument, failure};
 use crate::inputs;
-use delta_stability::cmd;
-use delta_stability::config::Config;
 use pyo3::prelude::*;
 use stability_core::aero::AeroModelName;
 use stability_core::case::DampingModel;
+use stability_io::config::{Config, Overrides, apply};
 
 /// The model options, as given (names not yet parsed).
 #[derive(Debug, Default, Clone, Copy)]
@@ -54,13 +53,13 @@ pub fn overridden(
     model: Model<'_>,
 ) -> PyResult<Config> {
     let mut cfg = inputs::config(config)?;
-    let o = cmd::analyze::Overrides {
+    let o = Overrides {
         damping: model.damping.map(damping).transpose()?,
         mach,
         cg,
         aero: model.aero.map(aero).transpose()?,
         omega_bar: model.omega_bar,
     };
-    cmd::analyze::apply(&mut cfg, &o).map_err(failure)?;
+    apply(&mut cfg, &o).map_err(failure)?;
     Ok(cfg)
 }

@@ -9,8 +9,7 @@ use crate::guard;
 use crate::inputs::derivative_file;
 use crate::json::{to_py, view_to_py};
 use crate::overrides::{Model, overridden};
-use delta_stability::cmd;
-use delta_stability::input::DerivativeFile;
+use crate::views::{Attr, dir, getattr, keys};
 use numpy::{Complex64, IntoPyArray, PyArray1};
 use pyo3::exceptions::{PyAttributeError, PyTypeError};
 use pyo3::prelude::*;
@@ -19,6 +18,9 @@ use serde_json::Value;
 use stability_core::cap::AirplaneClass;
 use stability_core::case::CaseResult;
 use stability_core::modes::Mode as CoreMode;
+use stability_io::design_point::results;
+use stability_io::input::DerivativeFile;
+use stability_io::views::{AnalyzeJson, QuarticJson};
 
 /// A longitudinal derivative set in the report's notation (§3, eqs 2–4):
 /// the twelve non-dimensional derivatives and the three flight parameters
@@ -232,108 +234,68 @@ impl Derivatives {
 /// quantity is undefined. With τ known (a file's [dimensional]), `tau_s`
 /// and the same times in seconds under `_s` names.
 ///
-/// For λ = r ± is: period 2π/s; time to half amplitude ln 2/(−r) (to
-/// double, ln 2/r); cycles to half amplitude 0.11032·s/(−r) (eq 8);
-/// damping ratio ζ = −r/|λ|; natural frequency ωₙ = |λ|; frequency
-/// parameter ω̄ = s/μ₁ (§9).
+/// Attributes (the `to_dict()` keys): `name` (`short_period`, `phugoid`
+/// or `aperiodic`), `origin` (for an aperiodic root, the pair it came
+/// from), `re`, `im` (s ≥ 0), `root` (r + is, complex), `period` (2π/s),
+/// `time_to_half` (ln 2/(−r)), `time_to_double` (ln 2/r),
+/// `cycles_to_half` (0.11032·s/(−r), eq 8), `cycles_to_double`,
+/// `damping_ratio` (ζ = −r/|λ|), `natural_frequency` (ωₙ = |λ|),
+/// `frequency_parameter` (ω̄ = s/μ₁, §9); `tau_s`, `period_s`,
+/// `time_to_half_s`, `time_to_double_s`, `re_s`, `im_s`,
+/// `natural_frequency_s` when τ is known.
 #[pyclass(frozen, module = "delta_stability")]
 pub struct Mode {
     mode: CoreMode,
     tau: Option<f64>,
+    json: Value,
+}
+
+/// The attributes of a [`Mode`]: its JSON's keys.
+const MODE_ATTRS: &[Attr] = keys!(
+    "name",
+    "origin",
+    "re",
+    "im",
+    "period",
+    "time_to_half",
+    "time_to_double",
+    "cycles_to_half",
+    "cycles_to_double",
+    "damping_ratio",
+    "natural_frequency",
+    "frequency_parameter",
+    "tau_s",
+    "period_s",
+    "time_to_half_s",
+    "time_to_double_s",
+    "re_s",
+    "im_s",
+    "natural_frequency_s",
+);
+
+impl Mode {
+    fn new(mode: CoreMode, tau: Option<f64>) -> PyResult<Mode> {
+        let mut json = serde_json::to_value(mode.timed(tau))
+            .map_err(|e| PyTypeError::new_err(e.to_string()))?;
+        if let Value::Object(o) = &mut json {
+            o.insert("tau_s".into(), serde_json::json!(tau));
+        }
+        Ok(Mode { mode, tau, json })
+    }
 }
 
 #[pymethods]
 impl Mode {
-    /// `short_period`, `phugoid` or `aperiodic`.
-    #[getter]
-    fn name(&self) -> &'static str {
-        self.mode.name.as_str()
-    }
-    /// For an aperiodic root, the pair it came from (`short_period`,
-    /// `phugoid` or `unknown`); else None.
-    #[getter]
-    fn origin(&self) -> Option<&'static str> {
-        use stability_core::modes::Origin;
-        self.mode.origin.map(|o| match o {
-            Origin::ShortPeriod => "short_period",
-            Origin::Phugoid => "phugoid",
-            Origin::Unknown => "unknown",
-        })
-    }
-    /// r (1/τ).
-    #[getter]
-    fn re(&self) -> f64 {
-        self.mode.re
-    }
-    /// s ≥ 0 (1/τ).
-    #[getter]
-    fn im(&self) -> f64 {
-        self.mode.im
-    }
     /// The root r + is as a complex number (1/τ).
     #[getter]
     fn root(&self) -> Complex64 {
         Complex64::new(self.mode.re, self.mode.im)
     }
-    /// 2π/s (τ).
-    #[getter]
-    fn period(&self) -> Option<f64> {
-        self.mode.period
+    fn __getattr__<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
+        getattr(py, "Mode", &self.json, MODE_ATTRS, name)
     }
-    /// ln 2/(−r) (τ), when the mode decays.
-    #[getter]
-    fn time_to_half(&self) -> Option<f64> {
-        self.mode.time_to_half
-    }
-    /// ln 2/r (τ), when the mode grows.
-    #[getter]
-    fn time_to_double(&self) -> Option<f64> {
-        self.mode.time_to_double
-    }
-    /// 0.11032·s/(−r), eq (8), for a decaying oscillation.
-    #[getter]
-    fn cycles_to_half(&self) -> Option<f64> {
-        self.mode.cycles_to_half
-    }
-    /// 0.11032·s/r, for a growing oscillation.
-    #[getter]
-    fn cycles_to_double(&self) -> Option<f64> {
-        self.mode.cycles_to_double
-    }
-    /// ζ = −r/|λ|.
-    #[getter]
-    fn damping_ratio(&self) -> Option<f64> {
-        self.mode.damping_ratio
-    }
-    /// ωₙ = |λ| (1/τ).
-    #[getter]
-    fn natural_frequency(&self) -> f64 {
-        self.mode.natural_frequency
-    }
-    /// ω̄ = s/μ₁ = 2πf·c̄/V (§9), for an oscillation.
-    #[getter]
-    fn frequency_parameter(&self) -> Option<f64> {
-        self.mode.frequency_parameter
-    }
-    /// τ = m/(½ρSV) in seconds, when known.
-    #[getter]
-    fn tau_s(&self) -> Option<f64> {
-        self.tau
-    }
-    /// The period in seconds, when τ is known.
-    #[getter]
-    fn period_s(&self) -> Option<f64> {
-        self.seconds().and_then(|s| s.period)
-    }
-    /// The time to half amplitude in seconds, when τ is known.
-    #[getter]
-    fn time_to_half_s(&self) -> Option<f64> {
-        self.seconds().and_then(|s| s.time_to_half)
-    }
-    /// The time to double amplitude in seconds, when τ is known.
-    #[getter]
-    fn time_to_double_s(&self) -> Option<f64> {
-        self.seconds().and_then(|s| s.time_to_double)
+    fn __dir__(&self) -> Vec<&'static str> {
+        dir(MODE_ATTRS, &["root", "to_dict"])
     }
     /// The mode as the command line's JSON gives it.
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
@@ -349,12 +311,6 @@ impl Mode {
     }
 }
 
-impl Mode {
-    fn seconds(&self) -> Option<stability_core::modes::ModeSeconds> {
-        self.tau.map(|t| self.mode.in_seconds(t))
-    }
-}
-
 /// The modes as Python objects.
 fn modes<'py>(
     py: Python<'py>,
@@ -363,7 +319,7 @@ fn modes<'py>(
 ) -> PyResult<Bound<'py, PyList>> {
     let items = modes
         .iter()
-        .map(|m| Bound::new(py, Mode { mode: *m, tau }))
+        .map(|m| Bound::new(py, Mode::new(*m, tau)?))
         .collect::<PyResult<Vec<_>>>()?;
     PyList::new(py, items)
 }
@@ -380,8 +336,7 @@ fn named_mode<'py>(
     } else {
         a.modes.phugoid()
     };
-    m.map(|m| Bound::new(py, Mode { mode: *m, tau }))
-        .transpose()
+    m.map(|m| Bound::new(py, Mode::new(*m, tau)?)).transpose()
 }
 
 fn roots<'py>(
@@ -398,9 +353,55 @@ fn coefficients<'py>(
     a.quartic.to_array().to_vec().into_pyarray(py)
 }
 
-fn key<'py>(py: Python<'py>, json: &Value, k: &str) -> PyResult<Bound<'py, PyAny>> {
-    to_py(py, json.get(k).unwrap_or(&Value::Null))
-}
+/// The attributes the JSON answers, shared by [`Quartic`] and [`Analysis`].
+const ANALYSIS_ATTRS: &[Attr] = &[
+    ("stable", &["stable"]),
+    ("tau_s", &["tau_s"]),
+    ("verdict", &["criteria", "verdict"]),
+    ("criteria", &["criteria"]),
+    ("classical", &["classical_eq7"]),
+];
+
+/// The attributes of a [`Quartic`].
+const QUARTIC_ATTRS: &[Attr] = &[
+    ANALYSIS_ATTRS[0],
+    ANALYSIS_ATTRS[1],
+    ANALYSIS_ATTRS[2],
+    ANALYSIS_ATTRS[3],
+    ANALYSIS_ATTRS[4],
+    ("warnings", &["warnings"]),
+    ("notation", &["notation"]),
+];
+
+/// The attributes of an [`Analysis`].
+const DESIGN_POINT_ATTRS: &[Attr] = &[
+    ANALYSIS_ATTRS[0],
+    ANALYSIS_ATTRS[1],
+    ANALYSIS_ATTRS[2],
+    ANALYSIS_ATTRS[3],
+    ANALYSIS_ATTRS[4],
+    ("flight", &["flight"]),
+    ("mode_shapes", &["mode_shapes"]),
+    ("damp", &["damp"]),
+    ("short_period_frequency", &["short_period_frequency"]),
+    ("aerodynamics", &["aerodynamics"]),
+    ("damping", &["damping"]),
+    ("case", &["case"]),
+];
+
+/// The attributes both classes compute rather than read.
+const OWN: [&str; 10] = [
+    "coefficients",
+    "routh",
+    "roots",
+    "modes",
+    "short_period",
+    "phugoid",
+    "derivatives",
+    "to_dict",
+    "stable",
+    "verdict",
+];
 
 /// The stability quartic of a derivative set and what follows from it:
 /// `delta-stability quartic`'s result.
@@ -408,24 +409,20 @@ fn key<'py>(py: Python<'py>, json: &Value, k: &str) -> PyResult<Bound<'py, PyAny
 /// - `coefficients`: [A, B, C, D, E] of Aλ⁴ + Bλ³ + Cλ² + Dλ + E = 0
 ///   (eq 5), the exact expansion of eq (4) (eq 6, errata applied);
 /// - `routh`: Routh's discriminant R = BCD − AD² − B²E and the §4 verdict
-///   (stable when A…E and R have one sign);
+///   (stable when A…E and R have one sign); `stable`;
 /// - `roots`: the four roots (1/τ), conjugates adjacent, fastest first;
 /// - `modes`, `short_period`, `phugoid`: eq (8)'s quantities;
-/// - `criteria`: the §8 one-cycle standard, eq (41)'s m_θ̇max, the
-///   short-period approximation of §8–9 and the MIL-F-8785C levels;
+/// - `verdict` (`meets`, `fails` or `divergent`) and `criteria`: the §8
+///   one-cycle standard, eq (41)'s m_θ̇max, the short-period approximation
+///   of §8–9 and the MIL-F-8785C levels;
 /// - `classical`: the report's own eq (7) against the exact roots;
-/// - `warnings`, `derivatives`, `tau_s`, and `to_dict()` (the `--json`).
+/// - `warnings`, `derivatives`, `tau_s`, `notation`, and `to_dict()` (the
+///   `--json`, whose keys the attributes read).
 #[pyclass(frozen, module = "delta_stability")]
 pub struct Quartic {
     file: DerivativeFile,
     analysis: stability_core::analysis::Analysis,
     json: Value,
-}
-
-impl Quartic {
-    fn tau(&self) -> Option<f64> {
-        self.file.dimensional.map(|d| d.tau())
-    }
 }
 
 #[pymethods]
@@ -440,11 +437,6 @@ impl Quartic {
     fn routh<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         view_to_py(py, &self.analysis.routh)
     }
-    /// Routh's verdict (§4).
-    #[getter]
-    fn stable(&self) -> bool {
-        self.analysis.routh.stable
-    }
     /// The four roots (1/τ), complex.
     #[getter]
     fn roots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<Complex64>> {
@@ -453,52 +445,28 @@ impl Quartic {
     /// The modes, fastest first.
     #[getter]
     fn modes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
-        modes(py, &self.analysis.modes, self.tau())
+        modes(py, &self.analysis.modes, self.file.tau())
     }
     /// The short-period oscillation, if the faster pair oscillates.
     #[getter]
     fn short_period<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, Mode>>> {
-        named_mode(py, &self.analysis, self.tau(), true)
+        named_mode(py, &self.analysis, self.file.tau(), true)
     }
     /// The phugoid, if the slower pair oscillates.
     #[getter]
     fn phugoid<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, Mode>>> {
-        named_mode(py, &self.analysis, self.tau(), false)
-    }
-    /// The §8 one-cycle standard: `meets`, `fails` or `divergent`.
-    #[getter]
-    fn verdict(&self) -> &'static str {
-        self.analysis.verdict.as_str()
-    }
-    /// The criteria of §8–9 (the `criteria` object of the JSON).
-    #[getter]
-    fn criteria<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "criteria")
-    }
-    /// Eq (7), the report's approximate roots, against the exact ones.
-    #[getter]
-    fn classical<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "classical_eq7")
-    }
-    /// The reader's warnings (the command line prints them on stderr).
-    #[getter]
-    fn warnings(&self) -> Vec<String> {
-        self.file.warnings.clone()
+        named_mode(py, &self.analysis, self.file.tau(), false)
     }
     /// The derivative set, in the report's notation.
     #[getter]
     fn derivatives(&self) -> Derivatives {
         Derivatives(self.file.derivatives)
     }
-    /// τ = m/(½ρSV) in seconds, when the input gives [dimensional].
-    #[getter]
-    fn tau_s(&self) -> Option<f64> {
-        self.tau()
+    fn __getattr__<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
+        getattr(py, "Quartic", &self.json, QUARTIC_ATTRS, name)
     }
-    /// The notation the input was written in.
-    #[getter]
-    fn notation(&self) -> String {
-        self.file.notation.clone()
+    fn __dir__(&self) -> Vec<&'static str> {
+        dir(QUARTIC_ATTRS, &OWN[..8])
     }
     /// Everything, as `delta-stability quartic FILE --json` prints it
     /// (`file` is the path, or "<dict>").
@@ -506,22 +474,22 @@ impl Quartic {
         to_py(py, &self.json)
     }
     fn __repr__(&self) -> String {
-        let sp = self
-            .analysis
-            .modes
-            .short_period()
-            .map(|m| format!(", short_period={:?}{:+?}j", m.re, m.im))
-            .unwrap_or_default();
-        format!(
-            "Quartic(stable={}, verdict={}{sp})",
-            if self.analysis.routh.stable {
-                "True"
-            } else {
-                "False"
-            },
-            self.analysis.verdict.as_str()
-        )
+        repr("Quartic", &self.analysis)
     }
+}
+
+/// `Quartic(stable=True, verdict=meets, short_period=…)`.
+fn repr(class: &str, a: &stability_core::analysis::Analysis) -> String {
+    let sp = a
+        .modes
+        .short_period()
+        .map(|m| format!(", short_period={:?}{:+?}j", m.re, m.im))
+        .unwrap_or_default();
+    let stable = if a.routh.stable { "True" } else { "False" };
+    format!(
+        "{class}(stable={stable}, verdict={}{sp})",
+        a.verdict.as_str()
+    )
 }
 
 /// The stability quartic of a derivative set (eqs 4–6), its roots, modes
@@ -546,8 +514,8 @@ pub fn quartic(
         let file = derivative_file(source, notation, kwargs)?;
         let (analysis, json) = py
             .detach(|| -> Result<_, _> {
-                let (a, engineering) = cmd::quartic::evaluated(&file, None, AirplaneClass::IV)?;
-                let json = serde_json::to_value(cmd::quartic::to_json(&file, &a, &engineering));
+                let (a, engineering) = file.evaluated(None, AirplaneClass::IV)?;
+                let json = serde_json::to_value(QuarticJson::new(&file, &a, &engineering));
                 Ok((a, json))
             })
             .map_err(|e| input_error(&e))?;
@@ -564,9 +532,9 @@ pub fn quartic(
 ///
 /// - `derivatives`: the derivative set of §5–7 (eqs 9–31 and the damping
 ///   theory's);
-/// - `coefficients`, `routh`, `roots`, `modes`, `short_period`, `phugoid`,
-///   `verdict`, `criteria` (with the §9 margins, eq 42), `classical`: as
-///   for `Quartic`;
+/// - `coefficients`, `routh`, `stable`, `roots`, `modes`, `short_period`,
+///   `phugoid`, `verdict`, `criteria` (with the §9 margins, eq 42),
+///   `classical`: as for `Quartic`;
 /// - `aerodynamics`: the coefficients of §6 (∂C_L/∂α, C_D0, K, H₀ and
 ///   their Mach derivatives); `damping`: the theory, its equations and
 ///   z_θ̇, m_θ̇ (§7), with the frequency iteration of a frequency-dependent
@@ -575,10 +543,11 @@ pub fn quartic(
 ///   `flight` (ρ, a, V = M·a, μ₁ = m/(½ρSc̄), i_B, C_L·M² of eq 24, τ) and
 ///   `tau_s`, and the modes in seconds too;
 /// - the engineer's outputs: `mode_shapes` (each mode's eigenvector of the
-///   linear model of eqs 2–3), `damp` (the modes in seconds, as MATLAB's
-///   `damp`) and `short_period_frequency` (MIL-F-8785C's ω_sp against n/α)
-///   when τ is known;
-/// - `warnings`: validity limits approached; `to_dict()`: the `--json`.
+///   linear model of eqs 2–3, θ = 1), `damp` (the modes in seconds, as
+///   MATLAB's `damp`) and `short_period_frequency` (MIL-F-8785C's ω_sp
+///   against n/α, the CAP and the levels) when τ is known;
+/// - `warnings`: validity limits approached; `to_dict()`: the `--json`,
+///   whose keys the attributes read.
 #[pyclass(frozen, module = "delta_stability")]
 pub struct Analysis {
     result: CaseResult,
@@ -603,10 +572,6 @@ impl Analysis {
     fn routh<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         view_to_py(py, &self.result.analysis.routh)
     }
-    #[getter]
-    fn stable(&self) -> bool {
-        self.result.analysis.routh.stable
-    }
     /// The four roots (1/τ), complex.
     #[getter]
     fn roots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<Complex64>> {
@@ -626,86 +591,25 @@ impl Analysis {
     fn phugoid<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, Mode>>> {
         named_mode(py, &self.result.analysis, self.tau, false)
     }
-    /// τ = m/(½ρSV) in seconds, at a physical flight condition; else None.
-    #[getter]
-    fn tau_s(&self) -> Option<f64> {
-        self.tau
-    }
-    /// The physical flight condition at the point's Mach number (the
-    /// `flight` object of the JSON), or None.
-    #[getter]
-    fn flight<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "flight")
-    }
-    /// Each mode's eigenvector (u/V, α, q, θ) of the linear model ẋ = Ax
-    /// of eqs (2)–(3), scaled so that θ = 1: each state's magnitude and
-    /// phase relative to θ (`analyze --json`'s `mode_shapes`).
-    #[getter]
-    fn mode_shapes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "mode_shapes")
-    }
-    /// The modes in seconds, as MATLAB's `damp` tabulates them: each
-    /// mode's root (1/s), ζ, ωₙ (rad/s), period, times to half or double
-    /// amplitude (s) and cycles (eq 8), when τ is known (a physical flight
-    /// condition); else None.
-    #[getter]
-    fn damp<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "damp")
-    }
-    /// MIL-F-8785C §3.2.2.1.1: the short period's ω_sp (rad/s) against
-    /// n/α = −z_w/C_L (g/rad), the CAP ω_sp²/(n/α) and the level in each
-    /// flight-phase category (Class IV), when the short period oscillates
-    /// and τ is known; else None.
-    #[getter]
-    fn short_period_frequency<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "short_period_frequency")
-    }
-    /// The §8 one-cycle standard: `meets`, `fails` or `divergent`.
-    #[getter]
-    fn verdict(&self) -> &'static str {
-        self.result.analysis.verdict.as_str()
-    }
-    #[getter]
-    fn criteria<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "criteria")
-    }
-    #[getter]
-    fn classical<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "classical_eq7")
-    }
-    #[getter]
-    fn aerodynamics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "aerodynamics")
-    }
-    #[getter]
-    fn damping<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "damping")
-    }
-    #[getter]
-    fn case<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        key(py, &self.json, "case")
-    }
     /// The warnings, as the command line prints them.
     #[getter]
     fn warnings(&self) -> Vec<String> {
         self.result.warnings.iter().map(|w| w.to_string()).collect()
+    }
+    fn __getattr__<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
+        getattr(py, "Analysis", &self.json, DESIGN_POINT_ATTRS, name)
+    }
+    fn __dir__(&self) -> Vec<&'static str> {
+        let mut own = OWN[..8].to_vec();
+        own.push("warnings");
+        dir(DESIGN_POINT_ATTRS, &own)
     }
     /// Everything, as `delta-stability analyze CONFIG --json` prints it.
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         to_py(py, &self.json)
     }
     fn __repr__(&self) -> String {
-        let a = &self.result.analysis;
-        let sp = a
-            .modes
-            .short_period()
-            .map(|m| format!(", short_period={:?}{:+?}j", m.re, m.im))
-            .unwrap_or_default();
-        format!(
-            "Analysis(stable={}, verdict={}{sp})",
-            if a.routh.stable { "True" } else { "False" },
-            a.verdict.as_str()
-        )
+        repr("Analysis", &self.result.analysis)
     }
 }
 
@@ -747,15 +651,10 @@ pub fn analyze(
         };
         let cfg = overridden(config, mach, cg, model)?;
         let (result, tau, json) = py
-            .detach(|| -> Result<_, delta_stability::Failure> {
-                let options = cmd::quartic::Options {
-                    json: true,
-                    state_space: None,
-                    class: AirplaneClass::IV,
-                };
-                let r = cmd::analyze::results(&cfg, &options)?;
-                let json = serde_json::to_value(cmd::analyze::to_json(&cfg, &r));
-                let tau = r.flight.map(|(_, p)| p.tau);
+            .detach(|| -> Result<_, stability_io::Failure> {
+                let r = results(&cfg, AirplaneClass::IV)?;
+                let json = serde_json::to_value(AnalyzeJson::new(&cfg, &r));
+                let tau = r.tau();
                 Ok((r.result, tau, json))
             })
             .map_err(failure)?;

@@ -4,12 +4,11 @@
 use crate::errors::{argument, input_error};
 use crate::guard;
 use crate::inputs::derivative_file;
-use delta_stability::args::ResponseInput;
-use delta_stability::cmd::response::{Options, respond};
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use stability_core::response::MAX_STEPS;
+use stability_io::response::{Disturbance, Spec, respond};
 
 /// The longitudinal response (§11) of a derivative set to an elevon step
 /// (`input="step"`, the moment m₀ from rest) or to an initial disturbance
@@ -43,16 +42,12 @@ pub fn response<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let file = derivative_file(source, notation, kwargs)?;
-        let input = match input {
-            "step" => ResponseInput::Step,
-            "initial" => ResponseInput::Initial,
-            other => {
-                return Err(argument(
-                    "input",
-                    format!("`{other}` is neither `step` nor `initial`"),
-                ));
-            }
-        };
+        let input = Disturbance::parse(input).ok_or_else(|| {
+            argument(
+                "input",
+                format!("`{input}` is neither `step` nor `initial`"),
+            )
+        })?;
         if !(until > 0.0 && until.is_finite()) {
             return Err(argument(
                 "until",
@@ -70,8 +65,7 @@ pub fn response<'py>(
                 return Err(argument(name, format!("must be a finite number, not {v}")));
             }
         }
-        let o = Options {
-            file: file.path.clone(),
+        let spec = Spec {
             input,
             until,
             steps,
@@ -79,18 +73,16 @@ pub fn response<'py>(
             w0,
             neglect_zq_zwdot,
             neglect_u,
-            csv: None,
-            svg: None,
         };
         let r = py
-            .detach(|| respond(&o, &file))
+            .detach(|| respond(&file, &spec))
             .map_err(|e| input_error(&e))?;
         let out = PyDict::new(py);
         let column = |f: fn(&stability_core::response::Sample) -> f64| -> Vec<f64> {
             r.samples.iter().map(f).collect()
         };
         out.set_item("t_hat", column(|s| s.t).into_pyarray(py))?;
-        if let Some(tau) = file.dimensional.map(|d| d.tau()) {
+        if let Some(tau) = file.tau() {
             let t: Vec<f64> = r.samples.iter().map(|s| s.t * tau).collect();
             out.set_item("t_s", t.into_pyarray(py))?;
         }

@@ -33,7 +33,8 @@ pub fn sensitivity<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let file = derivative_file(source, notation, kwargs)?;
-        let a = delta_stability::cmd::quartic::analysis_of(&file)
+        let a = file
+            .analysis()
             .map_err(|e| crate::errors::input_error(&e))?;
         let name = match mode {
             "short_period" => ModeName::ShortPeriod,

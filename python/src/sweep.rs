@@ -1,7 +1,9 @@
 //! `sweep()`: the library's sweep ([`stability_core::sweep::Sweep`], the
 //! grid `delta-stability sweep` evaluates) with the GIL released, into
 //! columns — one numpy array each, named and ordered as the command
-//! line's CSV ([`cli::columns`]), with no text in between.
+//! line's CSV ([`stability_core::sweep::columns`]), with no text in
+//! between. The axes are the library's ([`stability_io::sweep::axes`]:
+//! ranges, lists or one value, each within its range).
 //!
 //! The grid, its order (mach, sweep_deg, cg, mu1, i_b, the last varying
 //! fastest), the reuse of each point's aerodynamics across μ₁ and i_B, the
@@ -10,22 +12,20 @@
 //! frequency table (`Harmonic::Interpolated`) are the library's; so are a
 //! physical flight condition's μ₁, i_B and C_L·M² per planform
 //! ([`Sweep::with_flight`]). The modes in seconds at such a condition are
-//! the command line's columns ([`sweep_physical::seconds`]).
+//! the library's columns ([`Points::seconds`]).
 
 use crate::errors::{argument, input_error};
 use crate::guard;
 use crate::overrides::{Model, overridden};
-use delta_stability::cmd::sweep::{self as cli, parse_range};
-use delta_stability::cmd::sweep_physical;
-use delta_stability::config::Config;
-use delta_stability::config::limits::{self, Limit};
-use delta_stability::diag;
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use stability_core::Derivatives;
 use stability_core::criteria::Verdict;
-use stability_core::sweep::{Axes, Points, Sweep, SweepError};
+use stability_core::sweep::{Points, SECONDS_COLUMNS, Sweep, SweepError, columns};
+use stability_io::config::Config;
+use stability_io::diag;
+use stability_io::sweep::{Given, axes, parse_values};
 use std::collections::HashMap;
 
 /// The most points one call evaluates: every column is held in memory
@@ -35,21 +35,11 @@ pub const MAX_POINTS: usize = 50_000_000;
 /// The verdicts the `verdict` codes index (the code 3: no result).
 const VERDICTS: [Verdict; 3] = [Verdict::Meets, Verdict::Fails, Verdict::Divergent];
 
-/// `message` of the command line's range parser without its flag, which
-/// the argument's name replaces.
-fn without_flag(name: &str, message: &str) -> String {
-    message
-        .strip_prefix(&format!("--{name}: "))
-        .unwrap_or(message)
-        .to_string()
-}
-
 /// An axis as given: a number, a sequence or array of numbers, or the
 /// command line's "A:B:STEP".
 fn axis(name: &str, v: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
     if let Ok(s) = v.cast::<PyString>() {
-        return parse_range(name, &s.extract::<String>()?)
-            .map_err(|e| argument(name, without_flag(name, &e)));
+        return parse_values(&s.extract::<String>()?).map_err(|e| argument(name, e));
     }
     if let Ok(x) = v.extract::<f64>() {
         return Ok(vec![x]);
@@ -71,25 +61,6 @@ fn axis(name: &str, v: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
     Ok(values)
 }
 
-/// The axis `v` when given (each value within `limit`), else `default`.
-fn given(
-    name: &str,
-    v: Option<&Bound<'_, PyAny>>,
-    limit: Option<&Limit>,
-    default: &[f64],
-) -> PyResult<Vec<f64>> {
-    let Some(v) = v else {
-        return Ok(default.to_vec());
-    };
-    let values = axis(name, v)?;
-    if let Some(limit) = limit {
-        for &x in &values {
-            limit.check(x).map_err(|e| argument(name, e))?;
-        }
-    }
-    Ok(values)
-}
-
 /// The axes as given to `sweep()`.
 pub struct AxisArgs<'a, 'py> {
     pub mach: Option<&'a Bound<'py, PyAny>>,
@@ -99,26 +70,8 @@ pub struct AxisArgs<'a, 'py> {
     pub i_b: Option<&'a Bound<'py, PyAny>>,
 }
 
-/// The axes the command line sweeps where no flag is given (the config's
-/// values, as `sweep` writes them), from its own grid builder.
-fn defaults(cfg: &Config) -> PyResult<Axes> {
-    let options = cli::Options {
-        config: cfg.path.clone(),
-        mach: cfg.case.mach.to_string(),
-        sweep: None,
-        cg: None,
-        mu1: None,
-        ib: None,
-        output: String::new(),
-        derivatives: false,
-        damping: None,
-        aero: None,
-        omega_bar: None,
-    };
-    let grid = cli::grid(&options, cfg.case.clone(), cfg.physical.as_ref())
-        .map_err(|e| input_error(&diag::InputError::file(&cfg.path, e)))?;
-    Ok(grid.sweep.axes().clone())
-}
+/// The arguments' names, in the order of the library's axes.
+const NAMES: [&str; 5] = ["mach", "sweep", "cg", "mu1", "i_b"];
 
 /// Why the library cannot sweep the grid, as an InputError.
 fn sweep_error(cfg: &Config, e: SweepError) -> PyErr {
@@ -133,23 +86,19 @@ fn sweep_error(cfg: &Config, e: SweepError) -> PyErr {
 
 /// The library's sweep of the axes about the config's design point, at
 /// its physical flight condition when it has one (which fixes μ₁ and
-/// i_B: those axes may not be given, as on the command line).
+/// i_B: those axes may not be given, as on the command line); each axis
+/// not given is the config's value.
 pub fn sweep_of(a: &AxisArgs<'_, '_>, cfg: &Config) -> PyResult<Sweep> {
-    if cfg.physical.is_some() {
-        let given = [("mu1", a.mu1.is_some()), ("i_b", a.i_b.is_some())];
-        sweep_physical::refuse_ranges(given).map_err(|e| {
-            let name = if a.mu1.is_some() { "mu1" } else { "i_b" };
-            argument(name, without_flag(name, &e))
-        })?;
-    }
-    let d = defaults(cfg)?;
-    let axes = Axes {
-        mach: given("mach", a.mach, Some(&limits::MACH), &[cfg.case.mach])?,
-        sweep_deg: given("sweep", a.sweep, None, &d.sweep_deg)?,
-        cg: given("cg", a.cg, Some(&limits::CG), &d.cg)?,
-        mu1: given("mu1", a.mu1, Some(&limits::MU1), &d.mu1)?,
-        i_b: given("i_b", a.i_b, Some(&limits::I_B), &d.i_b)?,
+    let read = |k: usize, v: Option<&Bound<'_, PyAny>>| v.map(|v| axis(NAMES[k], v)).transpose();
+    let given = Given {
+        mach: read(0, a.mach)?,
+        sweep_deg: read(1, a.sweep)?,
+        cg: read(2, a.cg)?,
+        mu1: read(3, a.mu1)?,
+        i_b: read(4, a.i_b)?,
     };
+    let axes = axes(given, &cfg.case, cfg.physical.is_some())
+        .map_err(|e| argument(NAMES[e.axis], e.message))?;
     let n = [&axes.mach, &axes.sweep_deg, &axes.cg, &axes.mu1, &axes.i_b]
         .iter()
         .try_fold(1usize, |n, v| n.checked_mul(v.len()));
@@ -182,7 +131,7 @@ pub struct Columns {
     /// An index into `messages`, or −1.
     error: Vec<i32>,
     messages: Vec<String>,
-    /// At a physical flight condition, [`sweep_physical::COLUMNS`].
+    /// At a physical flight condition, [`SECONDS_COLUMNS`].
     seconds: Option<Vec<Vec<f64>>>,
 }
 
@@ -226,12 +175,12 @@ fn verdict_code(v: Option<Verdict>) -> u8 {
 /// (NaN where it leaves the cell empty).
 fn seconds(sweep: &Sweep, points: &Points, error: &[i32]) -> Vec<Vec<f64>> {
     let n = points.len();
-    let mut out: Vec<Vec<f64>> = (0..sweep_physical::COLUMNS.len())
+    let mut out: Vec<Vec<f64>> = (0..SECONDS_COLUMNS.len())
         .map(|_| Vec::with_capacity(n))
         .collect();
     for (k, e) in error.iter().enumerate() {
         let point = (*e < 0).then(|| sweep.flight_point(k)).flatten();
-        let row = sweep_physical::seconds(point, points, k);
+        let row = points.seconds(k, point);
         for (c, v) in out.iter_mut().zip(row) {
             c.push(v.unwrap_or(f64::NAN));
         }
@@ -290,7 +239,7 @@ fn to_dict<'py>(py: Python<'py>, c: Columns, shape: Vec<usize>) -> PyResult<Boun
         messages,
         seconds,
     } = c;
-    let names = cli::columns(points.derivatives.is_some(), seconds.is_some());
+    let names = columns(points.derivatives.is_some(), seconds.is_some());
     let mut arrays: HashMap<&str, Bound<'py, PyAny>> = HashMap::new();
     let mut put = |name: &'static str, a: Bound<'py, PyAny>| {
         arrays.entry(name).or_insert(a);
@@ -305,7 +254,7 @@ fn to_dict<'py>(py: Python<'py>, c: Columns, shape: Vec<usize>) -> PyResult<Boun
         }
     }
     let seconds = seconds.unwrap_or_default();
-    for (name, v) in sweep_physical::COLUMNS.into_iter().zip(seconds) {
+    for (name, v) in SECONDS_COLUMNS.into_iter().zip(seconds) {
         put(name, v.into_pyarray(py).into_any());
     }
     let inputs = Derivatives::QUARTIC_INPUTS;

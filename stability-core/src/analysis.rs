@@ -164,6 +164,21 @@ impl Analysis {
         Analysis::with(d, false)
     }
 
+    /// Whether every number the analysis would print is finite (absent
+    /// ones, such as an aperiodic mode's period, are `None`, not infinite).
+    pub fn is_finite(&self) -> bool {
+        self.quartic.to_array().iter().all(|v| v.is_finite())
+            && self
+                .roots
+                .iter()
+                .all(|z| z.re.is_finite() && z.im.is_finite())
+            && self.routh.discriminant.is_finite()
+            && self
+                .modes
+                .iter()
+                .all(|m| m.re.is_finite() && m.im.is_finite())
+    }
+
     /// The MIL-F-8785C levels of the modes, with τ (s) when known.
     pub fn flying_qualities(&self, tau: Option<f64>) -> FlyingQualities {
         FlyingQualities::of(&self.modes, tau)

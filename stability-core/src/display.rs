@@ -1,6 +1,7 @@
-//! How values are written in messages: numbers short enough to read
-//! (`1e308`, not 309 digits), quoted text cut to an excerpt. Every error
-//! message of the crate writes its numbers and quotes through these.
+//! How values are written in messages and tables: numbers short enough to
+//! read (`1e308`, not 309 digits), quoted text cut to an excerpt, numbers
+//! to a number of significant digits ([`sig`]). Every error message of the
+//! crate writes its numbers and quotes through these.
 
 use std::fmt;
 
@@ -59,6 +60,38 @@ pub fn excerpt(s: &str) -> String {
     Excerpt(s).to_string()
 }
 
+/// `v` rounded to `digits` significant decimal digits (through its decimal
+/// representation, so that 0.5700000000000001 to 12 digits is the double
+/// nearest 0.57); −0 becomes 0, and a value that is not finite is itself.
+pub fn round_to(v: f64, digits: usize) -> f64 {
+    if !v.is_finite() {
+        return v;
+    }
+    let r: f64 = format!("{v:.prec$e}", prec = digits.saturating_sub(1))
+        .parse()
+        .unwrap_or(v);
+    r + 0.0
+}
+
+/// `v` with `digits` significant digits, for tables: fixed notation for
+/// magnitudes from 1e-3 to 1e7, scientific (`1.234560e-5`) outside; `0`
+/// for zero, and `NaN`, `inf`, `-inf` as such.
+pub fn sig(v: f64, digits: usize) -> String {
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    if v == 0.0 {
+        return "0".to_string();
+    }
+    let mag = v.abs().log10().floor() as i32;
+    if (-3..7).contains(&mag) {
+        let decimals = (digits as i32 - 1 - mag).max(0) as usize;
+        format!("{v:.decimals$}")
+    } else {
+        format!("{v:.prec$e}", prec = digits.saturating_sub(1))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -89,6 +122,15 @@ mod tests {
             assert!(s.len() <= 24, "{s}");
             assert_eq!(s.parse::<f64>().unwrap(), x, "round trip of {s}");
         }
+    }
+
+    #[test]
+    fn significant_digits() {
+        assert_eq!(sig(1.012, 7), "1.012000");
+        assert_eq!(sig(358.0071375, 7), "358.0071");
+        assert_eq!(sig(-0.000123456789, 4), "-1.235e-4");
+        assert_eq!(sig(0.0, 4), "0");
+        assert_eq!(sig(12345678.0, 3), "1.23e7");
     }
 
     #[test]

@@ -25,7 +25,8 @@
 //! | handbook data: dimensional derivatives, body or stability axes (issue 12) | [`dimensional`] |
 //!
 //! The data of the note's figures that set one theory beside another
-//! (Fig 4, Figs 14–15): [`figures`].
+//! (Fig 4, Figs 14–15): [`figures`]; grids of values and their one
+//! tolerance: [`grid`].
 //!
 //! Around them: [`warnings`] (validity limits approached), [`json`] (the
 //! results as the command line prints them), [`display`] (numbers and
@@ -49,6 +50,7 @@ pub mod faired;
 pub mod figures;
 pub mod flight;
 pub mod geometry;
+pub mod grid;
 pub mod json;
 pub mod lifting_surface;
 pub mod linear;

@@ -36,6 +36,22 @@ pub enum ModeName {
 }
 
 impl ModeName {
+    /// The name in a table: "short period", "phugoid", or for a root of a
+    /// pair that split "aperiodic (sp)", "aperiodic (ph)", "aperiodic (?)".
+    pub fn label(self, origin: Option<Origin>) -> String {
+        match (self, origin) {
+            (ModeName::Aperiodic, Some(o)) => format!(
+                "aperiodic ({})",
+                match o {
+                    Origin::ShortPeriod => "sp",
+                    Origin::Phugoid => "ph",
+                    Origin::Unknown => "?",
+                }
+            ),
+            (name, _) => name.as_str().replace('_', " "),
+        }
+    }
+
     pub fn as_str(self) -> &'static str {
         match self {
             ModeName::ShortPeriod => "short_period",
@@ -87,6 +103,11 @@ pub struct Mode {
 }
 
 impl Mode {
+    /// The mode's name in a table ([`ModeName::label`]).
+    pub fn label(&self) -> String {
+        self.name.label(self.origin)
+    }
+
     /// The mode of root `lam` (its conjugate is implied), named `name`.
     pub fn of_root(lam: Complex64, name: ModeName, origin: Option<Origin>, mu1: f64) -> Mode {
         let r = lam.re;

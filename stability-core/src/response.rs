@@ -455,6 +455,89 @@ impl StateSpace {
     }
 }
 
+/// A response asked for (§11): what disturbs the aircraft, the span
+/// (τ units), the number of intervals and what is neglected.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Request {
+    pub input: Input,
+    pub until: f64,
+    pub steps: usize,
+    pub simplifications: Simplifications,
+}
+
+/// A response over the whole span with the report's own closed form
+/// beside it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Computed {
+    /// The exact response, `steps + 1` samples from 0 to `until`.
+    pub samples: Vec<Sample>,
+    /// For a step of m₀: eq (45)'s two-degree-of-freedom ŵ at each sample,
+    /// from eq (44) as printed with the same simplifications applied.
+    pub eq45: Option<Vec<f64>>,
+}
+
+/// Why a whole response cannot be had.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ComputedError {
+    #[error("{0}")]
+    Response(#[from] ResponseError),
+    /// The motion overflowed f64 before `until`.
+    #[error("the response stops at t̂ = {} of the {} asked for: {stop}", Num(*reached), Num(*until))]
+    Stopped {
+        reached: f64,
+        until: f64,
+        stop: Stop,
+    },
+    /// Eq (45)'s closed form overflowed f64 before `until`.
+    #[error(
+        "eq (45)'s two-degree-of-freedom response overflows f64 at t̂ = {}, before {}",
+        Num(*t), Num(*until)
+    )]
+    ClosedFormOverflow { t: f64, until: f64 },
+}
+
+/// The response of `d` to `request` over its whole span, with eq (45)'s
+/// closed form for a moment step (the same m₀, the same neglected terms),
+/// or why the span cannot be reached.
+pub fn computed(d: &Derivatives, request: &Request) -> Result<Computed, ComputedError> {
+    let simp = request.simplifications;
+    let ss = StateSpace::new(d, simp)?;
+    let r = ss.simulate(request.input, request.until, request.steps)?;
+    if let Some(stop) = r.stopped {
+        let reached = r.samples.last().map_or(0.0, |s| s.t);
+        let until = request.until;
+        return Err(ComputedError::Stopped {
+            reached,
+            until,
+            stop,
+        });
+    }
+    let Input::Step { m0, .. } = request.input else {
+        return Ok(Computed {
+            samples: r.samples,
+            eq45: None,
+        });
+    };
+    let mut d = *d;
+    if simp.neglect_zq_zwdot {
+        d.z_q = 0.0;
+        d.z_wdot = 0.0;
+    }
+    let two = TwoDof::of(&d);
+    let eq45: Vec<f64> = r.samples.iter().map(|s| two.w(s.t, 1.0) * m0).collect();
+    if let Some(k) = eq45.iter().position(|v| !v.is_finite()) {
+        let t = r.samples[k].t;
+        return Err(ComputedError::ClosedFormOverflow {
+            t,
+            until: request.until,
+        });
+    }
+    Ok(Computed {
+        samples: r.samples,
+        eq45: Some(eq45),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -27,31 +27,7 @@ pub fn report_wing(deg: f64, mach: f64) -> Case {
     }
 }
 
-/// `a, a + step, …` up to `b` (inclusive, within rounding), each rounded to
-/// [`GRID_DIGITS`] significant digits, so that the grid's values are the
-/// decimals they stand for (0.5 + 7 × 0.01 is 0.57, not
-/// 0.5700000000000001, in every file that prints them).
-pub fn grid(a: f64, b: f64, step: f64) -> Vec<f64> {
-    let valid = step > 0.0 && step.is_finite() && a.is_finite() && b.is_finite() && b >= a;
-    if !valid {
-        return vec![a];
-    }
-    let n = ((b - a) / step + 1e-9).floor() as usize;
-    (0..=n)
-        .map(|i| round_to_digits(a + step * i as f64, GRID_DIGITS))
-        .collect()
-}
-
-/// The significant digits of [`grid`]'s values.
-pub const GRID_DIGITS: usize = 12;
-
-/// `x` rounded to `digits` significant decimal digits (the nearest f64 to
-/// that decimal).
-fn round_to_digits(x: f64, digits: usize) -> f64 {
-    format!("{x:.*e}", digits.saturating_sub(1))
-        .parse()
-        .unwrap_or(x)
-}
+pub use crate::grid::{GRID_DIGITS, grid};
 
 /// The intervals [from, to] of consecutive grid points where `flag` holds.
 pub fn intervals(x: &[f64], flag: &[bool]) -> Vec<[f64; 2]> {
@@ -135,14 +111,7 @@ mod tests {
     use crate::criteria::Verdict;
 
     #[test]
-    fn grids_and_intervals() {
-        let g = grid(0.5, 0.8, 0.1);
-        assert_eq!(g.len(), 4);
-        assert!((g[3] - 0.8).abs() < 1e-12);
-        // the decimals they stand for, to the bit
-        assert_eq!(0.5 + 0.01 * 7.0, 0.5700000000000001);
-        assert_eq!(grid(0.5, 0.6, 0.01)[7], 0.57);
-        assert_eq!(grid(0.5, 2.0, 0.01)[70], 1.2);
+    fn intervals_of_a_flag() {
         let x = [1.0, 2.0, 3.0, 4.0, 5.0];
         assert_eq!(
             intervals(&x, &[false, true, true, false, true]),

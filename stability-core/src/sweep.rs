@@ -143,7 +143,14 @@ impl Sweep {
             }
         }
         let mut planforms = Vec::with_capacity(axes.sweep_deg.len());
+        let base_deg = crate::grid::round(base.planform.sweep_le.to_degrees());
         for &s in &axes.sweep_deg {
+            // the base's own sweep, exactly as it was given (not through
+            // degrees and back: at a sonic leading edge the last bit counts)
+            if crate::grid::round(s) == base_deg {
+                planforms.push(base.planform);
+                continue;
+            }
             let p = Planform::new(s.to_radians(), base.planform.taper, Size::RootChord(1.0))
                 .map_err(|error| SweepError::Planform {
                     sweep_deg: s,
@@ -571,6 +578,95 @@ impl Points {
         if let (Some(a), Some(b)) = (&mut self.derivatives, &mut other.derivatives) {
             a.append(b);
         }
+    }
+}
+
+/// The columns of a sweep's rows, in order: what `delta-stability sweep`
+/// writes (CSV header, JSON keys) and the Python package's `sweep` returns.
+/// The grid's values ([`Axes::NAMES`]), the results ([`RESULT_COLUMNS`]),
+/// with a physical flight condition the modes in seconds
+/// ([`SECONDS_COLUMNS`]), with the derivatives asked for the twelve
+/// derivatives and `c_l` ([`derivative_columns`]), and last `error`.
+pub fn columns(derivatives: bool, physical: bool) -> Vec<&'static str> {
+    let mut c: Vec<&str> = Axes::NAMES.to_vec();
+    c.extend(RESULT_COLUMNS);
+    if physical {
+        c.extend(SECONDS_COLUMNS);
+    }
+    if derivatives {
+        c.extend(derivative_columns(physical));
+    }
+    c.push(ERROR_COLUMN);
+    c
+}
+
+/// A point's results, after the grid's values: Routh's test, the §8
+/// verdict, the short period's root, cycles to half amplitude, damping
+/// ratio and ω̄, the phugoid's root, m_θ̇ and Δm_θ̇ (eq 41).
+pub const RESULT_COLUMNS: [&str; 11] = [
+    "stable",
+    "verdict",
+    "sp_re",
+    "sp_im",
+    "sp_cycles_to_half",
+    "sp_damping_ratio",
+    "sp_omega_bar",
+    "ph_re",
+    "ph_im",
+    "m_thetadot",
+    "delta_m_thetadot",
+];
+
+/// The last column: why the point has no result (empty where it has one).
+pub const ERROR_COLUMN: &str = "error";
+
+/// The columns a physical flight condition adds after the results
+/// ([`Points::seconds`]).
+pub const SECONDS_COLUMNS: [&str; 9] = [
+    "v_m_s",
+    "c_l",
+    "tau_s",
+    "sp_re_s",
+    "sp_im_s",
+    "sp_natural_frequency_rad_s",
+    "sp_period_s",
+    "ph_re_s",
+    "ph_im_s",
+];
+
+/// The quartic inputs a row carries when the derivatives are asked for:
+/// the twelve derivatives and `c_l` (μ₁ and i_B are grid columns already;
+/// `c_l` is a seconds column too at a physical flight condition), in the
+/// order of [`Derivatives::QUARTIC_INPUTS`].
+pub fn derivative_columns(physical: bool) -> &'static [&'static str] {
+    let n = if physical { 12 } else { 13 };
+    &Derivatives::QUARTIC_INPUTS[..n]
+}
+
+/// A point's [`SECONDS_COLUMNS`] (`None` where undefined).
+pub type Seconds = [Option<f64>; SECONDS_COLUMNS.len()];
+
+impl Points {
+    /// Point `k`'s [`SECONDS_COLUMNS`] at its flight point `p` (all `None`
+    /// without one): V, C_L, τ, and the modes in 1/s and s.
+    pub fn seconds(&self, k: usize, p: Option<FlightPoint>) -> Seconds {
+        let Some(p) = p else {
+            return [None; SECONDS_COLUMNS.len()];
+        };
+        let t = p.tau;
+        let some = |v: f64| v.is_finite().then_some(v);
+        let (sp_re, sp_im) = (self.sp_re[k], self.sp_im[k]);
+        [
+            Some(p.speed),
+            Some(p.c_l),
+            Some(t),
+            some(sp_re / t),
+            some(sp_im / t),
+            some(sp_re.hypot(sp_im) / t),
+            some(2.0 * std::f64::consts::PI / sp_im * t),
+            some(self.ph_re[k] / t),
+            some(self.ph_im[k] / t),
+        ]
     }
 }
 

@@ -1,153 +1,75 @@
 //! `delta-stability analyze CONFIG [--json] [--state-space OUT.json]`: a
 //! planform at a flight condition → derivatives (§5–7) → quartic (§4) →
 //! modes → criteria (§8–9); with a physical flight condition
-//! ([`crate::config::physical`]), μ₁, i_B, C_L and τ from it and the modes
+//! ([`stability_io::config::physical`]), μ₁, i_B, C_L and τ from it and the modes
 //! in seconds too.
 
 use crate::Failure;
-use crate::config::{self, limits};
-use crate::diag::{InputError, num};
-use crate::fmt::sig;
 use crate::output::print;
 use crate::page::analysis_page;
-use serde::Serialize;
 use stability_core::Derivatives;
-use stability_core::aero::AeroModelName;
-use stability_core::case::{CaseResult, DampingModel, FrequencyIteration, evaluate};
+use stability_core::case::{CaseResult, DampingModel, FrequencyIteration};
 use stability_core::criteria::Margins;
 use stability_core::damping::Theory;
-use stability_core::engineering::Engineering;
-use stability_core::flight::{FlightJson, FlightPoint, PhysicalFlight};
-use stability_core::json::CaseView;
+use stability_core::display::sig;
+use stability_core::flight::{FlightPoint, PhysicalFlight};
+use stability_io::config::{self, Overrides, overridden};
+use stability_io::design_point::{Results, results};
+use stability_io::views::AnalyzeJson;
 use std::fmt::Write;
 
-use super::quartic::Options;
+use super::quartic::EngineeringArgs;
+use crate::args::{AeroArg, DampingArg};
 
-/// Overrides of the config from the command line.
-#[derive(Debug, Default, Clone)]
-pub struct Overrides {
-    pub damping: Option<DampingModel>,
-    pub mach: Option<f64>,
-    pub cg: Option<f64>,
-    pub aero: Option<AeroModelName>,
-    /// `--omega-bar W`: the frequency-dependent theories at ω̄ = W (not
-    /// iterated).
+/// The command's options.
+#[derive(Debug, Clone, clap::Args)]
+pub struct Args {
+    /// The design-point config (TOML).
+    pub config: String,
+    /// Override the damping model.
+    #[arg(long, value_enum)]
+    pub damping: Option<DampingArg>,
+    /// Override the aerodynamic model (lift slope and aerodynamic centre; a table in the config still wins).
+    #[arg(long, value_enum)]
+    pub aero: Option<AeroArg>,
+    /// Evaluate a frequency-dependent damping theory at ω̄ = ωc̄/V = W, not iterated: lifting-surface (else quasi-steady), lifting-surface-frequency, transonic-frequency.
+    #[arg(long = "omega-bar", value_name = "W", value_parser = crate::args::positive)]
     pub omega_bar: Option<f64>,
+    /// Override the Mach number.
+    #[arg(long, value_parser = crate::args::finite)]
+    pub mach: Option<f64>,
+    /// Override the c.g. position h (fraction of the M.A.C.).
+    #[arg(long, value_parser = crate::args::finite)]
+    pub cg: Option<f64>,
+    /// Print one JSON object (keys derivatives, coefficients, modes, criteria, mode_shapes, …; with a physical flight condition also flight, damp and short_period_frequency).
+    #[arg(long)]
+    pub json: bool,
+    #[command(flatten)]
+    pub engineering: EngineeringArgs,
 }
 
-/// The config with the command line's overrides applied, each within its
-/// range (`analyze`'s and `sweep`'s).
-pub fn overridden(path: &str, o: &Overrides) -> Result<config::Config, Failure> {
-    let mut cfg = config::read(path)?;
-    apply(&mut cfg, o)?;
-    Ok(cfg)
-}
-
-/// Applies the overrides to a config read, each within its range (the
-/// Python package's `analyze(…, mach=…)` too).
-pub fn apply(cfg: &mut config::Config, o: &Overrides) -> Result<(), Failure> {
-    let path = cfg.path.clone();
-    let bad =
-        |flag: &str, m: String| Failure::Input(InputError::file(&path, format!("{flag}: {m}")));
-    if let Some(d) = o.damping {
-        cfg.case.damping = d;
-        cfg.overridden_by("[model] damping", format!("--damping {}", d.name()));
-    }
-    if let Some(m) = o.mach {
-        cfg.case.mach = limits::MACH.check(m).map_err(|e| bad("--mach", e))?;
-        cfg.overridden_by("[flight] mach", format!("--mach {}", num(m)));
-    }
-    if let Some(h) = o.cg {
-        cfg.case.h = limits::CG.check(h).map_err(|e| bad("--cg", e))?;
-        cfg.overridden_by("[flight] cg", format!("--cg {}", num(h)));
-    }
-    if let Some(a) = o.aero {
-        cfg.case.aero = cfg.case.aero.clone().with_name(a);
-        cfg.overridden_by("[model] aero", format!("--aero {}", a.name()));
-    }
-    if let Some(w) = o.omega_bar {
-        let w = limits::OMEGA_BAR
-            .check(w)
-            .map_err(|e| bad("--omega-bar", e))?;
-        if !cfg.case.damping.takes_omega_bar() {
-            return Err(bad("--omega-bar", no_omega_bar(cfg.case.damping)));
+impl Args {
+    /// The values that replace the config's.
+    pub fn overrides(&self) -> Overrides {
+        Overrides {
+            damping: self.damping.map(|d| d.0),
+            aero: self.aero.map(|a| a.0),
+            omega_bar: self.omega_bar,
+            mach: self.mach,
+            cg: self.cg,
         }
-        cfg.case.omega_bar = Some(w);
-        cfg.case.iterate_frequency = false;
-        cfg.overridden_by("[model] omega_bar", format!("--omega-bar {}", num(w)));
-    }
-    Ok(())
-}
-
-/// Why `--omega-bar` does not apply to `model`.
-fn no_omega_bar(model: DampingModel) -> String {
-    let takers: Vec<&str> = DampingModel::ALL
-        .into_iter()
-        .filter(|m| m.takes_omega_bar())
-        .map(DampingModel::name)
-        .collect();
-    format!(
-        "the damping model `{}` takes no frequency parameter; the models that do: {}",
-        model.name(),
-        takers.join(", ")
-    )
-}
-
-/// A design point's results: the library's, and the engineer's.
-pub struct Results {
-    pub result: CaseResult,
-    /// The physical flight condition at the point's Mach number.
-    pub flight: Option<(PhysicalFlight, FlightPoint)>,
-    pub engineering: Engineering,
-}
-
-/// The design point evaluated, with its physical flight condition and the
-/// engineer's outputs, every number finite, or the error at the field it
-/// arises from (what `analyze` prints; the Python package raises the same).
-pub fn results(cfg: &config::Config, o: &Options) -> Result<Results, Failure> {
-    let flight = match &cfg.physical {
-        Some(p) => {
-            let point = p
-                .flight
-                .at_mach(cfg.case.mach)
-                .map_err(|e| cfg.error_at("[flight] mach", e.to_string()))?;
-            Some((p.flight, point))
-        }
-        None => None,
-    };
-    let result = evaluate(&cfg.case).map_err(|e| cfg.explain(&e))?;
-    let control = crate::state_space::read_control(&cfg.path, cfg.text())?;
-    let tau = flight.map(|(_, p)| p.tau);
-    let engineering = Engineering::of_report(
-        &result.derivatives,
-        &result.analysis,
-        tau,
-        control.as_ref(),
-        o.class,
-    );
-    match engineering {
-        Ok(engineering) if crate::cmd::quartic::is_finite(&result.analysis) => Ok(Results {
-            result,
-            flight,
-            engineering,
-        }),
-        _ => Err(cfg
-            .error_at(
-                "[flight]",
-                "the analysis overflows f64: no result can be written",
-            )
-            .into()),
     }
 }
 
-pub fn run(path: &str, o: &Overrides, options: &Options) -> Result<(), Failure> {
-    let cfg = overridden(path, o)?;
-    let res = results(&cfg, options)?;
+pub fn run(args: &Args) -> Result<(), Failure> {
+    let (path, options) = (args.config.as_str(), &args.engineering);
+    let cfg = overridden(path, &args.overrides())?;
+    let res = results(&cfg, options.class.0)?;
     for w in &res.result.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
     if let Some(out) = &options.state_space {
-        let tau = res.flight.map(|(_, p)| p.tau);
+        let tau = res.tau();
         let roots = res.result.analysis.roots;
         crate::state_space::write(
             out,
@@ -160,41 +82,15 @@ pub fn run(path: &str, o: &Overrides, options: &Options) -> Result<(), Failure> 
             },
         )?;
     }
-    if options.json {
+    if args.json {
         print(&format!(
             "{}\n",
-            serde_json::to_string_pretty(&to_json(&cfg, &res)).unwrap_or_default()
+            serde_json::to_string_pretty(&AnalyzeJson::new(&cfg, &res)).unwrap_or_default()
         ))?;
     } else {
         print(&page(&cfg, &res))?;
     }
     Ok(())
-}
-
-/// The `analyze --json` object: the config's path, the physical flight
-/// condition when there is one, the design point as the library
-/// serializes it and the engineer's outputs (`damp`, `mode_shapes`,
-/// `short_period_frequency`).
-#[derive(Serialize)]
-pub struct AnalyzeJson<'a> {
-    file: &'a str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    flight: Option<FlightJson>,
-    #[serde(flatten)]
-    point: CaseView<'a>,
-    #[serde(flatten)]
-    engineering: &'a Engineering,
-}
-
-pub fn to_json<'a>(cfg: &'a config::Config, res: &'a Results) -> AnalyzeJson<'a> {
-    AnalyzeJson {
-        file: &cfg.path,
-        flight: res.flight.map(|(f, p)| f.json(&p)),
-        point: res
-            .result
-            .view_timed(&cfg.case, res.flight.map(|(_, p)| p.tau)),
-        engineering: &res.engineering,
-    }
 }
 
 pub fn page(cfg: &config::Config, res: &Results) -> String {

@@ -7,4 +7,3 @@ pub mod report;
 pub mod response;
 pub mod sensitivity;
 pub mod sweep;
-pub mod sweep_physical;

@@ -3,46 +3,55 @@
 //! (§4, eqs 7–8), Routh's test, the §8 damping standard and the
 //! MIL-F-8785C levels; with `[dimensional]`, the modes in seconds
 //! (`damp()`) and the short-period frequency requirement; the mode shapes;
-//! and the state-space model, written on request.
+//! and the state-space model, written on request. The file is read and
+//! analysed by [`stability_io::input`]; this command prints the page or
+//! the JSON.
 
 use crate::Failure;
-use crate::diag::InputError;
-use crate::input::dimensional_notation::{self, DIMENSIONAL, DimensionalFile, is_dimensional};
-use crate::input::{self, DerivativeFile, rows};
+use crate::args::ClassArg;
 use crate::output::print;
 use crate::page::analysis_page;
-use serde::Serialize;
-use stability_core::Derivatives;
-use stability_core::analysis::{Analysis, AnalysisError};
-use stability_core::cap::{AirplaneClass, n_alpha_dimensional};
-use stability_core::dimensional::DimensionalAnalysis;
+use stability_core::analysis::Analysis;
 use stability_core::engineering::Engineering;
-use stability_core::json::Timed;
-use stability_core::linear::{Control, LinearModel};
+use stability_io::input::dimensional_notation::{self, DimensionalFile, is_dimensional};
+use stability_io::input::{self, DerivativeFile};
+use stability_io::views::{DimensionalJson, QuarticJson};
 use std::path::Path;
 
-/// The command's options beside the file.
-#[derive(Debug, Clone)]
-pub struct Options {
+/// The command's options.
+#[derive(Debug, Clone, clap::Args)]
+pub struct Args {
+    /// The derivative file (TOML).
+    pub file: String,
+    /// Print one JSON object (keys coefficients, routh_discriminant, stable, roots, modes, criteria, mode_shapes; with [dimensional] also damp and short_period_frequency) instead of a table.
+    #[arg(long)]
     pub json: bool,
-    /// Where to write the state space (`OUT.json`, with `OUT.py` and `OUT.m`).
-    pub state_space: Option<String>,
-    /// The airplane class of the Category C frequency floors.
-    pub class: AirplaneClass,
+    #[command(flatten)]
+    pub engineering: EngineeringArgs,
 }
 
-pub fn run(file: &str, o: &Options) -> Result<(), Failure> {
-    let text = crate::files::read_input(Path::new(file))?;
+/// The options that write the engineer's outputs (`quartic`, `analyze`).
+#[derive(Debug, Clone, clap::Args)]
+pub struct EngineeringArgs {
+    /// Write the state space ẋ = A x + B δ, x = (u/V, α, q, θ), in seconds when the flight condition is dimensional (else in τ), to OUT.json, with a python-control script OUT.py and a MATLAB script OUT.m beside it. B needs a [control] table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; optional name); without one, A only.
+    #[arg(long, value_name = "OUT.json")]
+    pub state_space: Option<String>,
+    /// The MIL-F-8785C airplane class (§1.3) whose Category C floors the short-period frequency requirement applies.
+    #[arg(long = "class", value_enum, default_value = "IV")]
+    pub class: ClassArg,
+}
+
+pub fn run(a: &Args) -> Result<(), Failure> {
+    let (file, o) = (a.file.as_str(), &a.engineering);
+    let text = stability_io::files::read_input(Path::new(file))?;
     if is_dimensional(&text) {
-        return run_dimensional(&dimensional_notation::parse(file, &text)?, o);
+        return run_dimensional(&dimensional_notation::parse(file, &text)?, a);
     }
     let input = input::parse(file, &text)?;
-    let control = crate::state_space::read_control(file, &text)?;
-    for w in &input.warnings {
-        crate::output::warn(&format!("warning: {w}"));
-    }
-    let (analysis, engineering) = evaluated(&input, control.as_ref(), o.class)?;
-    let tau = input.dimensional.map(|d| d.tau());
+    let control = stability_io::control::read_control(file, &text)?;
+    crate::output::warn_all(&input.warnings);
+    let (analysis, engineering) = input.evaluated(control.as_ref(), o.class.0)?;
+    let tau = input.tau();
     if let Some(out) = &o.state_space {
         let roots = tau.map_or(analysis.roots, |t| analysis.roots.map(|z| z / t));
         crate::state_space::write(
@@ -56,121 +65,10 @@ pub fn run(file: &str, o: &Options) -> Result<(), Failure> {
             },
         )?;
     }
-    if o.json {
-        print(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&to_json(&input, &analysis, &engineering))
-                .unwrap_or_default()
-        ))?;
+    if a.json {
+        crate::output::print_json(&QuarticJson::new(&input, &analysis, &engineering))
     } else {
-        print(&table(&input, &analysis, &engineering))?;
-    }
-    Ok(())
-}
-
-/// The analysis of a derivative file and the engineer's outputs from it
-/// (damp(), mode shapes, the short-period frequency requirement), every
-/// number finite, or the error at the input it arises from: what `quartic`
-/// prints, and what the Python package's `quartic()` returns.
-pub fn evaluated(
-    input: &DerivativeFile,
-    control: Option<&Control>,
-    class: AirplaneClass,
-) -> Result<(Analysis, Engineering), InputError> {
-    let analysis = analysis_of(input)?;
-    let tau = input.dimensional.map(|d| d.tau());
-    match Engineering::of_report(&input.derivatives, &analysis, tau, control, class) {
-        Ok(engineering) => Ok((analysis, engineering)),
-        Err(_) => Err(input.error_at(
-            most_extreme_input(input),
-            "the analysis overflows f64: no result can be written",
-        )),
-    }
-}
-
-/// The analysis of a derivative file, every number of it finite, or the
-/// error at the input it arises from (what `quartic` prints; the Python
-/// package raises the same).
-pub fn analysis_of(input: &DerivativeFile) -> Result<Analysis, InputError> {
-    let analysis = Analysis::of(&input.derivatives)
-        .map_err(|e| input.error_at(blame(input, &e), e.to_string()))?;
-    if !is_finite(&analysis) {
-        let largest = most_extreme_input(input);
-        return Err(input.error_at(
-            largest,
-            "the analysis overflows f64: no result can be written",
-        ));
-    }
-    Ok(analysis)
-}
-
-/// Whether every number the analysis would print is finite (absent ones,
-/// such as an aperiodic mode's period, are `None`, not infinite).
-pub fn is_finite(a: &Analysis) -> bool {
-    a.quartic.to_array().iter().all(|v| v.is_finite())
-        && a.roots.iter().all(|z| z.re.is_finite() && z.im.is_finite())
-        && a.routh.discriminant.is_finite()
-        && a.modes.iter().all(|m| m.re.is_finite() && m.im.is_finite())
-}
-
-/// The quartic input most extreme in magnitude, largest or smallest (the
-/// likeliest cause of an overflow: μ₁ = 1e-300 as much as 1e300).
-pub(crate) fn most_extreme_input(input: &DerivativeFile) -> usize {
-    let mut best = (0.0, rows::QUARTIC[0]);
-    for i in rows::QUARTIC {
-        let v = input.report[i].map_or(0.0, f64::abs);
-        let extreme = if v > 0.0 { v.log10().abs() } else { 0.0 };
-        if extreme > best.0 {
-            best = (extreme, i);
-        }
-    }
-    best.1
-}
-
-/// The row an analysis error is about.
-pub(crate) fn blame(input: &DerivativeFile, e: &AnalysisError) -> usize {
-    let named = |name: &str| {
-        Derivatives::QUARTIC_INPUTS
-            .iter()
-            .position(|n| *n == name)
-            .map(|k| rows::QUARTIC[k])
-    };
-    match e {
-        AnalysisError::LeadingCoefficientZero { .. } => rows::Z_WDOT,
-        AnalysisError::NonFinite { input: name, .. }
-        | AnalysisError::NotPositive { input: name, .. } => {
-            named(name).unwrap_or_else(|| most_extreme_input(input))
-        }
-        _ => most_extreme_input(input),
-    }
-}
-
-/// The `quartic --json` object: the file and its notation, the analysis as
-/// the library serializes it (with times in seconds where τ is known), and
-/// the reader's warnings.
-#[derive(Serialize)]
-pub struct QuarticJson<'a> {
-    file: &'a str,
-    notation: &'a str,
-    #[serde(flatten)]
-    analysis: Timed<'a>,
-    warnings: &'a [String],
-    /// `damp`, `mode_shapes`, `short_period_frequency`.
-    #[serde(flatten)]
-    engineering: &'a Engineering,
-}
-
-pub fn to_json<'a>(
-    input: &'a DerivativeFile,
-    a: &'a Analysis,
-    engineering: &'a Engineering,
-) -> QuarticJson<'a> {
-    QuarticJson {
-        file: &input.path,
-        notation: &input.notation,
-        analysis: a.timed(input.dimensional.map(|d| d.tau())),
-        warnings: &input.warnings,
-        engineering,
+        print(&table(&input, &analysis, &engineering))
     }
 }
 
@@ -181,7 +79,7 @@ pub fn table(input: &DerivativeFile, a: &Analysis, engineering: &Engineering) ->
             input.path
         ),
         a,
-        input.dimensional.map(|d| d.tau()),
+        input.tau(),
     );
     if let Some(f) = &engineering.short_period_frequency {
         s.push_str(&crate::engineering::frequency_line(f));
@@ -195,24 +93,10 @@ pub fn table(input: &DerivativeFile, a: &Analysis, engineering: &Engineering) ->
 /// (eq D2), roots in 1/s, modes in seconds; the engineer's outputs (damp(),
 /// mode shapes, the short-period frequency requirement, the state space)
 /// from the set in stability axes.
-fn run_dimensional(input: &DimensionalFile, o: &Options) -> Result<(), Failure> {
-    for w in &input.warnings {
-        crate::output::warn(&format!("warning: {w}"));
-    }
-    let a = input.analysis()?;
-    let engineering = dimensional_engineering(&a, o.class);
-    let finite = a.quartic.is_finite()
-        && a.routh.discriminant.is_finite()
-        && a.roots.iter().all(|z| z.re.is_finite() && z.im.is_finite());
-    let (true, Some(engineering)) = (finite, engineering) else {
-        return Err(input
-            .error_at(
-                input.most_extreme(),
-                "the analysis overflows f64: no result can be written",
-            )
-            .into());
-    };
-    if let Some(out) = &o.state_space {
+fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> {
+    crate::output::warn_all(&input.warnings);
+    let (a, engineering) = input.evaluated(args.engineering.class.0)?;
+    if let Some(out) = &args.engineering.state_space {
         crate::state_space::write(
             out,
             &crate::state_space::Export {
@@ -224,57 +108,18 @@ fn run_dimensional(input: &DimensionalFile, o: &Options) -> Result<(), Failure> 
             },
         )?;
     }
-    if o.json {
-        let out = DimensionalJson {
-            file: &input.path,
-            notation: DIMENSIONAL,
-            analysis: &a,
-            warnings: &input.warnings,
-            engineering: &engineering,
-        };
-        print(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&out).unwrap_or_default()
-        ))?;
-    } else {
-        let title = format!(
-            "Stability quartic of {} (notation \"dimensional\": the general longitudinal model, eqs D1–D2)",
-            input.path
-        );
-        let mut page = crate::page_dimensional::page(&title, &a);
-        if let Some(f) = &engineering.short_period_frequency {
-            page.push_str(&crate::engineering::frequency_line(f));
-            page.push('\n');
-        }
-        page.push_str(&crate::engineering::tables(&engineering));
-        print(&page)?;
+    if args.json {
+        return crate::output::print_json(&DimensionalJson::new(input, &a, &engineering));
     }
-    Ok(())
-}
-
-/// The engineer's outputs of a dimensional set, from its stability-axis
-/// form (where the mode shapes are the ones Etkin & Reid and AVL print):
-/// the state matrix E⁻¹A in seconds, n/α = −Z_w U₀/g. `None` when E is
-/// singular or the matrix is not finite.
-fn dimensional_engineering(a: &DimensionalAnalysis, class: AirplaneClass) -> Option<Engineering> {
-    let st = &a.stability;
-    let matrix = st
-        .state_matrix()
-        .filter(|m| m.iter().all(|v| v.is_finite()))?;
-    let model = LinearModel::of_dimensional(matrix, None, None, st.trim.speed());
-    let n_alpha = n_alpha_dimensional(st.derivatives.z_w, st.trim.u0, st.trim.g);
-    Some(Engineering::of_model(model, &a.roots, Some(n_alpha), class))
-}
-
-/// The `quartic --json` object of a dimensional set.
-#[derive(Serialize)]
-struct DimensionalJson<'a> {
-    file: &'a str,
-    notation: &'a str,
-    #[serde(flatten)]
-    analysis: &'a DimensionalAnalysis,
-    warnings: &'a [String],
-    /// `damp`, `mode_shapes`, `short_period_frequency`.
-    #[serde(flatten)]
-    engineering: &'a Engineering,
+    let title = format!(
+        "Stability quartic of {} (notation \"dimensional\": the general longitudinal model, eqs D1–D2)",
+        input.path
+    );
+    let mut page = crate::page_dimensional::page(&title, &a);
+    if let Some(f) = &engineering.short_period_frequency {
+        page.push_str(&crate::engineering::frequency_line(f));
+        page.push('\n');
+    }
+    page.push_str(&crate::engineering::tables(&engineering));
+    print(&page)
 }

@@ -8,13 +8,13 @@
 //! it exists, must be a report (or empty): nothing else is replaced.
 
 use crate::Failure;
-use crate::diag::IoError;
-use crate::files::write_error;
 use crate::output::AtomicDir;
 use crate::report::conclusions::{self, Judged};
 use crate::report::summary::{self, Findings};
 use crate::report::{SECTIONS, Study, html};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use stability_io::diag::IoError;
+use stability_io::files::write_error;
 use std::path::Path;
 
 /// Whether `name` is a file or directory a report writes.
@@ -47,7 +47,7 @@ fn check_target(out: &Path) -> Result<(), Failure> {
         if !is_report_entry(&name) {
             return Err(refuse(format!(
                 "it holds `{}`, which a report does not write, and a report replaces the whole directory; choose another --out, or move that away",
-                crate::diag::quote(&name)
+                stability_io::diag::quote(&name)
             )));
         }
     }
@@ -64,7 +64,16 @@ fn progress_bar(steps: usize) -> ProgressBar {
     bar
 }
 
-pub fn run(out: &Path) -> Result<(), Failure> {
+/// The command's options.
+#[derive(Debug, Clone, clap::Args)]
+pub struct Args {
+    /// The output directory.
+    #[arg(long, default_value = "report")]
+    pub out: String,
+}
+
+pub fn run(args: &Args) -> Result<(), Failure> {
+    let out = Path::new(&args.out);
     check_target(out)?;
     let dir = AtomicDir::create(out).map_err(|e| write_error(out, &e))?;
     let write = |name: &str, bytes: &[u8]| -> Result<(), Failure> {

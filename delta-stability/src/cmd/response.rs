@@ -4,49 +4,75 @@
 
 use crate::Failure;
 use crate::args::ResponseInput;
-use crate::diag::{InputError, num};
-use crate::files::write_error;
-use crate::fmt::sig;
-use crate::input::{self, DerivativeFile, rows};
 use crate::output::{atomic_write, print};
 use crate::plot::{Figure, Series};
-use stability_core::response::{
-    Input, ResponseError, Sample, Simplifications, StateSpace, Stop, TwoDof,
-};
-use std::fmt::Write;
+use stability_core::display::sig;
+use stability_core::response::{Computed, Sample};
+use stability_io::diag::InputError;
+use stability_io::files::write_error;
+use stability_io::input;
+use stability_io::response::{Disturbance, Spec, csv, respond};
 use std::path::Path;
 
-/// The options of the command (validated by clap: `until` positive and
-/// finite, `steps` from 1 to the library's `MAX_STEPS`, `m0` and `w0`
-/// finite).
-pub struct Options {
+/// The command's options (validated by clap: `until` positive and finite,
+/// `steps` from 1 to the library's `MAX_STEPS`, `m0` and `w0` finite).
+#[derive(Debug, Clone, clap::Args)]
+pub struct Args {
+    /// The derivative file (TOML), as for `quartic`.
     pub file: String,
+    /// What disturbs the aircraft.
+    #[arg(long, value_enum, default_value = "step")]
     pub input: ResponseInput,
+    /// End time, in units of τ (positive).
+    #[arg(long, value_parser = crate::args::positive)]
     pub until: f64,
-    pub steps: usize,
+    /// Number of intervals (1 to 10⁶).
+    #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=stability_core::response::MAX_STEPS as i64))]
+    pub steps: u32,
+    /// Size of the moment step m₀ (eqs 2 units; finite).
+    #[arg(long, default_value_t = 1.0, value_parser = crate::args::finite)]
     pub m0: f64,
+    /// Initial ŵ = w/V for `--input initial` (finite).
+    #[arg(long, default_value_t = 0.01, value_parser = crate::args::finite)]
     pub w0: f64,
+    /// Set z_q = z_ẇ = 0 (the report's Fig 38).
+    #[arg(long)]
     pub neglect_zq_zwdot: bool,
+    /// Hold û = 0: two degrees of freedom (§11).
+    #[arg(long)]
     pub neglect_u: bool,
+    /// Write the time history as CSV.
+    #[arg(long)]
     pub csv: Option<String>,
+    /// Write a plot as SVG.
+    #[arg(long)]
     pub svg: Option<String>,
 }
 
-/// A computed response with the report's closed form beside it.
-pub struct Computed {
-    pub samples: Vec<Sample>,
-    /// Eq (45)'s ŵ at each sample, for a step.
-    pub eq45: Option<Vec<f64>>,
+impl Args {
+    /// The library's response, as asked for.
+    pub fn spec(&self) -> Spec {
+        Spec {
+            input: match self.input {
+                ResponseInput::Step => Disturbance::Step,
+                ResponseInput::Initial => Disturbance::Initial,
+            },
+            until: self.until,
+            steps: self.steps as usize,
+            m0: self.m0,
+            w0: self.w0,
+            neglect_zq_zwdot: self.neglect_zq_zwdot,
+            neglect_u: self.neglect_u,
+        }
+    }
 }
 
-pub fn run(o: &Options) -> Result<(), Failure> {
+pub fn run(o: &Args) -> Result<(), Failure> {
     let file = input::read(&o.file)?;
-    for w in &file.warnings {
-        crate::output::warn(&format!("warning: {w}"));
-    }
-    let r = respond(o, &file)?;
-    let tau = file.dimensional.map(|d| d.tau());
-    let csv = csv_text(&r, tau);
+    crate::output::warn_all(&file.warnings);
+    let r = respond(&file, &o.spec())?;
+    let tau = file.tau();
+    let csv = csv(&r, tau);
     for (path, text) in [(&o.csv, Some(&csv)), (&o.svg, None)] {
         let Some(path) = path else { continue };
         let bytes = match text {
@@ -78,98 +104,7 @@ pub fn run(o: &Options) -> Result<(), Failure> {
     Ok(())
 }
 
-/// The response over the whole span asked for, or why it cannot be had
-/// (`csv` and `svg` of the options are not used).
-pub fn respond(o: &Options, file: &DerivativeFile) -> Result<Computed, InputError> {
-    let bad = |m: String| InputError::file(&o.file, m);
-    let input = match o.input {
-        ResponseInput::Step => Input::Step {
-            x0: 0.0,
-            z0: 0.0,
-            m0: o.m0,
-        },
-        ResponseInput::Initial => Input::Initial {
-            u: 0.0,
-            w: o.w0,
-            q: 0.0,
-            theta: 0.0,
-        },
-    };
-    let simp = Simplifications {
-        neglect_zq_zwdot: o.neglect_zq_zwdot,
-        neglect_u: o.neglect_u,
-    };
-    let ss = StateSpace::new(&file.derivatives, simp).map_err(|e| match e {
-        ResponseError::SingularMass { .. } => file.error_at(rows::Z_WDOT, e.to_string()),
-        _ => bad(e.to_string()),
-    })?;
-    let r = ss
-        .simulate(input, o.until, o.steps)
-        .map_err(|e| bad(format!("--until {} --steps {}: {e}", num(o.until), o.steps)))?;
-    if let Some(stop) = &r.stopped {
-        return Err(bad(stopped_early(o, &r.samples, stop)));
-    }
-    let samples = r.samples;
-    // the report's closed form, eq (45), for the step (from the 2-DOF
-    // equation as printed, with the same simplifications applied)
-    let mut d = file.derivatives;
-    if o.neglect_zq_zwdot {
-        d.z_q = 0.0;
-        d.z_wdot = 0.0;
-    }
-    let two = TwoDof::of(&d);
-    let eq45: Option<Vec<f64>> = matches!(input, Input::Step { .. })
-        .then(|| samples.iter().map(|s| two.w(s.t, 1.0) * o.m0).collect());
-    if let Some(k) = eq45
-        .as_ref()
-        .and_then(|w| w.iter().position(|v| !v.is_finite()))
-    {
-        return Err(bad(format!(
-            "eq (45)'s two-degree-of-freedom response overflows f64 at t̂ = {}, before --until {}: ask for a shorter --until",
-            num(samples[k].t),
-            num(o.until)
-        )));
-    }
-    Ok(Computed { samples, eq45 })
-}
-
-/// Why a response stopped before `--until`: the library's reason.
-fn stopped_early(o: &Options, samples: &[Sample], stop: &Stop) -> String {
-    let reached = samples.last().map_or(0.0, |s| s.t);
-    format!(
-        "the response stops at t̂ = {} of the {} asked for (--until): {stop}; ask for a shorter --until",
-        num(reached),
-        num(o.until)
-    )
-}
-
-fn csv_text(r: &Computed, tau: Option<f64>) -> String {
-    let mut csv = String::new();
-    let _ = write!(csv, "t_hat");
-    if tau.is_some() {
-        let _ = write!(csv, ",t_s");
-    }
-    let _ = writeln!(csv, ",u_hat,w_hat,q_hat,theta,w_hat_eq45");
-    for (k, s) in r.samples.iter().enumerate() {
-        let _ = write!(csv, "{}", crate::plot::num(s.t));
-        if let Some(t) = tau {
-            let _ = write!(csv, ",{}", crate::plot::num(s.t * t));
-        }
-        let eq45 = r.eq45.as_ref().map(|w| crate::plot::num(w[k]));
-        let _ = writeln!(
-            csv,
-            ",{},{},{},{},{}",
-            crate::plot::num(s.u),
-            crate::plot::num(s.w),
-            crate::plot::num(s.q),
-            crate::plot::num(s.theta),
-            eq45.unwrap_or_default()
-        );
-    }
-    csv
-}
-
-fn figure(o: &Options, r: &Computed) -> Figure {
+fn figure(o: &Args, r: &Computed) -> Figure {
     let mut fig = Figure::new(
         "response",
         format!(

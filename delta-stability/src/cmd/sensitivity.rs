@@ -9,97 +9,34 @@
 //! |p·∂r/∂p|, the first-order change of r if p doubled.
 
 use crate::Failure;
-use crate::engineering::{aligned, mode_name};
-use crate::fmt::sig;
-use crate::input;
+use crate::engineering::aligned;
 use crate::output::print;
-use serde::Serialize;
-use stability_core::analysis::Analysis;
-use stability_core::modes::{ModeName, Origin};
-use stability_core::sensitivity::{ModeSensitivity, mode_sensitivities};
+use stability_core::display::sig;
+use stability_io::input;
+use stability_io::views::SensitivityJson;
 use std::fmt::Write;
 
-/// One input's sensitivities, with the rates also in 1/s when τ is known.
-#[derive(Serialize)]
-struct InputJson {
-    #[serde(flatten)]
-    s: ModeSensitivity,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    d_re_s: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    d_im_s: Option<f64>,
+/// The command's options.
+#[derive(Debug, Clone, clap::Args)]
+pub struct Args {
+    /// The derivative file (TOML).
+    pub file: String,
+    /// Print one JSON object (keys file, notation, tau_s, modes[].sensitivities[] with input, value, d_re, d_im, d_damping_ratio, d_cycles_to_half, damping_drive, and d_re_s, d_im_s when τ is known).
+    #[arg(long)]
+    pub json: bool,
 }
 
-#[derive(Serialize)]
-struct ModeJson {
-    mode: ModeName,
-    origin: Option<Origin>,
-    re: f64,
-    im: f64,
-    /// `None` at a multiple root, where λ is not differentiable.
-    sensitivities: Option<Vec<InputJson>>,
-}
-
-#[derive(Serialize)]
-struct SensitivityJson<'a> {
-    file: &'a str,
-    notation: &'a str,
-    tau_s: Option<f64>,
-    modes: Vec<ModeJson>,
-}
-
-pub fn run(file: &str, json: bool) -> Result<(), Failure> {
-    let input = input::read(file)?;
-    for w in &input.warnings {
-        crate::output::warn(&format!("warning: {w}"));
-    }
-    let d = &input.derivatives;
-    let analysis = Analysis::of(d)
-        .map_err(|e| input.error_at(super::quartic::blame(&input, &e), e.to_string()))?;
-    let tau = input.dimensional.map(|x| x.tau());
-    let modes: Vec<ModeJson> = analysis
-        .modes
-        .iter()
-        .map(|m| ModeJson {
-            mode: m.name,
-            origin: m.origin,
-            re: m.re,
-            im: m.im,
-            sensitivities: mode_sensitivities(d, m).map(|v| {
-                v.into_iter()
-                    .map(|s| InputJson {
-                        d_re_s: tau.map(|t| s.d_re / t),
-                        d_im_s: tau.map(|t| s.d_im / t),
-                        s,
-                    })
-                    .collect()
-            }),
-        })
-        .collect();
-    let finite = modes
-        .iter()
-        .flat_map(|m| m.sensitivities.iter().flatten())
-        .all(|i| {
-            [i.s.d_re, i.s.d_im, i.s.d_damping_ratio, i.s.damping_drive]
-                .iter()
-                .all(|v| v.is_finite())
-        });
-    if !finite {
+pub fn run(args: &Args) -> Result<(), Failure> {
+    let input = input::read(&args.file)?;
+    crate::output::warn_all(&input.warnings);
+    let analysis = input.analysis()?;
+    let out = SensitivityJson::new(&input, &analysis);
+    if !out.is_finite() {
         let m = "the sensitivities overflow f64: no result can be written";
-        let at = super::quartic::most_extreme_input(&input);
-        return Err(input.error_at(at, m).into());
+        return Err(input.error_at(input.most_extreme_input(), m).into());
     }
-    let out = SensitivityJson {
-        file,
-        notation: &input.notation,
-        tau_s: tau,
-        modes,
-    };
-    if json {
-        print(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&out).unwrap_or_default()
-        ))
+    if args.json {
+        crate::output::print_json(&out)
     } else {
         print(&page(&out))
     }
@@ -125,7 +62,7 @@ fn page(out: &SensitivityJson<'_>) -> String {
         let _ = writeln!(
             s,
             "\n{}, λ = {root} (1/τ); rates in {unit}; ranked by |p·∂r/∂p|:",
-            mode_name(m.mode, m.origin)
+            m.mode.label(m.origin)
         );
         let Some(rows) = &m.sensitivities else {
             let _ = writeln!(

@@ -206,7 +206,7 @@ mod tests {
     fn at(s: &Series, m: f64) -> f64 {
         s.points
             .iter()
-            .find(|p| (p.0 - m).abs() < 1e-9)
+            .find(|p| stability_core::grid::on(p.0, m))
             .map_or(f64::NAN, |p| p.1)
     }
 

@@ -27,8 +27,8 @@
 use super::standard::CGS;
 use super::study::{Assumed, Assumption, Study, WINGS};
 use super::summary::{CROPPED_TAPER, Findings, SWEEPS_ABOUT_60, Worst, show_intervals};
-use crate::fmt::sig;
 use serde::Serialize;
+use stability_core::display::sig;
 use stability_core::faired::{LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM};
 use stability_core::study::intervals;
 use std::cell::RefCell;
@@ -239,7 +239,7 @@ fn transonic_45(f: &Findings) -> Assessment {
         .inadequate
         .iter()
         .copied()
-        .filter(|(m, _)| *m >= a - 1e-9 && *m <= b + 1e-9)
+        .filter(|(m, _)| stability_core::grid::within(*m, a, b))
         .collect();
     let covered = share(&within);
     let most = w.most_cycles.map_or("—".into(), |(m, c)| {

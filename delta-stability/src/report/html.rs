@@ -6,7 +6,7 @@
 
 use super::Plate;
 use super::conclusions::{Agreement, Judged};
-use crate::fmt::sig;
+use stability_core::display::sig;
 use stability_core::study::report_wing;
 use std::fmt::Write;
 

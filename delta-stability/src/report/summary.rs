@@ -96,7 +96,7 @@ impl Worst {
         match self {
             Worst::NoneMeets(at) => format!("no μ₁ meets it at M {}", show_intervals(at)),
             Worst::Least { mach, mu1 } => {
-                format!("{} at M = {mach:.2}", crate::fmt::sig(*mu1, 3))
+                format!("{} at M = {mach:.2}", stability_core::display::sig(*mu1, 3))
             }
         }
     }
@@ -228,7 +228,9 @@ fn subcritical_results(study: &Study, k: usize) -> impl Iterator<Item = (f64, &C
         .ms
         .iter()
         .zip(&study.results[k])
-        .filter(|(m, _)| **m <= LIFTING_SURFACE_LIMIT + 1e-9)
+        .filter(|(m, _)| {
+            stability_core::grid::within(**m, f64::NEG_INFINITY, LIFTING_SURFACE_LIMIT)
+        })
         .filter_map(|(&m, r)| Some((m, r.as_ref()?)))
 }
 
@@ -475,7 +477,7 @@ pub fn show_intervals(v: &[[f64; 2]]) -> String {
     }
     v.iter()
         .map(|[a, b]| {
-            if (a - b).abs() < 1e-9 {
+            if stability_core::grid::on(*a, *b) {
                 format!("{a:.2}")
             } else {
                 format!("{a:.2}–{b:.2}")

@@ -4,8 +4,8 @@
 use super::regimes::{self, Basis};
 use super::study::{across, curve, mach_fig};
 use super::{Plate, Study};
-use crate::fmt::sig;
 use stability_core::case::Case;
+use stability_core::display::sig;
 use stability_core::geometry::{Planform, Size, cropped_h};
 
 /// The cropped wing's taper ratio.

@@ -11,7 +11,8 @@ use super::raw::{Ctx, RawFile, Table};
 use super::rows::{C_D, DERIVATIVES, FLIGHT, I_B, MU, QUARTIC, X_Q, X_WDOT};
 use super::suggest::did_you_mean;
 use super::{Origin, Reading, notations};
-use crate::diag::{InputError, num, quote};
+use crate::diag::{InputError, quote};
+use stability_core::display::Num;
 use stability_core::notation::{N_ROWS, Notation, NotationError, Parameters, Values, tables};
 
 /// Rows a notation may leave out, taken as 0, with the reason given in the
@@ -190,7 +191,7 @@ fn parameters(cx: &Ctx<'_>, raw: &RawFile, notation: Notation) -> Result<Paramet
         }
         let x = *v.get_ref();
         if x <= 0.0 {
-            return Err(cx.err(v.span(), field, format!("must be positive, not {}", num(x))));
+            return Err(cx.err(v.span(), field, format!("must be positive, not {}", Num(x))));
         }
         (out[i], given[i]) = (x, true);
     }

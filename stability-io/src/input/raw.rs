@@ -2,8 +2,9 @@
 //! any notation is applied; and the TOML parser's errors, located.
 
 use super::suggest::did_you_mean;
-use crate::diag::{InputError, num, quote};
+use crate::diag::{InputError, quote};
 use serde::Deserialize;
+use stability_core::display::Num;
 use std::collections::BTreeMap;
 use std::ops::Range;
 use toml::Spanned;
@@ -24,7 +25,7 @@ pub struct RawFile {
     pub parameters: Option<Table>,
     pub dimensional: Option<Spanned<RawDimensional>>,
     pub st_file: Option<Spanned<String>>,
-    /// The control derivatives, read by [`crate::state_space`].
+    /// The control derivatives, read by [`crate::control`].
     pub control: Option<toml::Value>,
 }
 
@@ -120,7 +121,7 @@ impl Ctx<'_> {
                 return Err(self.err(
                     v.span(),
                     format!("[{name}] {}", quote(k.get_ref())),
-                    format!("{} is not a finite number", num(x)),
+                    format!("{} is not a finite number", Num(x)),
                 ));
             }
             out.push((k, v));

@@ -3,7 +3,8 @@
 //!
 //! Every message quotes at most a short excerpt of what the user wrote
 //! ([`quote`], [`excerpt_line`]) and prints numbers in their shortest form
-//! ([`num`]: `1e308`, not 309 digits), however large the input.
+//! ([`stability_core::display::Num`]: `1e308`, not 309 digits), however
+//! large the input.
 
 use std::fmt;
 use std::ops::Range;
@@ -31,17 +32,6 @@ fn shorten(s: &str, max: usize) -> String {
     let head: String = s.chars().take(max * 2 / 3).collect();
     let tail: String = s.chars().skip(n - max / 3).collect();
     format!("{head}…({} characters)…{tail}", n)
-}
-
-/// A number as a message shows it: the shortest text that reads back as
-/// `x`, in exponent form outside 1e-4 ≤ |x| < 1e15.
-pub fn num(x: f64) -> String {
-    let a = x.abs();
-    if x == 0.0 || !x.is_finite() || (1e-4..1e15).contains(&a) {
-        format!("{x}")
-    } else {
-        format!("{x:e}")
-    }
 }
 
 /// A window of at most [`LINE_CHARS`] characters of `line` around the
@@ -230,15 +220,6 @@ impl std::error::Error for IoError {}
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn numbers_are_short() {
-        assert_eq!(num(1e308), "1e308");
-        assert_eq!(num(-2.5e-300), "-2.5e-300");
-        assert_eq!(num(0.25), "0.25");
-        assert_eq!(num(12000.0), "12000");
-        assert_eq!(num(f64::NEG_INFINITY), "-inf");
-    }
 
     #[test]
     fn quotes_are_short_and_keep_both_ends() {

@@ -9,12 +9,16 @@ use super::raw::{Ctx, RawFile, Table};
 use super::rows::{C_D, I_B, MU};
 use super::{Origin, Reading};
 use crate::Failure;
-use crate::diag::{InputError, num};
+use crate::diag::InputError;
 use stability_core::Derivatives;
 use stability_core::analysis::Dimensional;
+use stability_core::display::Num;
 use stability_core::notation::avl::{self as st, AvlError, StFile};
 use stability_core::notation::{N_ROWS, report_values, tables};
 use std::path::Path;
+
+/// The notation AVL's output is read in (`st_file`), never written.
+pub const AVL: &str = "avl";
 
 pub fn read(cx: &Ctx<'_>, raw: &RawFile, dims: &Dims) -> Result<Reading, Failure> {
     let Some(st_rel) = &raw.st_file else {
@@ -129,7 +133,7 @@ fn check_st(shown: &str, text: &str, s: &StFile) -> Result<(), InputError> {
             shown,
             text,
             line_of(text, name),
-            format!("{} {bad}", num(v)),
+            format!("{} {bad}", Num(v)),
         );
         e.field = name.into();
         return Err(e);
@@ -167,7 +171,7 @@ fn reading(cx: &Ctx<'_>, dims: &Dims, st: &StFile, origin: Origin) -> Result<Rea
                 g.field,
                 format!(
                     "notation `avl` takes this from the .st file's {name} = {}; remove it or make it agree",
-                    num(from_st)
+                    Num(from_st)
                 ),
             ));
         }
@@ -213,6 +217,6 @@ fn reading(cx: &Ctx<'_>, dims: &Dims, st: &StFile, origin: Origin) -> Result<Rea
             .iter()
             .map(|n| format!("{}: {n}", cx.path))
             .collect(),
-        form: crate::args::AVL,
+        form: AVL,
     })
 }

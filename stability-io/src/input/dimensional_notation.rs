@@ -30,8 +30,7 @@
 use super::DerivativeFile;
 use super::raw::{Ctx, Entries, Table, toml_error};
 use super::suggest::{did_you_mean, nearest};
-use crate::diag::{InputError, num, quote};
-use crate::fmt::sig;
+use crate::diag::{InputError, quote};
 use serde::Deserialize;
 use stability_core::analysis::Analysis;
 use stability_core::dimensional::report::GAMMA0_NEGLIGIBLE;
@@ -39,6 +38,8 @@ use stability_core::dimensional::{
     Axes, DimensionalAnalysis, DimensionalDerivatives, DimensionalError, DimensionalModel,
     Reference, Trim, Units,
 };
+use stability_core::display::Num;
+use stability_core::display::sig;
 use stability_core::notation::{Notation, report_values, tables};
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -491,7 +492,7 @@ impl Reader<'_> {
         if axes == Axes::Stability {
             for key in ["W0", "alpha0"] {
                 if get(key).is_some_and(|v| v != 0.0) {
-                    return Err(self.at_given(f, key, "flight", format!("{key} = {} in stability axes, where the x axis is along the trim velocity and W₀ = α₀ = 0 by definition; body-axis data need axes = \"body\"", num(get(key).unwrap_or(0.0)))));
+                    return Err(self.at_given(f, key, "flight", format!("{key} = {} in stability axes, where the x axis is along the trim velocity and W₀ = α₀ = 0 by definition; body-axis data need axes = \"body\"", Num(get(key).unwrap_or(0.0)))));
                 }
             }
         }
@@ -544,7 +545,7 @@ impl Reader<'_> {
         if (g - og).abs() < 0.02 * og {
             return Err(self.at_given(f, "g", "flight", format!(
                 "g = {} is the standard gravity in units = \"{}\", but the file says units = \"{}\" (g = {standard}): check the units of every value",
-                num(*g), other.name(), units.name()
+                Num(*g), other.name(), units.name()
             )));
         }
         Ok(*g)

@@ -20,10 +20,11 @@
 //! given in both forms (`mu1` and `mass`, say) is an error naming both.
 
 use super::Reader;
-use super::limits;
 use super::raw::RawFlight;
-use crate::diag::{InputError, num, quote};
+use crate::diag::{InputError, quote};
+use crate::limits;
 use stability_core::case::Case;
+use stability_core::display::Num;
 use stability_core::flight::{
     Air, Altitude, FlightCondition, FlightError, FlightInput, Mass, PhysicalFlight, Units,
 };
@@ -273,7 +274,7 @@ fn derived_within_limits(r: &Reader<'_>, f: &RawFlight, v: &[f64; 3]) -> Result<
         if let Err(m) = limit.check(v[k]) {
             let m = format!(
                 "{what} = {} from this flight condition and the planform: {m}",
-                num(v[k])
+                Num(v[k])
             );
             return Err(r.err_field(&format!("[flight] {field}"), m));
         }

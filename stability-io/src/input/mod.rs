@@ -30,6 +30,7 @@
 //! [`avl`] for AVL's output; [`check`] then checks what either read. Every
 //! value read is finite and every error names the file, line and field.
 
+pub mod analysis;
 pub mod avl;
 pub mod check;
 pub mod dimensional;
@@ -40,7 +41,6 @@ pub mod suggest;
 pub mod tabled;
 
 use crate::Failure;
-use crate::args::AVL;
 use crate::diag::InputError;
 use stability_core::Derivatives;
 use stability_core::analysis::Dimensional;
@@ -48,6 +48,7 @@ use stability_core::notation::{N_ROWS, Parameters, Values, tables};
 use std::ops::Range;
 use std::path::Path;
 
+pub use avl::AVL;
 pub use raw::toml_error;
 pub use rows::{DERIVATIVE_ROWS, FLIGHT_ROWS};
 

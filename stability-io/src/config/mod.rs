@@ -32,10 +32,10 @@
 //! ```
 //!
 //! An optional `[control]` table gives the control derivatives of
-//! `--state-space` ([`crate::state_space`]). Each value must lie in its
+//! `--state-space` (`[control]`). Each value must lie in its
 //! range ([`limits`]); every error names the file, line and field.
 
-pub mod limits;
+pub mod overrides;
 pub mod physical;
 pub mod raw;
 pub mod tables;
@@ -43,16 +43,19 @@ pub mod tables;
 use crate::Failure;
 use crate::diag::{InputError, quote};
 use crate::input::toml_error;
+use crate::limits;
 use raw::{RawConfig, RawModel, RawPlanform};
 use stability_core::aero::{AeroError, AeroModel, AeroModelName, Source};
 use stability_core::case::{Case, CaseError, DampingModel};
 use stability_core::damping::DampingError;
+use stability_core::display::Num;
 use stability_core::geometry::{GeometryError, Planform, Size};
 use stability_core::lifting_surface::LiftingSurfaceError;
 use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
 
+pub use overrides::{Overrides, apply, overridden};
 pub use tables::read_csv_table;
 
 /// A config, read and checked.
@@ -234,7 +237,7 @@ fn planform(r: &mut Reader<'_>, p: &Spanned<RawPlanform>) -> Result<Planform, In
             "[planform] sweep",
             format!(
                 "at a sweep of {}° the planform's span, area or aspect ratio is not a finite positive number",
-                crate::diag::num(sweep)
+                Num(sweep)
             ),
         ));
     }
@@ -245,17 +248,14 @@ fn model(r: &mut Reader<'_>, m: &RawModel, case: &mut Case) -> Result<(), Failur
     if let Some(d) = &m.damping {
         r.spans.push(("[model] damping".into(), d.span()));
         case.damping = DampingModel::parse(d.get_ref()).map_err(|_| {
-            let names: Vec<&str> = <crate::args::DampingArg as clap::ValueEnum>::value_variants()
-                .iter()
-                .map(|v| v.0.name())
-                .collect();
+            let names = DampingModel::ALL.map(DampingModel::name);
             r.err(
                 d.span(),
                 "[model] damping",
                 format!(
                     "unknown damping model `{}`{}; the models are: {}",
                     quote(d.get_ref()),
-                    crate::input::suggest::did_you_mean(d.get_ref(), names.iter().copied()),
+                    crate::input::suggest::did_you_mean(d.get_ref(), names),
                     names.join(", ")
                 ),
             )

@@ -3,8 +3,9 @@
 //! μ₁ = m/(½ρSc̄) and i_B = I_y/(mc̄²).
 
 use super::raw::{Ctx, RawDimensional};
-use crate::diag::{InputError, num};
+use crate::diag::InputError;
 use stability_core::analysis::Dimensional;
+use stability_core::display::Num;
 use std::ops::Range;
 use toml::Spanned;
 
@@ -46,7 +47,7 @@ fn positive(
         Err(cx.err(
             v.span(),
             field,
-            format!("must be a positive finite number, not {}", num(x)),
+            format!("must be a positive finite number, not {}", Num(x)),
         ))
     }
 }

@@ -7,8 +7,9 @@ use super::dimensional::Dims;
 use super::raw::{Ctx, RawFile};
 use super::rows::{I_B, MU};
 use super::{DerivativeFile, Origin, Reading};
-use crate::diag::{InputError, num};
+use crate::diag::InputError;
 use stability_core::Derivatives;
+use stability_core::display::Num;
 use stability_core::notation::{N_ROWS, Notation, derivatives_from_report, row, tables};
 
 /// The error at a row's origin (or at the notation, when it has none).
@@ -65,7 +66,7 @@ fn finite(cx: &Ctx<'_>, raw: &RawFile, r: &Reading) -> Result<(), InputError> {
             &r.origins[i],
             format!(
                 "in the report's notation this is {name} = {}: the conversion overflows (no derivative is this large)",
-                num(v)
+                Num(v)
             ),
         ));
     }
@@ -103,7 +104,7 @@ fn positive(cx: &Ctx<'_>, raw: &RawFile, r: &Reading, d: &Derivatives) -> Result
                 cx,
                 raw,
                 &r.origins[row],
-                format!("{what} must be positive, not {}", num(v)),
+                format!("{what} must be positive, not {}", Num(v)),
             ));
         }
     }
@@ -118,16 +119,16 @@ fn consistency(path: &str, dims: &Dims, d: &Derivatives) -> Vec<String> {
         if (mu1 - d.mu1).abs() > 0.01 * d.mu1 {
             out.push(format!(
                 "{path}: the relative density is μ₁ = {} but [dimensional] gives m/(½ρSc̄) = {mu1:.4}; the quartic uses {}",
-                num(d.mu1),
-                num(d.mu1)
+                Num(d.mu1),
+                Num(d.mu1)
             ));
         }
         let c_l = dim.c_l();
         if (c_l - d.c_l).abs() > 0.01 * d.c_l.abs().max(1e-3) {
             out.push(format!(
                 "{path}: the lift coefficient is {} but [dimensional] gives W/(½ρV²S) = {c_l:.4} (g = 9.80665 m/s²); the quartic uses {}",
-                num(d.c_l),
-                num(d.c_l)
+                Num(d.c_l),
+                Num(d.c_l)
             ));
         }
     }
@@ -136,8 +137,8 @@ fn consistency(path: &str, dims: &Dims, d: &Derivatives) -> Vec<String> {
     {
         out.push(format!(
             "{path}: the pitching inertia is i_B = {} but [dimensional] gives I_y/(mc̄²) = {i_b:.4}; the quartic uses {}",
-            num(d.i_b),
-            num(d.i_b)
+            Num(d.i_b),
+            Num(d.i_b)
         ));
     }
     out

@@ -7,9 +7,9 @@
 //! fuzzing once found wrong are kept in `tests/fuzz-corpus/` and checked
 //! the same way.
 
-use delta_stability::Failure;
 use proptest::prelude::*;
 use stability_core::notation::{Notation, report_values};
+use stability_io::Failure;
 use std::path::{Path, PathBuf};
 
 /// The longest message an error may have.
@@ -39,8 +39,8 @@ fn valid_file(notation: Notation) -> String {
         .expect("the example converts into every notation");
     let names = notation.names();
     let mut s = format!("notation = \"{}\"\n", notation.name());
-    let derivative_rows = &delta_stability::input::rows::DERIVATIVES;
-    let flight_rows = &delta_stability::input::rows::FLIGHT;
+    let derivative_rows = &stability_io::input::rows::DERIVATIVES;
+    let flight_rows = &stability_io::input::rows::FLIGHT;
     for (table, rows) in [
         ("derivatives", &derivative_rows[..]),
         ("flight", &flight_rows[..]),
@@ -53,7 +53,7 @@ fn valid_file(notation: Notation) -> String {
         }
     }
     let report_names = Notation::REPORT.names();
-    let lacking: Vec<String> = delta_stability::input::rows::QUARTIC
+    let lacking: Vec<String> = stability_io::input::rows::QUARTIC
         .iter()
         .filter(|&&i| names[i].is_none())
         .filter_map(|&i| {
@@ -106,7 +106,7 @@ fn dimensional_bases() -> Vec<String> {
 /// whose roots, modes and coefficients are finite, or a short located
 /// error.
 fn check_dimensional(text: &str) -> Result<(), String> {
-    use delta_stability::input::dimensional_notation as dn;
+    use stability_io::input::dimensional_notation as dn;
     let analysis = dn::parse(&fuzz_path(), text).and_then(|f| f.analysis());
     match analysis {
         Ok(a) => {
@@ -216,7 +216,7 @@ fn damage(text: &str, d: &Damage) -> String {
 
 /// The property: a result whose every value is finite, or a short error
 /// located at `file:line:column`.
-fn check(outcome: Result<delta_stability::input::DerivativeFile, Failure>) -> Result<(), String> {
+fn check(outcome: Result<stability_io::input::DerivativeFile, Failure>) -> Result<(), String> {
     match outcome {
         Ok(f) => {
             let d = f.derivatives;
@@ -243,7 +243,7 @@ fn check(outcome: Result<delta_stability::input::DerivativeFile, Failure>) -> Re
 
 /// The property for a config: a design point whose every value (and its
 /// planform's derived sizes) is finite, or a short located error.
-fn check_config(outcome: Result<delta_stability::config::Config, Failure>) -> Result<(), String> {
+fn check_config(outcome: Result<stability_io::config::Config, Failure>) -> Result<(), String> {
     match outcome {
         Ok(c) => {
             let (case, p) = (&c.case, &c.case.planform);
@@ -298,8 +298,8 @@ proptest! {
         if let Some(d) = &second {
             text = damage(&text, d);
         }
-        let outcome = delta_stability::input::parse(&fuzz_path(), &text);
-        prop_assert!(check(outcome).is_ok(), "{:?}", check(delta_stability::input::parse(&fuzz_path(), &text)));
+        let outcome = stability_io::input::parse(&fuzz_path(), &text);
+        prop_assert!(check(outcome).is_ok(), "{:?}", check(stability_io::input::parse(&fuzz_path(), &text)));
     }
 
     #[test]
@@ -327,13 +327,13 @@ proptest! {
         if let Some(d) = &second {
             text = damage(&text, d);
         }
-        let verdict = check_config(delta_stability::config::parse(&fuzz_path(), &text));
+        let verdict = check_config(stability_io::config::parse(&fuzz_path(), &text));
         prop_assert!(verdict.is_ok(), "{:?}", verdict);
     }
 
     #[test]
     fn arbitrary_text_never_panics_and_errors_are_located(text in "\\PC{0,400}") {
-        if let Err(e) = delta_stability::input::parse("fuzz.toml", &text) {
+        if let Err(e) = stability_io::input::parse("fuzz.toml", &text) {
             let m = e.to_string();
             prop_assert!(located_and_short(&m).is_ok(), "{:?}", located_and_short(&m));
         }
@@ -354,9 +354,9 @@ fn the_corpus_of_past_failures_satisfies_the_property() {
         }
         let text = expand(&std::fs::read_to_string(&path).unwrap());
         let verdict = if name.ends_with(".config.toml") {
-            check_config(delta_stability::config::parse(&name, &text))
+            check_config(stability_io::config::parse(&name, &text))
         } else {
-            check(delta_stability::input::parse(&name, &text))
+            check(stability_io::input::parse(&name, &text))
         };
         if let Err(e) = verdict {
             panic!("{name}: {e}");

@@ -3,7 +3,7 @@
 //! every aircraft and keep every derived quantity far from overflow (a c.g.
 //! at h = 1e308 is finite, but its derivatives are not).
 
-use crate::diag::num;
+use stability_core::display::Num;
 
 /// A closed range [lo, hi] (or (0, hi] when `lo` is 0 and zero is excluded).
 #[derive(Debug, Clone, Copy)]
@@ -28,18 +28,18 @@ impl Limit {
             Err(format!(
                 "{} must be a finite number, not {}",
                 self.what,
-                num(x)
+                Num(x)
             ))
         } else if !above && self.lo == 0.0 && !self.lo_included {
-            Err(format!("{} must be positive, not {}", self.what, num(x)))
+            Err(format!("{} must be positive, not {}", self.what, Num(x)))
         } else if !above || x > self.hi {
             let open = if self.lo_included { '[' } else { '(' };
             Err(format!(
                 "{} must lie in {open}{}, {}], not {}",
                 self.what,
-                num(self.lo),
-                num(self.hi),
-                num(x)
+                Num(self.lo),
+                Num(self.hi),
+                Num(x)
             ))
         } else {
             Ok(x)

@@ -10,7 +10,7 @@ pub struct RawConfig {
     pub flight: Spanned<RawFlight>,
     #[serde(default)]
     pub model: Option<Spanned<RawModel>>,
-    /// The control derivatives, read by [`crate::state_space`].
+    /// The control derivatives, read by [`crate::control`].
     #[serde(default)]
     pub control: Option<toml::Value>,
 }

@@ -1,0 +1,143 @@
+//! A derivative file's response (§11) as the command line and the Python
+//! package ask for it — a step of the moment m₀ or an initial ŵ, over a
+//! span in τ — with its errors placed (at z_ẇ where the equations have no
+//! state-space form, else naming the options), and the time history as
+//! CSV.
+
+use crate::csv::number;
+use crate::diag::InputError;
+use crate::input::{DerivativeFile, rows};
+use stability_core::display::Num;
+use stability_core::response::{
+    Computed, ComputedError, Input, Request, ResponseError, Simplifications, computed,
+};
+use std::fmt::Write;
+
+/// What disturbs the aircraft.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Disturbance {
+    /// An elevon applied instantaneously: a step of the moment m₀, from
+    /// rest.
+    Step,
+    /// No input: the motion from an initial disturbance ŵ(0) = w₀.
+    Initial,
+}
+
+impl Disturbance {
+    /// `step` or `initial`, as the options name them.
+    pub fn name(self) -> &'static str {
+        match self {
+            Disturbance::Step => "step",
+            Disturbance::Initial => "initial",
+        }
+    }
+
+    /// The disturbance named `name`.
+    pub fn parse(name: &str) -> Option<Disturbance> {
+        [Disturbance::Step, Disturbance::Initial]
+            .into_iter()
+            .find(|d| d.name() == name)
+    }
+}
+
+/// A response as asked for by name (`response`'s options).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spec {
+    pub input: Disturbance,
+    /// The end time, τ units.
+    pub until: f64,
+    /// The number of intervals.
+    pub steps: usize,
+    /// The size of the moment step (eqs 2 units).
+    pub m0: f64,
+    /// The initial ŵ of `Initial`.
+    pub w0: f64,
+    pub neglect_zq_zwdot: bool,
+    pub neglect_u: bool,
+}
+
+impl Spec {
+    /// The library's request.
+    pub fn request(&self) -> Request {
+        let input = match self.input {
+            Disturbance::Step => Input::Step {
+                x0: 0.0,
+                z0: 0.0,
+                m0: self.m0,
+            },
+            Disturbance::Initial => Input::Initial {
+                u: 0.0,
+                w: self.w0,
+                q: 0.0,
+                theta: 0.0,
+            },
+        };
+        Request {
+            input,
+            until: self.until,
+            steps: self.steps,
+            simplifications: Simplifications {
+                neglect_zq_zwdot: self.neglect_zq_zwdot,
+                neglect_u: self.neglect_u,
+            },
+        }
+    }
+}
+
+/// The response of `file`'s set over the whole span asked for, or why it
+/// cannot be had.
+pub fn respond(file: &DerivativeFile, spec: &Spec) -> Result<Computed, InputError> {
+    let bad = |m: String| InputError::file(&file.path, m);
+    let (until, steps) = (Num(spec.until), spec.steps);
+    computed(&file.derivatives, &spec.request()).map_err(|e| match e {
+        ComputedError::Response(e @ ResponseError::SingularMass { .. }) => {
+            file.error_at(rows::Z_WDOT, e.to_string())
+        }
+        ComputedError::Response(
+            e @ (ResponseError::Derivatives(_) | ResponseError::MatrixOverflow),
+        ) => bad(e.to_string()),
+        ComputedError::Response(e) => bad(format!("--until {until} --steps {steps}: {e}")),
+        ComputedError::Stopped { reached, stop, .. } => bad(format!(
+            "the response stops at t̂ = {} of the {until} asked for (--until): {stop}; ask for a shorter --until",
+            Num(reached)
+        )),
+        ComputedError::ClosedFormOverflow { t, .. } => bad(format!(
+            "eq (45)'s two-degree-of-freedom response overflows f64 at t̂ = {}, before --until {until}: ask for a shorter --until",
+            Num(t)
+        )),
+    })
+}
+
+/// The CSV's columns: t̂, t in seconds when τ is known, the states, and
+/// eq (45)'s ŵ (empty for an initial disturbance).
+pub fn columns(tau: Option<f64>) -> Vec<&'static str> {
+    let mut c = vec!["t_hat"];
+    if tau.is_some() {
+        c.push("t_s");
+    }
+    c.extend(["u_hat", "w_hat", "q_hat", "theta", "w_hat_eq45"]);
+    c
+}
+
+/// The time history as CSV ([`columns`]; numbers by [`number`]).
+pub fn csv(r: &Computed, tau: Option<f64>) -> String {
+    let mut csv = columns(tau).join(",");
+    csv.push('\n');
+    for (k, s) in r.samples.iter().enumerate() {
+        let _ = write!(csv, "{}", number(s.t));
+        if let Some(t) = tau {
+            let _ = write!(csv, ",{}", number(s.t * t));
+        }
+        let eq45 = r.eq45.as_ref().map(|w| number(w[k]));
+        let _ = writeln!(
+            csv,
+            ",{},{},{},{},{}",
+            number(s.u),
+            number(s.w),
+            number(s.q),
+            number(s.theta),
+            eq45.unwrap_or_default()
+        );
+    }
+    csv
+}

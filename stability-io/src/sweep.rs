@@ -1,0 +1,401 @@
+//! A sweep as the front ends ask for it: the axes from ranges
+//! (`A:B:STEP`, a list `A,B,…`, or one value) or the base design point's
+//! values, each within its range ([`crate::limits`]); the grid with each
+//! value's text; and the rows as CSV or JSON, in the columns of
+//! [`stability_core::sweep::columns`], numbers in their shortest
+//! round-trip form.
+//!
+//! The computation is the library's ([`stability_core::sweep`]).
+
+use crate::config::physical::Physical;
+use crate::limits::{self, Limit};
+use stability_core::case::Case;
+use stability_core::display::Num;
+use stability_core::grid;
+use stability_core::sweep::{
+    Axes, ERROR_COLUMN, PointError, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Seconds, Sweep,
+    SweepError, columns, derivative_columns,
+};
+
+/// The most values one range may have.
+pub const MAX_RANGE_VALUES: usize = 10_000_000;
+
+/// Values from their text: a range `A:B:STEP` (inclusive; the values
+/// `A + k·STEP` rounded to the decimals they stand for, [`grid::grid`]), a
+/// list `A,B,…`, or a single value `A`. The message names nothing: the
+/// caller says which option or argument it was.
+pub fn parse_values(text: &str) -> Result<Vec<f64>, String> {
+    let num = |s: &str| {
+        s.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| format!("`{}` is not a finite number", crate::diag::quote(s)))
+    };
+    if text.contains(',') {
+        return text.split(',').map(num).collect();
+    }
+    let parts: Vec<&str> = text.split(':').collect();
+    match parts.as_slice() {
+        [a] => Ok(vec![num(a)?]),
+        [a, b, step] => {
+            let (a, b, step) = (num(a)?, num(b)?, num(step)?);
+            if step <= 0.0 {
+                return Err(format!("the step must be positive, not {}", Num(step)));
+            }
+            if b < a {
+                return Err(format!(
+                    "the range {}:{} runs backwards (write the smaller value first)",
+                    Num(a),
+                    Num(b)
+                ));
+            }
+            let n = ((b - a) / step).floor() + 1.0;
+            if n.is_nan() || n > MAX_RANGE_VALUES as f64 {
+                return Err("too many values: a range has at most 1e7".into());
+            }
+            Ok(grid::grid(a, b, step))
+        }
+        _ => Err(format!(
+            "expected A:B:STEP, a list A,B,… or a single value, not `{}`",
+            crate::diag::quote(text)
+        )),
+    }
+}
+
+/// `--flag: message`, the command line's form of a range's error.
+pub fn parse_range(flag: &str, text: &str) -> Result<Vec<f64>, String> {
+    parse_values(text).map_err(|e| format!("--{flag}: {e}"))
+}
+
+/// The axes as given (`None`: the base design point's value).
+#[derive(Debug, Clone, Default)]
+pub struct Given {
+    pub mach: Option<Vec<f64>>,
+    pub sweep_deg: Option<Vec<f64>>,
+    pub cg: Option<Vec<f64>>,
+    pub mu1: Option<Vec<f64>>,
+    pub i_b: Option<Vec<f64>>,
+}
+
+/// An axis's error: which axis (its index in [`Axes::NAMES`]) and why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AxisError {
+    pub axis: usize,
+    pub message: String,
+}
+
+/// Each axis's range of values, in the order of [`Axes::NAMES`] (sweep
+/// angles are any the planform allows).
+const LIMITS: [Option<&Limit>; 5] = [
+    Some(&limits::MACH),
+    None,
+    Some(&limits::CG),
+    Some(&limits::MU1),
+    Some(&limits::I_B),
+];
+
+/// Why μ₁ or i_B cannot be an axis at a physical flight condition.
+pub const FIXED_BY_FLIGHT: &str = "the config's flight condition is physical (mass, I_y, altitude…), which fixes μ₁ and i_B; vary the config's mass, I_y or altitude instead, or give mu1, i_b and cl_m2 in [flight]";
+
+/// The axes of a sweep about `base`: each given one within its range, the
+/// others the base's values (its sweep angle rounded to the decimals it
+/// stands for; the library then uses the base's own planform for it). At
+/// a physical flight condition μ₁ and i_B may not be given.
+pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError> {
+    if physical {
+        for (axis, g) in [(3, &given.mu1), (4, &given.i_b)] {
+            if g.is_some() {
+                let message = FIXED_BY_FLIGHT.to_string();
+                return Err(AxisError { axis, message });
+            }
+        }
+    }
+    let defaults = [
+        base.mach,
+        grid::round(base.planform.sweep_le.to_degrees()),
+        base.h,
+        base.mu1,
+        base.i_b,
+    ];
+    let given = [given.mach, given.sweep_deg, given.cg, given.mu1, given.i_b];
+    let mut out: [Vec<f64>; 5] = Default::default();
+    for (axis, v) in given.into_iter().enumerate() {
+        let values = v.unwrap_or_else(|| vec![defaults[axis]]);
+        if values.is_empty() {
+            let message = "the axis has no values".to_string();
+            return Err(AxisError { axis, message });
+        }
+        if let Some(limit) = LIMITS[axis] {
+            for &x in &values {
+                limit
+                    .check(x)
+                    .map_err(|message| AxisError { axis, message })?;
+            }
+        }
+        out[axis] = values;
+    }
+    let [mach, sweep_deg, cg, mu1, i_b] = out;
+    Ok(Axes {
+        mach,
+        sweep_deg,
+        cg,
+        mu1,
+        i_b,
+    })
+}
+
+/// The library's grid, and each axis's values as written (formatted once,
+/// not once per row).
+pub struct Grid {
+    pub sweep: Sweep,
+    text: [Vec<Box<str>>; 5],
+    /// At a physical flight condition, each planform's μ₁ and i_B as
+    /// written.
+    physical: Option<Vec<[Box<str>; 2]>>,
+}
+
+impl Grid {
+    /// The grid of `axes` about `base`, at its physical flight condition
+    /// when it has one.
+    pub fn new(base: Case, axes: Axes, physical: Option<&Physical>) -> Result<Grid, SweepError> {
+        let mut num = zmij::Buffer::new();
+        let mut text =
+            |v: &[f64]| -> Vec<Box<str>> { v.iter().map(|&x| num.format(x).into()).collect() };
+        let text = [
+            text(&axes.mach),
+            text(&axes.sweep_deg),
+            text(&axes.cg),
+            text(&axes.mu1),
+            text(&axes.i_b),
+        ];
+        let sweep = Sweep::new(base, axes)?;
+        let sweep = match physical {
+            Some(p) => sweep.with_flight(&p.condition)?,
+            None => sweep,
+        };
+        let mut num = zmij::Buffer::new();
+        let physical = sweep.flights().map(|fs| {
+            fs.iter()
+                .map(|f| [num.format(f.mu1()).into(), num.format(f.i_b()).into()])
+                .collect()
+        });
+        Ok(Grid {
+            sweep,
+            text,
+            physical,
+        })
+    }
+
+    /// The number of design points.
+    pub fn points(&self) -> usize {
+        self.sweep.len()
+    }
+
+    /// Whether the rows carry the modes in seconds.
+    pub fn is_physical(&self) -> bool {
+        self.physical.is_some()
+    }
+
+    /// The columns of the rows.
+    pub fn columns(&self, derivatives: bool) -> Vec<&'static str> {
+        columns(derivatives, self.is_physical())
+    }
+
+    /// The grid values as written of the point of indices `idx` (μ₁ and
+    /// i_B the planform's, with a physical flight condition).
+    fn head(&self, idx: [usize; 5]) -> [&str; 5] {
+        let mut text: [&str; 5] = std::array::from_fn(|k| &*self.text[k][idx[k]]);
+        if let Some(p) = &self.physical {
+            [text[3], text[4]] = [&p[idx[1]][0], &p[idx[1]][1]];
+        }
+        text
+    }
+
+    /// Evaluates points `range` of the grid (the library's lean path,
+    /// reusing the aerodynamics across μ₁ and i_B where the model allows)
+    /// and writes them as rows into one buffer: CSV lines, or JSON objects
+    /// separated by `,\n` (the first preceded by it too unless it is the
+    /// grid's first point).
+    pub fn rows(&self, range: std::ops::Range<usize>, format: Format) -> Vec<u8> {
+        let mut out = Vec::with_capacity(range.len() * 280);
+        let points = self.sweep.evaluate(range.clone(), format.derivatives);
+        let mut errors = points.errors.iter().peekable();
+        let indices = self.sweep.indices(range.clone());
+        for (k, (i, idx)) in range.zip(indices).enumerate() {
+            if format.json && i > 0 {
+                out.extend_from_slice(b",\n");
+            }
+            let r = match errors.peek() {
+                Some((at, e)) if *at == k => {
+                    errors.next();
+                    Err(e)
+                }
+                _ => Ok((&points, k)),
+            };
+            let seconds = self.physical.as_ref().map(|_| {
+                let point = r.is_ok().then(|| self.sweep.flight_point(i)).flatten();
+                points.seconds(k, point)
+            });
+            write_point(&mut out, self.head(idx), r, format, seconds);
+            if !format.json {
+                out.push(b'\n');
+            }
+        }
+        out
+    }
+}
+
+/// How rows are written.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Format {
+    /// JSON objects (else CSV lines).
+    pub json: bool,
+    /// With the quartic inputs ([`derivative_columns`]).
+    pub derivatives: bool,
+}
+
+/// Formats one row (CSV) or object (JSON) into a byte buffer, numbers in
+/// their shortest round-trip form.
+struct Row<'a> {
+    out: &'a mut Vec<u8>,
+    num: zmij::Buffer,
+    json: bool,
+    first: bool,
+}
+
+impl Row<'_> {
+    fn key(&mut self, name: &str) {
+        if !self.first {
+            self.out.push(b',');
+        }
+        self.first = false;
+        if self.json {
+            self.out.push(b'"');
+            self.out.extend_from_slice(name.as_bytes());
+            self.out.extend_from_slice(b"\":");
+        }
+    }
+
+    fn number(&mut self, name: &str, v: Option<f64>) {
+        self.key(name);
+        match v.filter(|x| x.is_finite()) {
+            Some(x) => self
+                .out
+                .extend_from_slice(self.num.format_finite(x).as_bytes()),
+            None if self.json => self.out.extend_from_slice(b"null"),
+            None => {}
+        }
+    }
+
+    fn word(&mut self, name: &str, w: &str) {
+        self.key(name);
+        if self.json {
+            self.out.push(b'"');
+        }
+        self.out.extend_from_slice(w.as_bytes());
+        if self.json {
+            self.out.push(b'"');
+        }
+    }
+
+    fn boolean(&mut self, name: &str, b: bool) {
+        self.key(name);
+        self.out
+            .extend_from_slice(if b { b"true" as &[u8] } else { b"false" });
+    }
+
+    fn text(&mut self, name: &str, t: &str) {
+        self.key(name);
+        if self.json {
+            let quoted = serde_json::to_string(t).unwrap_or_else(|_| "\"?\"".into());
+            self.out.extend_from_slice(quoted.as_bytes());
+        } else {
+            self.out.extend_from_slice(crate::csv::field(t).as_bytes());
+        }
+    }
+}
+
+fn write_point(
+    out: &mut Vec<u8>,
+    head: [&str; 5],
+    r: Result<(&Points, usize), &PointError>,
+    format: Format,
+    seconds: Option<Seconds>,
+) {
+    if format.json {
+        out.push(b'{');
+    }
+    let mut row = Row {
+        out,
+        num: zmij::Buffer::new(),
+        json: format.json,
+        first: true,
+    };
+    for (name, v) in Axes::NAMES.iter().zip(head) {
+        row.key(name);
+        row.out.extend_from_slice(v.as_bytes());
+    }
+    match r {
+        Ok((p, k)) => {
+            results(&mut row, p, k, format.derivatives, seconds);
+            if !format.json {
+                row.key(ERROR_COLUMN);
+            }
+        }
+        Err(e) => {
+            if !format.json {
+                let physical = seconds.is_some();
+                let n = RESULT_COLUMNS.len()
+                    + seconds.map_or(0, |s| s.len())
+                    + if format.derivatives {
+                        derivative_columns(physical).len()
+                    } else {
+                        0
+                    };
+                for _ in 0..n {
+                    row.key("");
+                }
+            }
+            row.text(ERROR_COLUMN, &e.to_string());
+        }
+    }
+    if format.json {
+        row.out.push(b'}');
+    }
+}
+
+/// Point `k`'s results: Routh, the verdict, the modes, eq (41), the modes
+/// in seconds and the derivatives when asked for.
+fn results(
+    row: &mut Row<'_>,
+    p: &Points,
+    k: usize,
+    with_derivatives: bool,
+    seconds: Option<Seconds>,
+) {
+    let some = |v: f64| Some(v);
+    row.boolean("stable", p.stable[k] == Some(true));
+    row.word("verdict", p.verdict[k].map_or("", |v| v.as_str()));
+    row.number("sp_re", some(p.sp_re[k]));
+    row.number("sp_im", some(p.sp_im[k]));
+    row.number("sp_cycles_to_half", some(p.sp_cycles_to_half[k]));
+    row.number("sp_damping_ratio", some(p.sp_damping_ratio[k]));
+    row.number("sp_omega_bar", some(p.sp_omega_bar[k]));
+    row.number("ph_re", some(p.ph_re[k]));
+    row.number("ph_im", some(p.ph_im[k]));
+    row.number("m_thetadot", some(p.m_thetadot[k]));
+    row.number("delta_m_thetadot", some(p.delta_m_thetadot[k]));
+    if let Some(values) = seconds {
+        for (name, v) in SECONDS_COLUMNS.iter().zip(values) {
+            row.number(name, v);
+        }
+    }
+    if let (true, Some(ds)) = (with_derivatives, &p.derivatives) {
+        let names = derivative_columns(seconds.is_some());
+        let values = ds[k].quartic_input_values();
+        for (name, v) in names.iter().zip(values) {
+            row.number(name, Some(v));
+        }
+    }
+}
