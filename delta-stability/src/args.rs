@@ -1,13 +1,14 @@
 //! The closed choices of the command line as clap value enums, each value
-//! with its one-line meaning in `--help`; the lists come from the library
-//! (its damping theories and notations), not restated here.
+//! with its one-line meaning in `--help`; the lists and their meanings come
+//! from the library (the registry of its damping theories and aerodynamic
+//! models, [`stability_core::theory::Row`], and its notations), not
+//! restated here.
 
 use clap::ValueEnum;
 use clap::builder::PossibleValue;
 use stability_core::aero::AeroModelName;
 use stability_core::cap::AirplaneClass;
 use stability_core::case::DampingModel;
-use stability_core::damping::Theory;
 use stability_core::display::Num;
 use stability_core::notation::Notation;
 use stability_io::input::dimensional_notation::DIMENSIONAL;
@@ -17,29 +18,6 @@ use std::sync::OnceLock;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DampingArg(pub DampingModel);
 
-/// What each theory is, in a line (the names and equations are the
-/// library's; a theory added there fails to compile here until described).
-fn theory_meaning(t: Theory) -> &'static str {
-    match t {
-        Theory::Garrick => "Garrick's low-aspect-ratio theory, incompressible",
-        Theory::GarnerTaper => "Garner's version of it for taper 1/7",
-        Theory::Slender => "Ribner's slender-wing theory",
-        Theory::Supersonic => {
-            "supersonic linear theory (M > 1): Mangler, Ribner & Malvestuto for subsonic leading edges, conical flow beyond the sonic edge"
-        }
-        Theory::Transonic => "Mangler's transonic theory at M = 1, steady",
-        Theory::TransonicFrequency => {
-            "the same with its frequency terms, ω̄ iterated to the short period's own"
-        }
-        Theory::LiftingSurface => {
-            "Multhopp–Garner and Lehrian's lifting-surface theory for any straight-tapered wing, M < 1, quasi-steady or at --omega-bar W"
-        }
-        Theory::LiftingSurfaceFrequency => {
-            "the same at the short period's own ω̄, iterated (a sweep interpolates between solved ω̄)"
-        }
-    }
-}
-
 impl ValueEnum for DampingArg {
     fn value_variants<'a>() -> &'a [Self] {
         static ALL: OnceLock<Vec<DampingArg>> = OnceLock::new();
@@ -47,27 +25,7 @@ impl ValueEnum for DampingArg {
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
-        let help = match self.0 {
-            DampingModel::Faired => {
-                "the default, the note's fairing (Figs 19–24): the lifting surface at the short period's own ω̄ to M = 0.9, Mangler's transonic theory (39)–(40) at M = 1, linear supersonic theory (36) from 1.2, joined between by stated cubics; the lift slope and aerodynamic centre from the same theories"
-                    .to_string()
-            }
-            DampingModel::FairedSlender => {
-                "the previous, quasi-steady fairing (fast: no lattice): slender-wing theory (37) through M = 1, blended into (36) by M = 1.2, (36) held at its sonic-leading-edge values beyond the sonic edge"
-                    .to_string()
-            }
-            DampingModel::Theory(t) => {
-                let eqs = if !t.equations().starts_with('(') {
-                    ""
-                } else if t.equations().contains('–') {
-                    "eqs "
-                } else {
-                    "eq "
-                };
-                format!("{}: {eqs}{}", theory_meaning(t), t.equations())
-            }
-        };
-        Some(PossibleValue::new(self.0.name()).help(help))
+        Some(PossibleValue::new(self.0.name()).help(self.0.row().help()))
     }
 }
 
@@ -98,18 +56,6 @@ impl ValueEnum for ClassArg {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AeroArg(pub AeroModelName);
 
-/// What each aerodynamic model is, in a line.
-fn aero_meaning(m: AeroModelName) -> &'static str {
-    match m {
-        AeroModelName::Default => {
-            "the default: DATCOM lift slope and a slender-to-2-D aerodynamic centre subsonic, linear conical-flow theory supersonic, faired between (docs/models.md)"
-        }
-        AeroModelName::LiftingSurface => {
-            "lift slope and aerodynamic centre from the doublet lattice, with exact Mach derivatives; subsonic only (M ≥ 1 is an error)"
-        }
-    }
-}
-
 impl ValueEnum for AeroArg {
     fn value_variants<'a>() -> &'a [Self] {
         static ALL: OnceLock<Vec<AeroArg>> = OnceLock::new();
@@ -117,7 +63,7 @@ impl ValueEnum for AeroArg {
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
-        Some(PossibleValue::new(self.0.name()).help(aero_meaning(self.0)))
+        Some(PossibleValue::new(self.0.name()).help(self.0.row().help()))
     }
 }
 
@@ -231,6 +177,7 @@ pub fn positive(s: &str) -> Result<f64, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use stability_core::damping::Theory;
 
     #[test]
     fn every_theory_of_the_library_is_a_choice() {

@@ -2,80 +2,25 @@
 //! short-period frequency requirement, the `damp()` table in seconds and
 //! the mode shapes, from the library's [`Engineering`].
 
+use crate::page::{aligned, half_or_double, root};
 use stability_core::cap::ShortPeriodFrequency;
 use stability_core::damp::Damp;
 use stability_core::display::sig;
 use stability_core::engineering::Engineering;
 use stability_core::linear::TimeUnit;
 use stability_core::mode_shape::ModeShape;
-use stability_core::modes::{Mode, ModeName, Origin};
+use stability_core::modes::Mode;
 use std::fmt::Write;
-
-/// Rows of cells as an aligned table, two spaces between columns, the
-/// first column left-aligned and the others right-aligned.
-pub fn aligned(rows: &[Vec<String>]) -> String {
-    let n = rows.iter().map(Vec::len).max().unwrap_or(0);
-    let widths: Vec<usize> = (0..n)
-        .map(|k| {
-            rows.iter()
-                .filter_map(|r| r.get(k))
-                .map(|c| c.chars().count())
-                .max()
-                .unwrap_or(0)
-        })
-        .collect();
-    let mut s = String::new();
-    for r in rows {
-        let mut line = String::from(" ");
-        for (k, c) in r.iter().enumerate() {
-            let pad = " ".repeat(widths[k] - c.chars().count());
-            if k == 0 {
-                let _ = write!(line, " {c}{pad}");
-            } else {
-                let _ = write!(line, "  {pad}{c}");
-            }
-        }
-        let _ = writeln!(s, "{}", line.trim_end());
-    }
-    s
-}
 
 fn cell(v: Option<f64>, digits: usize) -> String {
     v.map_or("—".into(), |x| sig(x, digits))
 }
 
-/// A mode's name: "short period", "phugoid", "aperiodic (sp)".
-pub fn mode_name(name: ModeName, origin: Option<Origin>) -> String {
-    match (name, origin) {
-        (ModeName::Aperiodic, Some(o)) => format!(
-            "aperiodic ({})",
-            match o {
-                Origin::ShortPeriod => "sp",
-                Origin::Phugoid => "ph",
-                Origin::Unknown => "?",
-            }
-        ),
-        _ => name.as_str().replace('_', " "),
-    }
-}
-
-fn eigenvalue(re: f64, im: f64) -> String {
-    if im > 0.0 {
-        format!("{} ± {}i", sig(re, 5), sig(im, 5))
-    } else {
-        sig(re, 5)
-    }
-}
-
 fn damp_row(m: &Mode) -> Vec<String> {
-    let (t, tag) = match (m.time_to_half, m.time_to_double) {
-        (Some(t), _) => (Some(t), ""),
-        (None, Some(t)) => (Some(t), " ×2"),
-        _ => (None, ""),
-    };
+    let (t, tag) = half_or_double(m);
     vec![
-        mode_name(m.name, m.origin),
-        eigenvalue(m.re, m.im),
+        m.label(),
+        root(m.re, m.im),
         cell(m.damping_ratio, 4),
         sig(m.natural_frequency, 4),
         cell(m.period, 4),
@@ -109,7 +54,7 @@ pub fn mode_shapes_table(shapes: &[ModeShape], time: TimeUnit) -> String {
     let header = ["mode", "|u/V|", "∠u/V", "|α|", "∠α", q, "∠q", "|θ|", "∠θ"];
     let mut rows = vec![header.map(String::from).to_vec()];
     for m in shapes {
-        let mut row = vec![mode_name(m.name, m.origin)];
+        let mut row = vec![m.name.label(m.origin)];
         for c in m.components() {
             row.push(sig(c.magnitude, 4));
             row.push(format!("{:.1}°", c.phase_deg));

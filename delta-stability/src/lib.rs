@@ -8,7 +8,6 @@ pub mod cmd;
 pub mod engineering;
 pub mod output;
 pub mod page;
-pub mod page_dimensional;
 pub mod plot;
 pub mod report;
 pub mod state_space;

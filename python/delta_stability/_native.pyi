@@ -6,7 +6,7 @@ McCarter (1953)'s."""
 from __future__ import annotations
 
 import os
-from typing import Any, ClassVar, Mapping, Optional, Sequence, Union
+from typing import Any, ClassVar, Literal, Mapping, Optional, Sequence, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -256,11 +256,30 @@ def damping_derivatives(
 ) -> dict[str, Any]:
     """The damping derivatives of a §7 theory (eqs 32–40)."""
 
-def theories() -> list[str]:
-    """The §7 damping theories."""
+#: A row of the library's registry of models: name, equations, summary,
+#: validity, supplies, source.
+ModelRow = dict[str, str]
 
-def damping_models() -> list[str]:
-    """``faired`` and the theories."""
+@overload
+def theories(*, details: Literal[False] = ...) -> list[str]: ...
+@overload
+def theories(*, details: Literal[True]) -> list[ModelRow]: ...
+def theories(*, details: bool = False) -> Union[list[str], list[ModelRow]]:
+    """The §7 damping theories (with ``details=True``, their registry rows)."""
+
+@overload
+def damping_models(*, details: Literal[False] = ...) -> list[str]: ...
+@overload
+def damping_models(*, details: Literal[True]) -> list[ModelRow]: ...
+def damping_models(*, details: bool = False) -> Union[list[str], list[ModelRow]]:
+    """``faired``, ``faired-slender`` and the theories (with ``details=True``, their registry rows)."""
+
+@overload
+def aero_models(*, details: Literal[False] = ...) -> list[str]: ...
+@overload
+def aero_models(*, details: Literal[True]) -> list[ModelRow]: ...
+def aero_models(*, details: bool = False) -> Union[list[str], list[ModelRow]]:
+    """The aerodynamic models of ``analyze(aero=…)`` (with ``details=True``, their registry rows)."""
 
 def lifting_surface(
     *,

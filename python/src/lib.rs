@@ -47,6 +47,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(theories::damping_derivatives, m)?)?;
     m.add_function(wrap_pyfunction!(theories::theories, m)?)?;
     m.add_function(wrap_pyfunction!(theories::damping_models, m)?)?;
+    m.add_function(wrap_pyfunction!(theories::aero_models, m)?)?;
     m.add_function(wrap_pyfunction!(theories::lifting_surface, m)?)?;
     m.add_function(wrap_pyfunction!(panic_for_tests, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

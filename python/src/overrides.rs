@@ -11,6 +11,7 @@ use pyo3::prelude::*;
 use stability_core::aero::AeroModelName;
 use stability_core::case::DampingModel;
 use stability_io::config::{Config, Overrides, apply};
+use stability_io::input::suggest::did_you_mean;
 
 /// The model options, as given (names not yet parsed).
 #[derive(Debug, Default, Clone, Copy)]
@@ -26,18 +27,21 @@ pub struct Model<'a> {
 
 /// The damping model named `name`.
 fn damping(name: &str) -> PyResult<DampingModel> {
-    DampingModel::parse(name)
-        .map_err(|e| argument("damping", format!("unknown damping model: {e}")))
+    DampingModel::parse(name).map_err(|e| {
+        let hint = did_you_mean(name, DampingModel::ALL.map(DampingModel::name));
+        argument("damping", format!("unknown damping model: {e}{hint}"))
+    })
 }
 
 /// The aerodynamic model named `name`.
 fn aero(name: &str) -> PyResult<AeroModelName> {
     AeroModelName::parse(name).ok_or_else(|| {
-        let names: Vec<&str> = AeroModelName::ALL.iter().map(|m| m.name()).collect();
+        let names = AeroModelName::ALL.map(AeroModelName::name);
         argument(
             "aero",
             format!(
-                "unknown aerodynamic model `{name}`; the models: {}",
+                "unknown aerodynamic model `{name}`{}; the models: {}",
+                did_you_mean(name, names),
                 names.join(", ")
             ),
         )

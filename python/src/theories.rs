@@ -7,10 +7,14 @@ use crate::json::view_to_py;
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use pyo3::types::PyList;
+use stability_core::aero::AeroModelName;
 use stability_core::case::DampingModel;
 use stability_core::damping::{Theory, WingInput, damping_derivatives as theory_derivatives};
 use stability_core::geometry::{Planform, Size, Trapezoid};
 use stability_core::lifting_surface::{Lattice, LatticeSpec};
+use stability_core::theory::Row;
+use stability_io::input::suggest::did_you_mean;
 
 /// A true or cropped delta of leading-edge sweep `sweep` (degrees) and
 /// taper `taper` (its size does not enter non-dimensional results).
@@ -24,38 +28,69 @@ fn planform(sweep: f64, taper: f64) -> PyResult<Planform> {
     })
 }
 
+/// A registry row as a dict: name, equations, summary, validity,
+/// supplies, source.
+fn rows<'py>(
+    py: Python<'py>,
+    rows: impl Iterator<Item = &'static Row>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let rows: Vec<&Row> = rows.collect();
+    view_to_py(py, &rows)
+}
+
 /// The names of the §7 damping theories (`damping_derivatives`' first
-/// argument; a config's [model] damping also takes `faired`).
+/// argument; a config's [model] damping also takes the fairings, see
+/// `damping_models()`). With `details=True`, each theory's row of the
+/// library's registry as a dict — `name`, `equations` (the report's),
+/// `summary`, `validity` (where it applies), `supplies` (what it gives the
+/// derivative set) and `source` — the same text as the command line's
+/// `--help`.
 #[pyfunction]
-pub fn theories() -> Vec<&'static str> {
-    Theory::ALL.iter().map(|t| t.name()).collect()
+#[pyo3(signature = (*, details=false))]
+pub fn theories(py: Python<'_>, details: bool) -> PyResult<Bound<'_, PyAny>> {
+    if details {
+        return rows(py, Theory::ALL.iter().map(|t| t.row()));
+    }
+    Ok(PyList::new(py, Theory::ALL.map(Theory::name))?.into_any())
 }
 
 /// The damping models a config or `analyze(…, damping=…)` takes: the
 /// fairings (`faired`, the default, through the §7 theories across Mach
-/// number as Figs 19–24; `faired-slender`) and the theories.
+/// number as Figs 19–24; `faired-slender`) and the theories. With
+/// `details=True`, each model's registry row as a dict (see `theories`).
 #[pyfunction]
-pub fn damping_models() -> Vec<&'static str> {
-    DampingModel::ALL.iter().map(|m| m.name()).collect()
+#[pyo3(signature = (*, details=false))]
+pub fn damping_models(py: Python<'_>, details: bool) -> PyResult<Bound<'_, PyAny>> {
+    if details {
+        return rows(py, DampingModel::ALL.iter().map(|m| m.row()));
+    }
+    Ok(PyList::new(py, DampingModel::ALL.map(DampingModel::name))?.into_any())
+}
+
+/// The aerodynamic models `analyze(…, aero=…)` takes (the lift slope and
+/// aerodynamic centre of eqs 25–29). With `details=True`, each model's
+/// registry row as a dict (see `theories`).
+#[pyfunction]
+#[pyo3(signature = (*, details=false))]
+pub fn aero_models(py: Python<'_>, details: bool) -> PyResult<Bound<'_, PyAny>> {
+    if details {
+        return rows(py, AeroModelName::ALL.iter().map(|m| m.row()));
+    }
+    Ok(PyList::new(py, AeroModelName::ALL.map(AeroModelName::name))?.into_any())
 }
 
 /// The damping derivatives of one §7 theory for a delta wing of
 /// leading-edge sweep `sweep` (degrees) and taper `taper`, at c.g. `cg`
 /// (h, fraction of the M.A.C. aft of its leading edge) and Mach number
-/// `mach`, in the report's notation (§3):
-///
-/// | theory | eqs | source |
-/// | `garrick` | (32)–(33) | Garrick's low-aspect-ratio theory, incompressible |
-/// | `garner-taper` | (34)–(35) | Garner's version for taper 1/7 |
-/// | `slender` | (37) | Ribner's slender-wing theory |
-/// | `supersonic` | (36) | Mangler; Ribner & Malvestuto: M > 1, subsonic leading edges |
-/// | `transonic` | (38) | Mangler's theory at M = 1, steady |
-/// | `transonic-frequency` | (39)–(40) | the same with its frequency terms (needs `omega_bar`) |
+/// `mach`, in the report's notation (§3). `theory` is one of `theories()`;
+/// `theories(details=True)` gives each one's equations, validity and what
+/// it supplies (the library's registry, as `--help` prints it).
 ///
 /// Returns a dict: theory, equations, z_q, z_wdot, m_q, m_wdot,
 /// z_thetadot = z_q + z_ẇ, m_thetadot = m_q + m_ẇ, fig18 (the functions of
 /// Fig 18 for the supersonic theory, else None) and warnings (validity
-/// limits approached). Raises InputError outside a theory's domain.
+/// limits approached). Raises InputError outside a theory's domain, and
+/// for an unknown name with the nearest valid one.
 #[pyfunction]
 #[pyo3(signature = (theory, *, sweep, mach, cg=0.25, taper=0.0, omega_bar=None))]
 pub fn damping_derivatives<'py>(
@@ -68,7 +103,10 @@ pub fn damping_derivatives<'py>(
     omega_bar: Option<f64>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
-        let t: Theory = theory.parse().map_err(|e| argument("theory", e))?;
+        let t: Theory = theory.parse().map_err(|e| {
+            let hint = did_you_mean(theory, Theory::ALL.map(Theory::name));
+            argument("theory", format!("{e}{hint}"))
+        })?;
         let wing = WingInput::from(&planform(sweep, taper)?);
         let d =
             theory_derivatives(t, &wing, cg, mach, omega_bar).map_err(|e| argument("theory", e))?;

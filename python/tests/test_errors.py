@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import delta_stability as ds
+from conftest import ROOT
 
 
 def _write(tmp_path, name, text):
@@ -108,6 +109,15 @@ def test_the_new_options_raise_as_the_cli(cli):
     with pytest.raises(ds.InputError) as e:
         ds.analyze("examples/delta-45.toml", aero="lifting-surfaces")
     assert e.value.field == "aero" and "default, lifting-surface" in e.value.message
+
+
+def test_a_misspelt_model_name_suggests_the_nearest():
+    with pytest.raises(ds.InputError, match="did you mean `lifting-surface`"):
+        ds.analyze(ROOT / "examples/delta-45.toml", damping="liftingsurface")
+    with pytest.raises(ds.InputError, match="did you mean `lifting-surface`"):
+        ds.analyze(ROOT / "examples/delta-45.toml", aero="liftingsurface")
+    with pytest.raises(ds.InputError, match="did you mean `slender`"):
+        ds.damping_derivatives("slendr", sweep=45.0, mach=0.5)
 
 
 def test_a_physical_config_s_errors(cli, tmp_path):

@@ -37,6 +37,29 @@ def test_theory_lists():
     assert "slender" in ds.theories() and "faired" not in ds.theories()
     assert ds.damping_models()[0] == "faired"
     assert "american" in ds.notations() and "avl" in ds.notations()
+    assert ds.aero_models() == ["default", "lifting-surface"]
+
+
+def test_the_registry_is_the_command_line_s(cli):
+    """One row per model, read by Python and by `--help` alike: every
+    model's summary and validity, as `details=True` gives them, is in the
+    command line's help for its name; the lists are the same."""
+    help_text = " ".join(cli.run("analyze", "--help").stdout.split())
+    for rows, names in [
+        (ds.damping_models(details=True), ds.damping_models()),
+        (ds.aero_models(details=True), ds.aero_models()),
+        (ds.theories(details=True), ds.theories()),
+    ]:
+        assert [r["name"] for r in rows] == names
+        for r in rows:
+            assert set(r) == {"name", "equations", "summary", "validity", "supplies", "source"}
+            assert all(isinstance(v, str) for v in r.values())
+            # the help wraps lines; compare with whitespace collapsed
+            assert f"- {r['name']}:" in help_text, r["name"]
+            assert " ".join(r["summary"].split()) in help_text, r["name"]
+            assert " ".join(r["validity"].split()) in help_text, r["name"]
+    eqs = {r["name"]: r["equations"] for r in ds.theories(details=True)}
+    assert eqs["garrick"] == "(32)–(33)" and eqs["slender"] == "(37)"
 
 
 def test_lifting_surface_agrees_with_avl():

@@ -12,6 +12,7 @@
 use crate::display::Num;
 use crate::geometry::Planform;
 use crate::lifting_surface::{LiftingSurfaceError, Steady, cache};
+use crate::theory::Row;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -399,11 +400,30 @@ pub enum AeroModelName {
 impl AeroModelName {
     pub const ALL: [AeroModelName; 2] = [AeroModelName::Default, AeroModelName::LiftingSurface];
 
-    pub fn name(self) -> &'static str {
+    /// The model's row of the registry ([`crate::theory::Row`]).
+    pub fn row(self) -> &'static Row {
         match self {
-            AeroModelName::Default => "default",
-            AeroModelName::LiftingSurface => "lifting-surface",
+            AeroModelName::Default => &Row {
+                name: "default",
+                equations: "",
+                summary: "the default: DATCOM lift slope and a slender-to-2-D aerodynamic centre subsonic, linear conical-flow theory supersonic, faired between (docs/models.md)",
+                validity: "any Mach number",
+                supplies: "the lift slope and aerodynamic centre with their Mach derivatives (eqs 25–29), C_D0 and K",
+                source: "USAF DATCOM; linear conical-flow theory (docs/models.md)",
+            },
+            AeroModelName::LiftingSurface => &Row {
+                name: "lifting-surface",
+                equations: "",
+                summary: "lift slope and aerodynamic centre from the doublet lattice, with exact Mach derivatives",
+                validity: "subsonic only (M ≥ 1 is an error)",
+                supplies: "the lift slope and aerodynamic centre with their Mach derivatives (eqs 25–29)",
+                source: "the doublet lattice of `lifting_surface` (Albano & Rodden 1969)",
+            },
         }
+    }
+
+    pub fn name(self) -> &'static str {
+        self.row().name
     }
 
     /// The model of this name, or `None`.

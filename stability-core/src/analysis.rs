@@ -135,33 +135,82 @@ pub struct ClassicalCheck {
     pub refinement_converged: bool,
 }
 
-/// The stability of a derivative set.
+/// The time unit of a characteristic's roots, and τ = m/(½ρSV) in seconds
+/// when it is known: what turns its rates and times into the other unit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Timebase {
+    /// Roots in 1/τ (the report's notation, eqs 2–4).
+    Tau(Option<f64>),
+    /// Roots in 1/s (a dimensional set, eqs D1–D2).
+    Seconds(Option<f64>),
+}
+
+impl Timebase {
+    /// τ in seconds, when known.
+    pub fn tau(self) -> Option<f64> {
+        match self {
+            Timebase::Tau(t) | Timebase::Seconds(t) => t,
+        }
+    }
+
+    /// The factor from the roots' unit to 1/τ, when it is known.
+    pub fn to_per_tau(self) -> Option<f64> {
+        match self {
+            Timebase::Tau(_) => Some(1.0),
+            Timebase::Seconds(t) => t,
+        }
+    }
+
+    /// The factor from the roots' unit to 1/s, when it is known.
+    pub fn to_per_second(self) -> Option<f64> {
+        match self {
+            Timebase::Tau(t) => t.map(|t| 1.0 / t),
+            Timebase::Seconds(_) => Some(1.0),
+        }
+    }
+}
+
+/// What every derivative set's analysis has, in whatever notation and
+/// units: the characteristic quartic (eq 4, or det(λE − A) of eq D2), its
+/// roots, Routh's test (§4), the modes (eq 8) and the §8 verdict.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Analysis {
+pub struct Characteristic {
     pub quartic: Quartic,
     pub routh: Routh,
-    /// The four roots (units of 1/τ), conjugates adjacent, fastest first.
+    /// The four roots, conjugates adjacent, fastest first.
     pub roots: [Complex64; 4],
     pub modes: Modes,
     /// The §8 one-cycle standard applied to the short period.
     pub verdict: Verdict,
-    pub short_period_approximation: ShortPeriodApproximation,
-    pub damping_standard: DampingStandard,
-    /// The report's eq (7), when both modes are oscillatory.
-    pub classical: Option<ClassicalCheck>,
 }
 
-impl Analysis {
-    /// Analyse a derivative set. A zero root (E = 0) is a neutral mode and
-    /// is reported as such; A = 0 is an error.
-    pub fn of(d: &Derivatives) -> Result<Analysis, AnalysisError> {
-        Analysis::with(d, true)
-    }
-
-    /// As [`Analysis::of`], without the eq (7) check (`classical` is
-    /// `None`): the lean path of a sweep.
-    pub fn without_classical(d: &Derivatives) -> Result<Analysis, AnalysisError> {
-        Analysis::with(d, false)
+impl Characteristic {
+    /// The roots, modes and verdict of `quartic`, whose coefficients are
+    /// called `names` in errors. Its leading coefficient is the caller's to
+    /// check (what A = 0 means depends on the model). `per_chord` gives the
+    /// frequency parameter ω̄ = s/`per_chord` of each mode: μ₁ for roots in
+    /// 1/τ, V/c̄ for roots in 1/s (0: undefined).
+    pub fn of(
+        quartic: Quartic,
+        names: &[&'static str; 5],
+        per_chord: f64,
+    ) -> Result<Characteristic, AnalysisError> {
+        if let Some(k) = quartic.to_array().iter().position(|c| !c.is_finite()) {
+            return Err(AnalysisError::Overflow {
+                coefficient: names[k],
+            });
+        }
+        let roots = solve_quartic(quartic.to_array())?;
+        let routh = Routh::of(&quartic);
+        agree(&routh, &roots)?;
+        let modes = Modes::identify(&roots, per_chord);
+        Ok(Characteristic {
+            quartic,
+            routh,
+            roots,
+            verdict: Verdict::of(&modes),
+            modes,
+        })
     }
 
     /// Whether every number the analysis would print is finite (absent
@@ -179,19 +228,52 @@ impl Analysis {
                 .all(|m| m.re.is_finite() && m.im.is_finite())
     }
 
-    /// The MIL-F-8785C levels of the modes, with τ (s) when known.
-    pub fn flying_qualities(&self, tau: Option<f64>) -> FlyingQualities {
+    /// The MIL-F-8785C levels of the modes (a divergent phugoid's time to
+    /// double needs seconds: the roots' own, or τ).
+    pub fn flying_qualities(&self, time: Timebase) -> FlyingQualities {
+        let tau = match time {
+            Timebase::Tau(t) => t,
+            Timebase::Seconds(_) => Some(1.0),
+        };
         FlyingQualities::of(&self.modes, tau)
+    }
+}
+
+/// The stability of a derivative set in the report's notation: its
+/// [`Characteristic`] (roots in 1/τ) and the report's own quantities of
+/// it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Analysis {
+    pub characteristic: Characteristic,
+    pub short_period_approximation: ShortPeriodApproximation,
+    pub damping_standard: DampingStandard,
+    /// The report's eq (7), when both modes are oscillatory.
+    pub classical: Option<ClassicalCheck>,
+}
+
+impl std::ops::Deref for Analysis {
+    type Target = Characteristic;
+    fn deref(&self) -> &Characteristic {
+        &self.characteristic
+    }
+}
+
+impl Analysis {
+    /// Analyse a derivative set. A zero root (E = 0) is a neutral mode and
+    /// is reported as such; A = 0 is an error.
+    pub fn of(d: &Derivatives) -> Result<Analysis, AnalysisError> {
+        Analysis::with(d, true)
+    }
+
+    /// As [`Analysis::of`], without the eq (7) check (`classical` is
+    /// `None`): the lean path of a sweep.
+    pub fn without_classical(d: &Derivatives) -> Result<Analysis, AnalysisError> {
+        Analysis::with(d, false)
     }
 
     fn with(d: &Derivatives, classical: bool) -> Result<Analysis, AnalysisError> {
         check(d)?;
         let quartic = Quartic::from_derivatives(d);
-        if let Some(k) = quartic.to_array().iter().position(|c| !c.is_finite()) {
-            return Err(AnalysisError::Overflow {
-                coefficient: Derivatives::QUARTIC_COEFFICIENTS[k],
-            });
-        }
         if quartic.a.abs() <= LEADING_COEFFICIENT_MIN {
             return Err(AnalysisError::LeadingCoefficientZero {
                 a: quartic.a,
@@ -199,37 +281,33 @@ impl Analysis {
                 mu1: d.mu1,
             });
         }
-        let roots = solve_quartic(quartic.to_array())?;
-        let routh = Routh::of(&quartic);
-        agree(&routh, &roots)?;
-        let modes = Modes::identify(&roots, d.mu1);
-        let classical = match (modes.short_period(), modes.phugoid()) {
-            _ if !classical => None,
-            (Some(sp), Some(ph)) => first_approximation(quartic.to_array()).ok().map(|c| {
-                let exact_sp = Complex64::new(sp.re, sp.im);
-                let exact_ph = Complex64::new(ph.re, ph.im);
-                let (e1, e2) = relative_errors(&c, exact_sp, exact_ph);
-                let r = refine(quartic.to_array(), &c, 500, 1e-12).ok();
-                ClassicalCheck {
-                    short_period: (c.short_period.root().re, c.short_period.root().im),
-                    phugoid: (c.phugoid.root().re, c.phugoid.root().im),
-                    short_period_error: e1,
-                    phugoid_error: e2,
-                    refinement_iterations: r.map_or(0, |r| r.iterations),
-                    refinement_converged: r.is_some_and(|r| r.converged),
-                }
-            }),
-            _ => None,
-        };
+        let c = Characteristic::of(quartic, &Derivatives::QUARTIC_COEFFICIENTS, d.mu1)?;
+        let classical = if classical { classical_check(&c) } else { None };
         Ok(Analysis {
-            quartic,
-            routh,
-            roots,
-            verdict: Verdict::of(&modes),
-            modes,
+            characteristic: c,
             classical,
             short_period_approximation: ShortPeriodApproximation::of(d),
             damping_standard: DampingStandard::of(d),
         })
     }
+}
+
+/// The report's eq (7) and its refinement against the exact roots, when
+/// both modes oscillate.
+fn classical_check(c: &Characteristic) -> Option<ClassicalCheck> {
+    let (sp, ph) = (c.modes.short_period()?, c.modes.phugoid()?);
+    let q = c.quartic.to_array();
+    let first = first_approximation(q).ok()?;
+    let exact_sp = Complex64::new(sp.re, sp.im);
+    let exact_ph = Complex64::new(ph.re, ph.im);
+    let (e1, e2) = relative_errors(&first, exact_sp, exact_ph);
+    let r = refine(q, &first, 500, 1e-12).ok();
+    Some(ClassicalCheck {
+        short_period: (first.short_period.root().re, first.short_period.root().im),
+        phugoid: (first.phugoid.root().re, first.phugoid.root().im),
+        short_period_error: e1,
+        phugoid_error: e2,
+        refinement_iterations: r.map_or(0, |r| r.iterations),
+        refinement_converged: r.is_some_and(|r| r.converged),
+    })
 }

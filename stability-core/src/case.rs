@@ -24,6 +24,7 @@ use crate::faired;
 use crate::geometry::Planform;
 use crate::lifting_surface::Harmonic;
 use crate::stiffness::{Stiffness, stiffness};
+use crate::theory::Row;
 use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
 
@@ -90,19 +91,26 @@ impl DampingModel {
     }
 
     /// Every model: the two fairings, then the theories (in the order of
-    /// [`Theory::ALL`]; a test checks that none is missing).
-    pub const ALL: [DampingModel; 2 + Theory::ALL.len()] = [
-        DampingModel::Faired,
-        DampingModel::FairedSlender,
-        DampingModel::Theory(Theory::ALL[0]),
-        DampingModel::Theory(Theory::ALL[1]),
-        DampingModel::Theory(Theory::ALL[2]),
-        DampingModel::Theory(Theory::ALL[3]),
-        DampingModel::Theory(Theory::ALL[4]),
-        DampingModel::Theory(Theory::ALL[5]),
-        DampingModel::Theory(Theory::ALL[6]),
-        DampingModel::Theory(Theory::ALL[7]),
-    ];
+    /// [`Theory::ALL`]).
+    pub const ALL: [DampingModel; 2 + Theory::ALL.len()] = {
+        let mut out = [DampingModel::Faired; 2 + Theory::ALL.len()];
+        out[1] = DampingModel::FairedSlender;
+        let mut i = 0;
+        while i < Theory::ALL.len() {
+            out[2 + i] = DampingModel::Theory(Theory::ALL[i]);
+            i += 1;
+        }
+        out
+    };
+
+    /// The model's row of the registry ([`crate::theory`]).
+    pub fn row(self) -> &'static Row {
+        match self {
+            DampingModel::Theory(t) => t.row(),
+            DampingModel::Faired => &FAIRED,
+            DampingModel::FairedSlender => &FAIRED_SLENDER,
+        }
+    }
 
     /// Whether the model takes a frequency parameter ω̄ at all
     /// ([`Theory::takes_omega_bar`]).
@@ -115,19 +123,14 @@ impl DampingModel {
     }
 
     pub fn name(self) -> &'static str {
-        match self {
-            DampingModel::Theory(t) => t.name(),
-            DampingModel::Faired => "faired",
-            DampingModel::FairedSlender => "faired-slender",
-        }
+        self.row().name
     }
 
     /// `faired`, `faired-slender` or a theory's name.
     pub fn parse(s: &str) -> Result<Self, UnknownDampingModel> {
-        match s {
-            "faired" => Ok(DampingModel::Faired),
-            "faired-slender" => Ok(DampingModel::FairedSlender),
-            _ => Ok(DampingModel::Theory(s.parse::<Theory>()?)),
+        match DampingModel::ALL.into_iter().find(|m| m.name() == s) {
+            Some(m) => Ok(m),
+            None => Err(UnknownDampingModel(s.parse::<Theory>().unwrap_err())),
         }
     }
 
@@ -149,6 +152,26 @@ impl DampingModel {
         }
     }
 }
+
+/// The note's fairing: the default model.
+const FAIRED: Row = Row {
+    name: "faired",
+    equations: "Figs 19–24",
+    summary: "the default, the note's fairing: the lifting surface at the short period's own ω̄ to M = 0.9, Mangler's transonic theory (39)–(40) at M = 1, linear supersonic theory (36) from 1.2, joined between by stated cubics; the lift slope and aerodynamic centre from the same theories",
+    validity: "any Mach number; true and cropped deltas",
+    supplies: "z_q, z_ẇ, m_q, m_ẇ, the lift slope and the aerodynamic centre",
+    source: "the note's Figs 19–24 (docs/damping-theories.md, \"The faired model\")",
+};
+
+/// The previous, quasi-steady fairing.
+const FAIRED_SLENDER: Row = Row {
+    name: "faired-slender",
+    equations: "(37), (36)",
+    summary: "the previous, quasi-steady fairing (fast: no lattice): slender-wing theory (37) through M = 1, blended into (36) by M = 1.2, (36) held at its sonic-leading-edge values beyond the sonic edge",
+    validity: "any Mach number; true and cropped deltas",
+    supplies: "z_q, z_ẇ, m_q, m_ẇ",
+    source: "Ribner (NACA TN 1423); Mangler; Ribner & Malvestuto (NACA Rep. 908)",
+};
 
 /// A damping model's name that is neither a fairing's nor a theory's.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

@@ -5,16 +5,8 @@
 //! `docs/damping-theories.md` gives each formula as printed, as recovered,
 //! and the evidence.
 //!
-//! | theory | eqs | source |
-//! | --- | --- | --- |
-//! | `garrick` | (32)–(33) | I.E. Garrick's low-aspect-ratio theory (after R.T. Jones), incompressible |
-//! | `garner-taper` | (34)–(35) | H.C. Garner's taper-1/7 version of the same theory |
-//! | `slender` | (37) | H.S. Ribner, slender-wing theory, NACA TN 1423 (1947) |
-//! | `supersonic` | (36) | K.W. Mangler; H.S. Ribner & F.S. Malvestuto, NACA Rep. 908 (1948): subsonic leading edges; beyond, linear theory for supersonic leading edges ([`supersonic`]) |
-//! | `transonic` | (38) | K.W. Mangler's low-frequency theory at M = 1, steady |
-//! | `transonic-frequency` | (39)–(40) | the same, with the frequency-dependent terms |
-//! | `lifting-surface` | §7 | lifting-surface theory (Multhopp–Garner, Lehrian) as a doublet lattice ([`crate::lifting_surface`]): any straight-tapered wing, 0 ≤ M < 1, quasi-steady or at a given ω̄ |
-//! | `lifting-surface-frequency` | §7 | the same at the short period's own ω̄ |
+//! The theories, with their equations, validity and sources, are the
+//! registry of [`crate::theory`].
 
 pub use crate::derivatives::DampingDerivatives;
 pub use crate::supersonic::eq36::{Fig18, eq36};

@@ -14,12 +14,12 @@
 //! pins them, and the values, against the command line's output as it was
 //! assembled by hand.
 
-use crate::analysis::{Analysis, ClassicalCheck};
+use crate::analysis::{Analysis, Characteristic, ClassicalCheck, Timebase};
 use crate::case::{Case, CaseResult};
 use crate::criteria::{
     DampingStandard, FlyingQualities, Margins, ShortPeriodApproximation, Verdict,
 };
-use crate::modes::Mode;
+use crate::modes::{Mode, ModeName, ModeTimes, Origin};
 use crate::{Derivatives, Quartic};
 use num_complex::Complex64;
 use serde::{Serialize, Serializer};
@@ -57,50 +57,68 @@ impl Serialize for Timed<'_> {
     }
 }
 
-/// The analysis object, shared by [`Timed`] and [`CaseView`] (which adds
-/// the margins to `criteria`).
+/// A report-notation analysis: its characteristic, the criteria with the
+/// report's quantities, and eq (7); shared by [`Timed`] and [`CaseView`]
+/// (which adds the margins to `criteria`).
 #[derive(Serialize)]
 struct AnalysisJson<'a> {
-    coefficients: &'a Quartic,
-    routh_discriminant: f64,
-    stable: bool,
-    roots: [RootJson; 4],
-    modes: ModesJson<'a>,
-    tau_s: Option<f64>,
+    #[serde(flatten)]
+    characteristic: CharacteristicJson<'a>,
     criteria: CriteriaJson<'a>,
     classical_eq7: &'a Option<ClassicalCheck>,
 }
 
 impl<'a> AnalysisJson<'a> {
     fn new(a: &'a Analysis, tau: Option<f64>, margins: Option<Margins>) -> Self {
+        let time = Timebase::Tau(tau);
         AnalysisJson {
-            coefficients: &a.quartic,
-            routh_discriminant: a.routh.discriminant,
-            stable: a.routh.stable,
-            roots: a.roots.map(|z| RootJson::new(z, tau)),
-            modes: ModesJson {
-                modes: &a.modes,
-                tau,
-            },
-            tau_s: tau,
+            characteristic: CharacteristicJson::new(a, time),
             criteria: CriteriaJson {
-                one_cycle_standard_met: a.verdict.is_met(),
-                verdict: a.verdict,
-                short_period_approximation: &a.short_period_approximation,
-                damping_standard: &a.damping_standard,
-                mil_f_8785c: a.flying_qualities(tau),
                 margins,
+                ..CriteriaJson::new(a, time).with_report(
+                    Some(&a.short_period_approximation),
+                    Some(&a.damping_standard),
+                )
             },
             classical_eq7: &a.classical,
         }
     }
 }
 
-/// A root, `{re, im}` in 1/τ, and `{re_s, im_s}` in 1/s when τ is known.
+/// A characteristic's keys, whatever the notation: the coefficients,
+/// Routh's discriminant and verdict, the roots and modes in their unit and
+/// in the other where τ converts them, and τ.
+#[derive(Serialize)]
+pub(crate) struct CharacteristicJson<'a> {
+    coefficients: &'a Quartic,
+    routh_discriminant: f64,
+    stable: bool,
+    roots: [RootJson; 4],
+    modes: Vec<TimedMode>,
+    tau_s: Option<f64>,
+}
+
+impl<'a> CharacteristicJson<'a> {
+    pub(crate) fn new(c: &'a Characteristic, time: Timebase) -> Self {
+        CharacteristicJson {
+            coefficients: &c.quartic,
+            routh_discriminant: c.routh.discriminant,
+            stable: c.routh.stable,
+            roots: c.roots.map(|z| RootJson::new(z, time)),
+            modes: c.modes.iter().map(|m| m.in_timebase(time)).collect(),
+            tau_s: time.tau(),
+        }
+    }
+}
+
+/// A root, `{re, im}` in 1/τ and `{re_s, im_s}` in 1/s, each pair where
+/// it is known.
 #[derive(Serialize)]
 struct RootJson {
-    re: f64,
-    im: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    re: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    im: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     re_s: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -108,77 +126,122 @@ struct RootJson {
 }
 
 impl RootJson {
-    fn new(z: Complex64, tau: Option<f64>) -> Self {
+    fn new(z: Complex64, time: Timebase) -> Self {
+        let (tau, seconds) = match time {
+            Timebase::Tau(t) => (Some(z), t.map(|t| z / t)),
+            Timebase::Seconds(t) => (t.map(|t| z * t), Some(z)),
+        };
         RootJson {
-            re: z.re,
-            im: z.im,
-            re_s: tau.map(|t| z.re / t),
-            im_s: tau.map(|t| z.im / t),
+            re: tau.map(|z| z.re),
+            im: tau.map(|z| z.im),
+            re_s: seconds.map(|z| z.re),
+            im_s: seconds.map(|z| z.im),
         }
     }
 }
 
-struct ModesJson<'a> {
-    modes: &'a [Mode],
-    tau: Option<f64>,
-}
-
-impl Serialize for ModesJson<'_> {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.collect_seq(self.modes.iter().map(|m| m.timed(self.tau)))
-    }
-}
-
-/// A mode with τ (s): its own keys (τ units) and, when τ is known, the
-/// same times in seconds under `_s` names.
+/// A mode with its rates and times in 1/τ and τ, and in 1/s and s, each
+/// set where it is known (the dimensionless quantities in both).
 #[derive(Debug, Clone, Copy, Serialize)]
-pub struct TimedMode<'a> {
+pub struct TimedMode {
+    name: ModeName,
+    origin: Option<Origin>,
     #[serde(flatten)]
-    pub mode: &'a Mode,
+    tau: Option<ModeTimes>,
+    cycles_to_half: Option<f64>,
+    cycles_to_double: Option<f64>,
+    damping_ratio: Option<f64>,
+    frequency_parameter: Option<f64>,
     #[serde(flatten)]
-    pub seconds: Option<ModeSecondsJson>,
+    seconds: Option<InSeconds>,
 }
 
-/// A mode's times in seconds and rates in 1/s, named as in the JSON.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct ModeSecondsJson {
-    pub period_s: Option<f64>,
-    pub time_to_half_s: Option<f64>,
-    pub time_to_double_s: Option<f64>,
-    pub re_s: f64,
-    pub im_s: f64,
-    pub natural_frequency_s: f64,
+/// A mode's rates in 1/s and times in s: [`ModeTimes`] under the `_s`
+/// names of the JSON (`period_s`, `time_to_half_s`, `time_to_double_s`,
+/// `re_s`, `im_s`, `natural_frequency_s`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct InSeconds(pub ModeTimes);
+
+impl Serialize for InSeconds {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let t = &self.0;
+        let mut map = s.serialize_map(Some(6))?;
+        map.serialize_entry("period_s", &t.period)?;
+        map.serialize_entry("time_to_half_s", &t.time_to_half)?;
+        map.serialize_entry("time_to_double_s", &t.time_to_double)?;
+        map.serialize_entry("re_s", &t.re)?;
+        map.serialize_entry("im_s", &t.im)?;
+        map.serialize_entry("natural_frequency_s", &t.natural_frequency)?;
+        map.end()
+    }
 }
 
 impl Mode {
-    /// This mode with τ (s), for JSON.
-    pub fn timed(&self, tau: Option<f64>) -> TimedMode<'_> {
+    /// This mode (in 1/τ) with τ (s), for JSON.
+    pub fn timed(&self, tau: Option<f64>) -> TimedMode {
+        self.in_timebase(Timebase::Tau(tau))
+    }
+
+    /// This mode, in the unit of `time`, for JSON: its keys in τ and in
+    /// seconds where they are known.
+    pub fn in_timebase(&self, time: Timebase) -> TimedMode {
+        let own = self.times();
+        let (tau, seconds) = match time {
+            Timebase::Tau(t) => (Some(own), t.map(|t| own.in_units_of(t))),
+            Timebase::Seconds(t) => (t.map(|t| own.in_units_of(1.0 / t)), Some(own)),
+        };
         TimedMode {
-            mode: self,
-            seconds: tau.map(|t| {
-                let s = self.in_seconds(t);
-                ModeSecondsJson {
-                    period_s: s.period,
-                    time_to_half_s: s.time_to_half,
-                    time_to_double_s: s.time_to_double,
-                    re_s: s.re,
-                    im_s: s.im,
-                    natural_frequency_s: s.natural_frequency,
-                }
-            }),
+            name: self.name,
+            origin: self.origin,
+            tau,
+            cycles_to_half: self.cycles_to_half,
+            cycles_to_double: self.cycles_to_double,
+            damping_ratio: self.damping_ratio,
+            frequency_parameter: self.frequency_parameter,
+            seconds: seconds.map(InSeconds),
         }
     }
 }
 
+/// The criteria: the §8 standard, the MIL-F-8785C levels, and the
+/// report's own quantities where the set is in (or has) its notation.
 #[derive(Serialize)]
-struct CriteriaJson<'a> {
+pub(crate) struct CriteriaJson<'a> {
     one_cycle_standard_met: bool,
     verdict: Verdict,
-    short_period_approximation: &'a ShortPeriodApproximation,
-    damping_standard: &'a DampingStandard,
+    short_period_approximation: Option<&'a ShortPeriodApproximation>,
+    damping_standard: Option<&'a DampingStandard>,
     mil_f_8785c: FlyingQualities,
     #[serde(skip_serializing_if = "Option::is_none")]
     margins: Option<Margins>,
+}
+
+impl<'a> CriteriaJson<'a> {
+    /// The criteria of `c` in `time`, without the report's quantities.
+    pub(crate) fn new(c: &Characteristic, time: Timebase) -> Self {
+        CriteriaJson {
+            one_cycle_standard_met: c.verdict.is_met(),
+            verdict: c.verdict,
+            short_period_approximation: None,
+            damping_standard: None,
+            mil_f_8785c: c.flying_qualities(time),
+            margins: None,
+        }
+    }
+
+    /// With the report's §8–9 quantities of the set.
+    pub(crate) fn with_report(
+        self,
+        approximation: Option<&'a ShortPeriodApproximation>,
+        standard: Option<&'a DampingStandard>,
+    ) -> Self {
+        CriteriaJson {
+            short_period_approximation: approximation,
+            damping_standard: standard,
+            ..self
+        }
+    }
 }
 
 /// A design point's result with its case: serializes as the

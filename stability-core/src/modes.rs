@@ -152,28 +152,49 @@ impl Mode {
         self.re > 0.0
     }
 
-    /// The same mode with times in seconds, given τ in seconds.
-    pub fn in_seconds(&self, tau: f64) -> ModeSeconds {
-        ModeSeconds {
-            re: self.re / tau,
-            im: self.im / tau,
-            period: self.period.map(|p| p * tau),
-            time_to_half: self.time_to_half.map(|t| t * tau),
-            time_to_double: self.time_to_double.map(|t| t * tau),
-            natural_frequency: self.natural_frequency / tau,
+    /// The mode's rates and times, in its own unit.
+    pub fn times(&self) -> ModeTimes {
+        ModeTimes {
+            re: self.re,
+            im: self.im,
+            period: self.period,
+            time_to_half: self.time_to_half,
+            time_to_double: self.time_to_double,
+            natural_frequency: self.natural_frequency,
         }
+    }
+
+    /// The same mode's rates and times in seconds, given τ in seconds.
+    pub fn in_seconds(&self, tau: f64) -> ModeTimes {
+        self.times().in_units_of(tau)
     }
 }
 
-/// A mode's dimensional quantities (seconds, 1/s).
+/// A mode's rates and times in one unit of time: 1/τ and τ, or 1/s and s.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct ModeSeconds {
+pub struct ModeTimes {
     pub re: f64,
     pub im: f64,
     pub period: Option<f64>,
     pub time_to_half: Option<f64>,
     pub time_to_double: Option<f64>,
     pub natural_frequency: f64,
+}
+
+impl ModeTimes {
+    /// The same in a unit of time `unit` times the present one long (τ in
+    /// seconds turns τ units into seconds; 1/τ turns seconds into τ):
+    /// rates divided by it, times multiplied.
+    pub fn in_units_of(self, unit: f64) -> ModeTimes {
+        ModeTimes {
+            re: self.re / unit,
+            im: self.im / unit,
+            period: self.period.map(|p| p * unit),
+            time_to_half: self.time_to_half.map(|t| t * unit),
+            time_to_double: self.time_to_double.map(|t| t * unit),
+            natural_frequency: self.natural_frequency / unit,
+        }
+    }
 }
 
 /// |λ| as √(re² + im²), within an ulp of `hypot` at a fraction of its

@@ -158,8 +158,8 @@ fn analyze_json() {
 #[test]
 fn non_finite_numbers_are_null() {
     let mut a = Analysis::of(&tailless_delta_45()).unwrap();
-    a.routh.discriminant = f64::INFINITY;
-    a.roots[0].re = f64::NAN;
+    a.characteristic.routh.discriminant = f64::INFINITY;
+    a.characteristic.roots[0].re = f64::NAN;
     let v = serde_json::to_value(&a).unwrap();
     assert_eq!(v["routh_discriminant"], Value::Null);
     assert_eq!(v["roots"][0]["re"], Value::Null);

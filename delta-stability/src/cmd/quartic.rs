@@ -115,7 +115,7 @@ fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> 
         "Stability quartic of {} (notation \"dimensional\": the general longitudinal model, eqs D1–D2)",
         input.path
     );
-    let mut page = crate::page_dimensional::page(&title, &a);
+    let mut page = crate::page::dimensional_page(&title, &a);
     if let Some(f) = &engineering.short_period_frequency {
         page.push_str(&crate::engineering::frequency_line(f));
         page.push('\n');

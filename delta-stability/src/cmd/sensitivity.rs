@@ -9,8 +9,8 @@
 //! |p·∂r/∂p|, the first-order change of r if p doubled.
 
 use crate::Failure;
-use crate::engineering::aligned;
 use crate::output::print;
+use crate::page::{aligned, root};
 use stability_core::display::sig;
 use stability_io::input;
 use stability_io::views::SensitivityJson;
@@ -54,11 +54,7 @@ fn page(out: &SensitivityJson<'_>) -> String {
         "1/τ"
     };
     for m in &out.modes {
-        let root = if m.im > 0.0 {
-            format!("{} ± {}i", sig(m.re, 5), sig(m.im, 5))
-        } else {
-            sig(m.re, 5)
-        };
+        let root = root(m.re, m.im);
         let _ = writeln!(
             s,
             "\n{}, λ = {root} (1/τ); rates in {unit}; ranked by |p·∂r/∂p|:",

@@ -5,13 +5,9 @@
 //! notation and its §8–9 quantities (m_θ̇, eq 41).
 
 use super::{Axes, DimensionalModel, Reference, ReportEquivalent, THETA0_MAX};
-use crate::Quartic;
-use crate::analysis::{AnalysisError, LEADING_COEFFICIENT_MIN, agree};
-use crate::criteria::{DampingStandard, FlyingQualities, Routh, ShortPeriodApproximation, Verdict};
+use crate::analysis::{AnalysisError, Characteristic, LEADING_COEFFICIENT_MIN, Timebase};
+use crate::criteria::{DampingStandard, FlyingQualities, ShortPeriodApproximation};
 use crate::display::Num;
-use crate::modes::Modes;
-use crate::roots::solve_quartic;
-use num_complex::Complex64;
 
 /// Why a dimensional set has no analysis. `input` is the file's name of
 /// the value at fault (`X_u`, `U0`, `theta0`, `chord`, …).
@@ -36,11 +32,6 @@ pub enum DimensionalError {
         Num(*a), Num(LEADING_COEFFICIENT_MIN)
     )]
     Singular { a: f64 },
-    #[error(
-        "the quartic's coefficient {coefficient} overflows f64 (its terms exceed {}): the derivatives are too large",
-        Num(f64::MAX)
-    )]
-    Overflow { coefficient: &'static str },
     #[error(transparent)]
     Analysis(#[from] AnalysisError),
 }
@@ -98,28 +89,29 @@ pub struct InReportNotation {
     pub damping_standard: DampingStandard,
 }
 
-/// The stability of a dimensional set; rates in 1/s, times in s.
+/// The stability of a dimensional set: its [`Characteristic`] with roots
+/// in 1/s and times in s (the modes' `frequency_parameter` ω̄ = s·c̄/V when
+/// a [`Reference`] gives c̄), and the set's own quantities.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DimensionalAnalysis {
     /// The set as given.
     pub model: DimensionalModel,
     /// The same set in stability axes (the model itself if it is in them).
     pub stability: DimensionalModel,
-    /// det(λE − A) = Aλ⁴ + Bλ³ + Cλ² + Dλ + E (eq D2), λ in 1/s.
-    pub quartic: Quartic,
-    pub routh: Routh,
-    /// The four roots (1/s), conjugates adjacent, fastest first.
-    pub roots: [Complex64; 4],
-    /// The modes: `re`, `im`, `natural_frequency` in 1/s, `period`,
-    /// `time_to_half`, `time_to_double` in s; `frequency_parameter`
-    /// ω̄ = s·c̄/V when a [`Reference`] gives c̄.
-    pub modes: Modes,
-    /// The §8 one-cycle standard applied to the short period.
-    pub verdict: Verdict,
+    /// det(λE − A) = Aλ⁴ + Bλ³ + Cλ² + Dλ + E (eq D2), λ in 1/s, and what
+    /// follows from it.
+    pub characteristic: Characteristic,
     /// The MIL-F-8785C levels (times in s).
     pub flying_qualities: FlyingQualities,
     /// With a [`Reference`]: the set in the report's notation.
     pub report: Option<InReportNotation>,
+}
+
+impl std::ops::Deref for DimensionalAnalysis {
+    type Target = Characteristic;
+    fn deref(&self) -> &Characteristic {
+        &self.characteristic
+    }
 }
 
 impl DimensionalAnalysis {
@@ -134,38 +126,32 @@ impl DimensionalAnalysis {
             r.check()?;
         }
         let quartic = model.quartic();
-        if let Some(k) = quartic.to_array().iter().position(|c| !c.is_finite()) {
-            return Err(DimensionalError::Overflow {
-                coefficient: super::DescriptorSystem::QUARTIC_COEFFICIENTS[k],
-            });
-        }
         if quartic.a.abs() <= LEADING_COEFFICIENT_MIN {
             return Err(DimensionalError::Singular { a: quartic.a });
         }
-        let roots = solve_quartic(quartic.to_array()).map_err(AnalysisError::from)?;
-        let routh = Routh::of(&quartic);
-        agree(&routh, &roots)?;
         let stability = model.in_stability_axes();
-        let report = reference.map(|r| in_report_notation(model, r));
         // ω̄ = s·c̄/V: Modes divides s by its "μ₁", here V/c̄.
         let per_chord = reference.map_or(0.0, |r| stability.trim.u0 / r.chord);
-        let modes = Modes::identify(&roots, per_chord);
+        let names = &super::DescriptorSystem::QUARTIC_COEFFICIENTS;
+        let characteristic = Characteristic::of(quartic, names, per_chord)?;
+        let time = Timebase::Seconds(None);
         Ok(DimensionalAnalysis {
             model: *model,
             stability,
-            quartic,
-            routh,
-            roots,
-            verdict: Verdict::of(&modes),
-            flying_qualities: FlyingQualities::of(&modes, Some(1.0)),
-            modes,
-            report,
+            flying_qualities: characteristic.flying_qualities(time),
+            characteristic,
+            report: reference.map(|r| in_report_notation(model, r)),
         })
     }
 
     /// τ (s) of the report's notation, when a reference gives it.
     pub fn tau(&self) -> Option<f64> {
         self.report.map(|r| r.equivalent.tau)
+    }
+
+    /// The roots' unit (1/s) and τ when known.
+    pub fn timebase(&self) -> Timebase {
+        Timebase::Seconds(self.tau())
     }
 }
 

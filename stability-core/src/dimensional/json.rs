@@ -10,10 +10,8 @@
 
 use super::analysis::{DimensionalAnalysis, InReportNotation};
 use super::{Axes, DimensionalDerivatives, DimensionalModel, Dropped, Reference, Units};
-use crate::criteria::{DampingStandard, FlyingQualities, ShortPeriodApproximation, Verdict};
-use crate::modes::{Mode, ModeName, Origin};
-use crate::{Derivatives, Quartic};
-use num_complex::Complex64;
+use crate::Derivatives;
+use crate::json::{CharacteristicJson, CriteriaJson};
 use serde::ser::SerializeMap;
 use serde::{Serialize, Serializer};
 
@@ -66,96 +64,6 @@ impl Serialize for DimensionalModel {
     }
 }
 
-/// A root in 1/s, and in 1/τ when τ is known.
-#[derive(Serialize)]
-struct RootJson {
-    re_s: f64,
-    im_s: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    re: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    im: Option<f64>,
-}
-
-impl RootJson {
-    fn new(z: Complex64, tau: Option<f64>) -> Self {
-        RootJson {
-            re_s: z.re,
-            im_s: z.im,
-            re: tau.map(|t| z.re * t),
-            im: tau.map(|t| z.im * t),
-        }
-    }
-}
-
-/// A mode (computed in seconds) with the keys of the report notation's
-/// JSON: the `_s` ones always, the τ-unit ones when τ is known.
-#[derive(Serialize)]
-struct ModeJson {
-    name: ModeName,
-    origin: Option<Origin>,
-    re_s: f64,
-    im_s: f64,
-    period_s: Option<f64>,
-    time_to_half_s: Option<f64>,
-    time_to_double_s: Option<f64>,
-    cycles_to_half: Option<f64>,
-    cycles_to_double: Option<f64>,
-    damping_ratio: Option<f64>,
-    natural_frequency_s: f64,
-    frequency_parameter: Option<f64>,
-    #[serde(flatten)]
-    in_tau: Option<ModeTauJson>,
-}
-
-/// A mode's rates in 1/τ and times in τ.
-#[derive(Serialize)]
-struct ModeTauJson {
-    re: f64,
-    im: f64,
-    period: Option<f64>,
-    time_to_half: Option<f64>,
-    time_to_double: Option<f64>,
-    natural_frequency: f64,
-}
-
-impl ModeJson {
-    fn new(m: &Mode, tau: Option<f64>) -> Self {
-        ModeJson {
-            name: m.name,
-            origin: m.origin,
-            re_s: m.re,
-            im_s: m.im,
-            period_s: m.period,
-            time_to_half_s: m.time_to_half,
-            time_to_double_s: m.time_to_double,
-            cycles_to_half: m.cycles_to_half,
-            cycles_to_double: m.cycles_to_double,
-            damping_ratio: m.damping_ratio,
-            natural_frequency_s: m.natural_frequency,
-            frequency_parameter: m.frequency_parameter,
-            in_tau: tau.map(|t| ModeTauJson {
-                re: m.re * t,
-                im: m.im * t,
-                period: m.period.map(|p| p / t),
-                time_to_half: m.time_to_half.map(|p| p / t),
-                time_to_double: m.time_to_double.map(|p| p / t),
-                natural_frequency: m.natural_frequency * t,
-            }),
-        }
-    }
-}
-
-#[derive(Serialize)]
-struct CriteriaJson<'a> {
-    one_cycle_standard_met: bool,
-    verdict: Verdict,
-    mil_f_8785c: &'a FlyingQualities,
-    /// From the set in the report's notation (with a reference).
-    short_period_approximation: Option<&'a ShortPeriodApproximation>,
-    damping_standard: Option<&'a DampingStandard>,
-}
-
 /// The set in the report's notation, and what eq (4) could not hold.
 #[derive(Serialize)]
 struct ReportJson<'a> {
@@ -185,12 +93,8 @@ struct AnalysisJson<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     stability_axes: Option<&'a DimensionalModel>,
     polynomial: &'static str,
-    coefficients: &'a Quartic,
-    routh_discriminant: f64,
-    stable: bool,
-    roots: [RootJson; 4],
-    modes: Vec<ModeJson>,
-    tau_s: Option<f64>,
+    #[serde(flatten)]
+    characteristic: CharacteristicJson<'a>,
     criteria: CriteriaJson<'a>,
     report: Option<ReportJson<'a>>,
 }
@@ -200,25 +104,17 @@ pub const POLYNOMIAL: &str = "det(λE − A) = A λ⁴ + B λ³ + C λ² + D λ 
 
 impl Serialize for DimensionalAnalysis {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let tau = self.tau();
+        let time = self.timebase();
         let report = self.report.as_ref();
         AnalysisJson {
             model: &self.model,
             stability_axes: (self.model.axes == Axes::Body).then_some(&self.stability),
             polynomial: POLYNOMIAL,
-            coefficients: &self.quartic,
-            routh_discriminant: self.routh.discriminant,
-            stable: self.routh.stable,
-            roots: self.roots.map(|z| RootJson::new(z, tau)),
-            modes: self.modes.iter().map(|m| ModeJson::new(m, tau)).collect(),
-            tau_s: tau,
-            criteria: CriteriaJson {
-                one_cycle_standard_met: self.verdict.is_met(),
-                verdict: self.verdict,
-                mil_f_8785c: &self.flying_qualities,
-                short_period_approximation: report.map(|r| &r.short_period_approximation),
-                damping_standard: report.map(|r| &r.damping_standard),
-            },
+            characteristic: CharacteristicJson::new(self, time),
+            criteria: CriteriaJson::new(self, time).with_report(
+                report.map(|r| &r.short_period_approximation),
+                report.map(|r| &r.damping_standard),
+            ),
             report: report.map(ReportJson::new),
         }
         .serialize(s)
