@@ -5,6 +5,7 @@
 use crate::classical::{first_approximation, refine, relative_errors};
 use crate::criteria::{DampingStandard, FlyingQualities, Routh, ShortPeriodApproximation, Verdict};
 use crate::display::Num;
+use crate::invalid::{self, Invalid};
 use crate::modes::Modes;
 use crate::roots::{RootsError, solve_quartic};
 use crate::{Derivatives, Quartic};
@@ -14,10 +15,8 @@ use serde::Serialize;
 /// Why a derivative set has no analysis.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum AnalysisError {
-    #[error("{input} = {} is not a finite number", Num(*value))]
-    NonFinite { input: &'static str, value: f64 },
-    #[error("{input} must be positive, not {}", Num(*value))]
-    NotPositive { input: &'static str, value: f64 },
+    #[error(transparent)]
+    Invalid(#[from] Invalid<&'static str>),
     #[error(
         "A = 1 − z_ẇ/μ₁ = {} (z_ẇ = {}, μ₁ = {}) is within {} of zero: the quartic degenerates to a cubic and the equations of motion have no solution for ẇ",
         Num(*a), Num(*z_wdot), Num(*mu1), Num(LEADING_COEFFICIENT_MIN)
@@ -70,15 +69,10 @@ pub(crate) fn agree(routh: &Routh, roots: &[Complex64; 4]) -> Result<(), Analysi
 pub fn check(d: &Derivatives) -> Result<(), AnalysisError> {
     let values = d.quartic_input_values();
     for (input, value) in Derivatives::QUARTIC_INPUTS.into_iter().zip(values) {
-        if !value.is_finite() {
-            return Err(AnalysisError::NonFinite { input, value });
-        }
+        invalid::finite(input, value)?;
     }
-    for (input, value) in [("mu1", d.mu1), ("i_b", d.i_b)] {
-        if value <= 0.0 {
-            return Err(AnalysisError::NotPositive { input, value });
-        }
-    }
+    invalid::positive("mu1", d.mu1)?;
+    invalid::positive("i_b", d.i_b)?;
     Ok(())
 }
 

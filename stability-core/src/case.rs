@@ -19,9 +19,9 @@ use crate::damping::{
     Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,
     damping_derivatives_with, theory_coefficients, x_q, x_wdot,
 };
-use crate::display::Num;
 use crate::faired;
 use crate::geometry::Planform;
+use crate::invalid::{self, Invalid};
 use crate::lifting_surface::Harmonic;
 use crate::stiffness::{Stiffness, stiffness};
 use crate::theory::Row;
@@ -271,10 +271,8 @@ impl std::fmt::Display for CaseInput {
 /// Why a design point has no result.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CaseError {
-    #[error("{quantity} must be a finite number, not {}", Num(*value))]
-    NonFinite { quantity: CaseInput, value: f64 },
-    #[error("{quantity} must be positive, not {}", Num(*value))]
-    NotPositive { quantity: CaseInput, value: f64 },
+    #[error(transparent)]
+    Invalid(#[from] Invalid<CaseInput>),
     #[error("aerodynamic model: {0}")]
     Aero(#[from] AeroError),
     #[error("damping theory: {0}")]
@@ -295,13 +293,11 @@ impl Case {
             (CaseInput::ClM2, self.cl_m2),
         ];
         for (quantity, value) in inputs {
-            if !value.is_finite() {
-                return Err(CaseError::NonFinite { quantity, value });
-            }
+            invalid::finite(quantity, value)?;
         }
         for (quantity, value) in inputs {
-            if quantity != CaseInput::Cg && value <= 0.0 {
-                return Err(CaseError::NotPositive { quantity, value });
+            if quantity != CaseInput::Cg {
+                invalid::positive(quantity, value)?;
             }
         }
         Ok(())

@@ -15,6 +15,7 @@ pub use crate::theory::{Theory, UnknownTheory};
 use crate::aero::TheoryCoefficients;
 use crate::display::{Num, OptNum};
 use crate::geometry::Planform;
+use crate::invalid::{self, Invalid};
 use crate::lifting_surface::{Harmonic, LiftingSurfaceError, cache};
 use crate::supersonic::{self, EdgeRegime, SupersonicError, Wing, transonic};
 use crate::warnings::{Warning, Warnings};
@@ -60,11 +61,10 @@ impl DampingDerivatives {
 /// Why a theory cannot be applied.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DampingError {
-    #[error("{theory}: {quantity} must be a finite number, not {}", Num(*value))]
-    NonFinite {
+    #[error("{theory}: {invalid}")]
+    Invalid {
         theory: Theory,
-        quantity: &'static str,
-        value: f64,
+        invalid: Invalid<&'static str>,
     },
     #[error("the leading-edge sweep must lie strictly between 0° and 90°, not {}°", Num(*degrees))]
     Sweep { degrees: f64 },
@@ -134,13 +134,8 @@ pub fn damping_derivatives_with(
     harmonic: Harmonic,
 ) -> Result<Damping, DampingError> {
     for (quantity, value) in [("the c.g. position h", h), ("the Mach number", mach)] {
-        if !value.is_finite() {
-            return Err(DampingError::NonFinite {
-                theory,
-                quantity,
-                value,
-            });
-        }
+        invalid::finite(quantity, value)
+            .map_err(|invalid| DampingError::Invalid { theory, invalid })?;
     }
     if !(wing.sweep_le > 0.0 && wing.sweep_le < PI / 2.0) {
         return Err(DampingError::Sweep {

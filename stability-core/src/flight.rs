@@ -34,8 +34,8 @@
 use crate::analysis::{Dimensional, STANDARD_GRAVITY};
 use crate::atmosphere::{Atmosphere, AtmosphereError};
 use crate::case::Case;
-use crate::display::Num;
 use crate::geometry::Planform;
+use crate::invalid::{self, Invalid};
 pub use crate::units::{Units, UnknownUnits};
 use serde::Serialize;
 
@@ -108,18 +108,14 @@ impl std::fmt::Display for FlightInput {
 /// Why a physical flight condition has no non-dimensional form.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum FlightError {
-    #[error("{quantity} must be a positive finite number, not {}", Num(*value))]
-    NotPositive { quantity: FlightInput, value: f64 },
+    #[error(transparent)]
+    Invalid(#[from] Invalid<FlightInput>),
     #[error("the altitude: {0}")]
     Atmosphere(#[from] AtmosphereError),
 }
 
 fn positive(quantity: FlightInput, value: f64) -> Result<f64, FlightError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(FlightError::NotPositive { quantity, value })
-    }
+    Ok(invalid::positive(quantity, value)?)
 }
 
 /// A physical flight condition with its wing, in SI units.
@@ -370,10 +366,10 @@ mod tests {
         };
         assert!(matches!(
             c.resolve(1.0, 1.0),
-            Err(FlightError::NotPositive {
+            Err(FlightError::Invalid(Invalid::NonFinite {
                 quantity: FlightInput::Weight,
                 ..
-            })
+            }))
         ));
         let p = FlightCondition {
             mass: Mass::Mass(1.0),

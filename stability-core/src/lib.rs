@@ -28,7 +28,8 @@
 //! (Fig 4, Figs 14–15): [`figures`]; grids of values and their one
 //! tolerance: [`grid`].
 //!
-//! Around them: [`warnings`] (validity limits approached), [`json`] (the
+//! Around them: [`warnings`] (validity limits approached), [`invalid`]
+//! (an input that is not finite or not positive), [`json`] (the
 //! results as the command line prints them), [`display`] (numbers and
 //! quotes in messages), [`examples`] (the example aircraft).
 
@@ -51,6 +52,7 @@ pub mod figures;
 pub mod flight;
 pub mod geometry;
 pub mod grid;
+pub mod invalid;
 pub mod json;
 pub mod lifting_surface;
 pub mod linear;

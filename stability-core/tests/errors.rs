@@ -9,6 +9,7 @@ use stability_core::case::{CaseError, CaseInput, DampingModel, evaluate};
 use stability_core::damping::{DampingError, Theory, WingInput, damping_derivatives};
 use stability_core::examples::tailless_delta_45;
 use stability_core::geometry::{GeometryError, Planform, Size};
+use stability_core::invalid::Invalid;
 use stability_core::study::report_wing;
 
 /// No run of more than 20 digits: a number written in full.
@@ -36,10 +37,8 @@ fn case_errors_name_the_input() {
         let mut c = report_wing(45.0, 0.9);
         set(&mut c);
         let e = evaluate(&c).unwrap_err();
-        let q = match e {
-            CaseError::NonFinite { quantity, .. } | CaseError::NotPositive { quantity, .. } => {
-                quantity
-            }
+        let q = match &e {
+            CaseError::Invalid(invalid) => invalid.quantity(),
             other => panic!("{other}"),
         };
         assert_eq!(q, input);
@@ -58,12 +57,12 @@ fn analysis_errors_name_the_derivative() {
     let e = Analysis::of(&d).unwrap_err();
     assert_eq!(
         e,
-        AnalysisError::NonFinite {
-            input: "m_q",
+        AnalysisError::Invalid(Invalid::NonFinite {
+            quantity: "m_q",
             value: f64::NEG_INFINITY
-        }
+        })
     );
-    assert_eq!(e.to_string(), "m_q = -inf is not a finite number");
+    assert_eq!(e.to_string(), "m_q must be a finite number, not -inf");
     let d = Derivatives {
         i_b: -1e308,
         ..tailless_delta_45()
@@ -89,7 +88,7 @@ fn damping_aero_and_geometry_errors_write_numbers_short() {
         taper: 0.0,
     };
     let e = damping_derivatives(Theory::Slender, &wing, f64::NAN, 0.9, None).unwrap_err();
-    assert!(matches!(e, DampingError::NonFinite { .. }));
+    assert!(matches!(e, DampingError::Invalid { .. }));
     assert_eq!(
         e.to_string(),
         "slender: the c.g. position h must be a finite number, not NaN"

@@ -268,11 +268,11 @@ fn bad_input_is_an_error_not_a_number() {
     let s = lattice.solve(0.5, 0.2).unwrap();
     assert!(matches!(
         s.derivatives(f64::NAN, 0.0),
-        Err(LiftingSurfaceError::NonFinite { .. })
+        Err(LiftingSurfaceError::Invalid(_))
     ));
     assert!(matches!(
         s.derivatives(0.2, f64::INFINITY),
-        Err(LiftingSurfaceError::NonFinite { .. })
+        Err(LiftingSurfaceError::Invalid(_))
     ));
     // the report's wings through `Planform`
     let p = Planform::new(60f64.to_radians(), 0.0, Size::Span(10.0)).unwrap();

@@ -8,15 +8,14 @@ use super::{Axes, DimensionalModel, Reference, ReportEquivalent, THETA0_MAX};
 use crate::analysis::{AnalysisError, Characteristic, LEADING_COEFFICIENT_MIN, Timebase};
 use crate::criteria::{DampingStandard, FlyingQualities, ShortPeriodApproximation};
 use crate::display::Num;
+use crate::invalid::{self, Invalid};
 
 /// Why a dimensional set has no analysis. `input` is the file's name of
 /// the value at fault (`X_u`, `U0`, `theta0`, `chord`, …).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DimensionalError {
-    #[error("{input} = {} is not a finite number", Num(*value))]
-    NonFinite { input: &'static str, value: f64 },
-    #[error("{input} must be positive, not {}", Num(*value))]
-    NotPositive { input: &'static str, value: f64 },
+    #[error(transparent)]
+    Invalid(#[from] Invalid<&'static str>),
     #[error(
         "the trim attitude θ₀ = {}° is not within ±89°: the x axis would be (nearly) vertical",
         Num(theta0.to_degrees())
@@ -45,15 +44,10 @@ impl DimensionalModel {
         let values = self.derivatives.values().into_iter().zip(names);
         let trim = [(t.u0, "U0"), (t.w0, "W0"), (t.theta0, "theta0"), (t.g, "g")];
         for (value, input) in values.chain(trim) {
-            if !value.is_finite() {
-                return Err(DimensionalError::NonFinite { input, value });
-            }
+            invalid::finite(input, value)?;
         }
-        for (value, input) in [(t.u0, "U0"), (t.g, "g")] {
-            if value <= 0.0 {
-                return Err(DimensionalError::NotPositive { input, value });
-            }
-        }
+        invalid::positive("U0", t.u0)?;
+        invalid::positive("g", t.g)?;
         if t.theta0.abs() > THETA0_MAX {
             return Err(DimensionalError::Attitude { theta0: t.theta0 });
         }
@@ -68,12 +62,7 @@ impl Reference {
     /// c̄, μ₁ and i_B positive and finite.
     pub fn check(&self) -> Result<(), DimensionalError> {
         for (value, input) in [(self.chord, "chord"), (self.mu1, "mu1"), (self.i_b, "i_b")] {
-            if !value.is_finite() {
-                return Err(DimensionalError::NonFinite { input, value });
-            }
-            if value <= 0.0 {
-                return Err(DimensionalError::NotPositive { input, value });
-            }
+            invalid::positive(input, value)?;
         }
         Ok(())
     }

@@ -157,18 +157,8 @@ impl Solution {
         h: f64,
         c_d: f64,
     ) -> Result<LiftingSurfaceDerivatives, LiftingSurfaceError> {
-        if !h.is_finite() {
-            return Err(LiftingSurfaceError::NonFinite {
-                what: "the c.g. position h",
-                value: h,
-            });
-        }
-        if !c_d.is_finite() {
-            return Err(LiftingSurfaceError::NonFinite {
-                what: "the drag coefficient C_D",
-                value: c_d,
-            });
-        }
+        crate::invalid::finite("the c.g. position h", h)?;
+        crate::invalid::finite("the drag coefficient C_D", c_d)?;
         let a = self.lift_alpha;
         let h0 = self.aerodynamic_centre();
         let z_wdot = -self.lift_alphadot;

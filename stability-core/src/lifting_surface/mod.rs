@@ -110,8 +110,8 @@ pub enum LiftingSurfaceError {
     Singular { mach: f64, omega_bar: f64 },
     #[error("the lattice's solution at M = {mach}, ω̄ = {omega_bar} is not finite")]
     NotFinite { mach: f64, omega_bar: f64 },
-    #[error("{what} must be a finite number, not {value}")]
-    NonFinite { what: &'static str, value: f64 },
+    #[error(transparent)]
+    Invalid(#[from] crate::invalid::Invalid<&'static str>),
     #[error("{0}")]
     Planform(String),
 }

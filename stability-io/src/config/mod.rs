@@ -355,7 +355,7 @@ impl Config {
             CaseError::Damping(DampingError::Frequency { .. }) => "[model] omega_bar",
             CaseError::Damping(DampingError::Taper { .. }) => "[planform] taper",
             CaseError::Damping(DampingError::Sweep { .. }) => "[planform] sweep",
-            CaseError::Damping(DampingError::NonFinite { .. }) => "[flight] cg",
+            CaseError::Damping(DampingError::Invalid { .. }) => "[flight] cg",
             CaseError::Damping(_) => "[model] damping",
             _ => "[flight]",
         };

@@ -247,7 +247,7 @@ fn flight_error(r: &Reader<'_>, f: &RawFlight, e: &FlightError) -> InputError {
                 "geometric_altitude"
             }
         }
-        FlightError::NotPositive { quantity, .. } => match quantity {
+        FlightError::Invalid(e) => match e.quantity() {
             FlightInput::Density => "rho",
             FlightInput::SpeedOfSound => "speed_of_sound",
             FlightInput::Mass => "mass",

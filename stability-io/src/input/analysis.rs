@@ -72,9 +72,8 @@ impl DerivativeFile {
         };
         match e {
             AnalysisError::LeadingCoefficientZero { .. } => rows::Z_WDOT,
-            AnalysisError::NonFinite { input: name, .. }
-            | AnalysisError::NotPositive { input: name, .. } => {
-                named(name).unwrap_or_else(|| self.most_extreme_input())
+            AnalysisError::Invalid(e) => {
+                named(e.quantity()).unwrap_or_else(|| self.most_extreme_input())
             }
             _ => self.most_extreme_input(),
         }

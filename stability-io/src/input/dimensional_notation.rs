@@ -133,9 +133,7 @@ impl DimensionalFile {
 /// The file's name of the value a library error is about.
 fn blame(e: &DimensionalError) -> &'static str {
     match e {
-        DimensionalError::NonFinite { input, .. } | DimensionalError::NotPositive { input, .. } => {
-            input
-        }
+        DimensionalError::Invalid(e) => e.quantity(),
         DimensionalError::Attitude { .. } => "theta0",
         DimensionalError::StabilityW0 { .. } => "W0",
         DimensionalError::Singular { .. } => "Z_wdot",
