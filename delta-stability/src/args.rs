@@ -14,6 +14,39 @@ use stability_core::notation::Notation;
 use stability_io::input::dimensional_notation::DIMENSIONAL;
 use std::sync::OnceLock;
 
+/// The model options of `analyze` and `sweep`: the config's damping model,
+/// aerodynamic model and frequency parameter replaced.
+#[derive(Debug, Clone, Default, clap::Args)]
+pub struct ModelArgs {
+    /// Override the config's damping model. With lifting-surface the
+    /// lattice is solved once per planform and Mach number; with
+    /// lifting-surface-frequency each design point's ω̄ is iterated (a sweep
+    /// interpolates between solved frequencies).
+    #[arg(long, value_enum)]
+    pub damping: Option<DampingArg>,
+    /// Override the config's aerodynamic model (lift slope and aerodynamic
+    /// centre; a table in the config still wins).
+    #[arg(long, value_enum)]
+    pub aero: Option<AeroArg>,
+    /// Evaluate a frequency-dependent damping theory at ω̄ = ωc̄/V = W, not
+    /// iterated: lifting-surface (else quasi-steady),
+    /// lifting-surface-frequency, transonic-frequency, faired.
+    #[arg(long = "omega-bar", value_name = "W", value_parser = positive)]
+    pub omega_bar: Option<f64>,
+}
+
+impl ModelArgs {
+    /// The overrides of a config these options make.
+    pub fn overrides(&self) -> stability_io::config::Overrides {
+        stability_io::config::Overrides {
+            damping: self.damping.map(|d| d.0),
+            aero: self.aero.map(|a| a.0),
+            omega_bar: self.omega_bar,
+            ..Default::default()
+        }
+    }
+}
+
 /// A damping model: `faired` or one of the library's theories.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DampingArg(pub DampingModel);

@@ -19,22 +19,15 @@ use stability_io::views::AnalyzeJson;
 use std::fmt::Write;
 
 use super::quartic::EngineeringArgs;
-use crate::args::{AeroArg, DampingArg};
+use crate::args::ModelArgs;
 
 /// The command's options.
 #[derive(Debug, Clone, clap::Args)]
 pub struct Args {
     /// The design-point config (TOML).
     pub config: String,
-    /// Override the damping model.
-    #[arg(long, value_enum)]
-    pub damping: Option<DampingArg>,
-    /// Override the aerodynamic model (lift slope and aerodynamic centre; a table in the config still wins).
-    #[arg(long, value_enum)]
-    pub aero: Option<AeroArg>,
-    /// Evaluate a frequency-dependent damping theory at ω̄ = ωc̄/V = W, not iterated: lifting-surface (else quasi-steady), lifting-surface-frequency, transonic-frequency.
-    #[arg(long = "omega-bar", value_name = "W", value_parser = crate::args::positive)]
-    pub omega_bar: Option<f64>,
+    #[command(flatten)]
+    pub model: ModelArgs,
     /// Override the Mach number.
     #[arg(long, value_parser = crate::args::finite)]
     pub mach: Option<f64>,
@@ -52,11 +45,9 @@ impl Args {
     /// The values that replace the config's.
     pub fn overrides(&self) -> Overrides {
         Overrides {
-            damping: self.damping.map(|d| d.0),
-            aero: self.aero.map(|a| a.0),
-            omega_bar: self.omega_bar,
             mach: self.mach,
             cg: self.cg,
+            ..self.model.overrides()
         }
     }
 }

@@ -9,12 +9,12 @@
 //! and a chunk is written while the next is computed.
 
 use crate::Failure;
-use crate::args::{AeroArg, DampingArg};
+use crate::args::ModelArgs;
 use crate::output::AtomicFile;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 use stability_core::sweep::{Axes, SweepError};
-use stability_io::config::{Config, Overrides, overridden};
+use stability_io::config::{Config, overridden};
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
 use stability_io::sweep::{Format, Given, Grid, axes, parse_range};
@@ -48,19 +48,8 @@ pub struct Args {
     /// report notation) to each row, e.g. to feed another tool.
     #[arg(long)]
     pub derivatives: bool,
-    /// Override the config's damping model (see `analyze --help`). With
-    /// lifting-surface the lattice is solved once per sweep and Mach number;
-    /// with lifting-surface-frequency each point's ω̄ is interpolated between
-    /// solved frequencies.
-    #[arg(long, value_enum)]
-    pub damping: Option<DampingArg>,
-    /// Override the config's aerodynamic model (see `analyze --help`).
-    #[arg(long, value_enum)]
-    pub aero: Option<AeroArg>,
-    /// Evaluate a frequency-dependent damping theory at ω̄ = W at every
-    /// point, not iterated (as `analyze --omega-bar`).
-    #[arg(long = "omega-bar", value_name = "W", value_parser = crate::args::positive)]
-    pub omega_bar: Option<f64>,
+    #[command(flatten)]
+    pub model: ModelArgs,
 }
 
 /// The options' flags, in the order of [`Axes::NAMES`].
@@ -113,13 +102,7 @@ fn progress_bar(total: usize) -> ProgressBar {
 }
 
 pub fn run(o: &Args) -> Result<(), Failure> {
-    let overrides = Overrides {
-        damping: o.damping.map(|d| d.0),
-        aero: o.aero.map(|a| a.0),
-        omega_bar: o.omega_bar,
-        ..Overrides::default()
-    };
-    let cfg = overridden(&o.config, &overrides)?;
+    let cfg = overridden(&o.config, &o.model.overrides())?;
     let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
     let json = is_json(o).map_err(&bad)?;
     let grid = grid(o, &cfg).map_err(&bad)?;
