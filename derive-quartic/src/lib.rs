@@ -23,7 +23,8 @@
 //! erratum, a missing or duplicate entry) is a compile error naming the spec
 //! file, line and entry. The build re-runs when the spec changes.
 //!
-//! The work is split as in serde_derive: [`attr`] parses the derive input,
+//! The work is split as in serde_derive: the private module `attr` parses
+//! the derive input,
 //! `formula_engine::quartic` validates the spec into a model, and
 //! `formula_engine::quartic::expand` writes the code.
 
