@@ -4,7 +4,7 @@
 //!
 //! ```text
 //! #[derive(Quartic)]
-//! #[quartic(spec = "../specs/quartic.toml")]
+//! #[quartic(spec = "specs/quartic.toml")]
 //! pub struct Derivatives { pub x_u: f64, /* … one f64 field per spec input … */ }
 //! ```
 //!

@@ -37,7 +37,7 @@ struct QuarticSpec {
 
 const QUARTIC_SPECS: &[QuarticSpec] = &[
     QuarticSpec {
-        spec: "specs/quartic.toml",
+        spec: "stability-core/specs/quartic.toml",
         ty: "Derivatives",
         formulas: "docs/formulas.md",
         expansion: "docs/generated/quartic-expansion.txt",
@@ -45,7 +45,7 @@ const QUARTIC_SPECS: &[QuarticSpec] = &[
     },
     // The general dimensional model (issue 12): eq (4) is its special case.
     QuarticSpec {
-        spec: "specs/dimensional.toml",
+        spec: "stability-core/specs/dimensional.toml",
         ty: "DescriptorSystem",
         formulas: "docs/dimensional-formulas.md",
         expansion: "docs/generated/dimensional-expansion.txt",
@@ -61,7 +61,7 @@ struct NotationSpec {
 }
 
 const NOTATION_SPEC: NotationSpec = NotationSpec {
-    spec: "specs/notation.toml",
+    spec: "stability-core/specs/notation.toml",
     notations: "docs/notations.md",
     generated: "docs/generated/notation.rs.txt",
 };
