@@ -34,7 +34,7 @@ mod reviewed_quartic {
 }
 
 /// What `#[derive(Quartic)]` emits for the general dimensional model
-/// (specs/dimensional.toml).
+/// (stability-core/specs/dimensional.toml).
 mod reviewed_dimensional {
     #[derive(Clone, Copy)]
     pub struct DescriptorSystem {

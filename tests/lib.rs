@@ -13,20 +13,22 @@ pub fn root() -> &'static Path {
         .expect("the tests crate sits in the workspace root")
 }
 
-/// `specs/quartic.toml`, loaded and verified by the engine.
+/// `stability-core/specs/quartic.toml`, loaded and verified by the engine.
 pub fn quartic_model() -> QuarticModel {
-    let rel = "specs/quartic.toml";
-    let text = std::fs::read_to_string(root().join(rel)).expect("read specs/quartic.toml");
+    let rel = "stability-core/specs/quartic.toml";
+    let text =
+        std::fs::read_to_string(root().join(rel)).expect("read stability-core/specs/quartic.toml");
     match QuarticModel::load(&SourceFile::new(rel, text)) {
         Ok(m) => m,
         Err(d) => panic!("{d}"),
     }
 }
 
-/// `specs/notation.toml`, loaded and verified by the engine.
+/// `stability-core/specs/notation.toml`, loaded and verified by the engine.
 pub fn notation_model() -> NotationModel {
-    let rel = "specs/notation.toml";
-    let text = std::fs::read_to_string(root().join(rel)).expect("read specs/notation.toml");
+    let rel = "stability-core/specs/notation.toml";
+    let text =
+        std::fs::read_to_string(root().join(rel)).expect("read stability-core/specs/notation.toml");
     match NotationModel::load(&SourceFile::new(rel, text)) {
         Ok(m) => m,
         Err(d) => panic!("{d}"),

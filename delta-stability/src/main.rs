@@ -173,8 +173,8 @@ enum Command {
     /// --from dimensional --to dimensional writes the set in stability axes.
     ///
     /// Every factor is derived from the authors' definitions in
-    /// specs/notation.toml and checked against the report's appendix; the
-    /// appendix's misprints are listed in docs/errata.md.
+    /// stability-core/specs/notation.toml and checked against the report's
+    /// appendix; the appendix's misprints are listed in docs/errata.md.
     #[command(verbatim_doc_comment)]
     Convert(cmd::convert::Args),
     /// Run the note's whole study and write its figures, data and conclusions.

@@ -5,8 +5,9 @@
 //! faired between theories), labelled [`VerticalLine`]s (e.g. where a
 //! wing's leading edge turns sonic) and [`Band`]s named along the top
 //! (`regions`). How it is drawn — the series' styles, the legend below the
-//! frame, the off-scale notes — is [`svg`]'s; the CSV ([`Figure::to_csv`])
-//! holds the curves' data only, its numbers written by [`num`].
+//! frame, the off-scale notes — is the private module `svg`'s; the CSV
+//! ([`Figure::to_csv`]) holds the curves' data only, its numbers written by
+//! [`num`].
 
 mod legend;
 mod svg;

@@ -646,7 +646,7 @@ fn the_747_in_both_american_forms_has_etkin_and_reids_roots() {
 /// The relations of the C_L/C_D form, derivative by derivative, written by
 /// hand (stability axes at trim: X = −D cos α + L sin α, Z = −L cos α −
 /// D sin α, thrust independent of speed), against the conversions the
-/// engine derived from specs/notation.toml.
+/// engine derived from stability-core/specs/notation.toml.
 #[test]
 fn the_lift_drag_form_relations_derivative_by_derivative() {
     let american = Notation::named("american").unwrap();

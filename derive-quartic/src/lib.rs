@@ -4,7 +4,7 @@
 //!
 //! ```text
 //! #[derive(Quartic)]
-//! #[quartic(spec = "../specs/quartic.toml")]
+//! #[quartic(spec = "specs/quartic.toml")]
 //! pub struct Derivatives { pub x_u: f64, /* … one f64 field per spec input … */ }
 //! ```
 //!
@@ -23,7 +23,8 @@
 //! erratum, a missing or duplicate entry) is a compile error naming the spec
 //! file, line and entry. The build re-runs when the spec changes.
 //!
-//! The work is split as in serde_derive: [`attr`] parses the derive input,
+//! The work is split as in serde_derive: the private module `attr` parses
+//! the derive input,
 //! `formula_engine::quartic` validates the spec into a model, and
 //! `formula_engine::quartic::expand` writes the code.
 

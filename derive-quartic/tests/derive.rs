@@ -3,7 +3,7 @@
 use derive_quartic::Quartic;
 
 #[derive(Quartic)]
-#[quartic(spec = "../specs/quartic.toml")]
+#[quartic(spec = "../stability-core/specs/quartic.toml")]
 #[allow(dead_code)]
 struct D {
     x_u: f64,

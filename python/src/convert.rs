@@ -11,8 +11,9 @@ use stability_core::notation::Notation;
 use stability_io::convert::{ConvertJson, converted};
 
 /// A derivative set converted into the notation `to` by the factors
-/// derived from each author's definitions (specs/notation.toml; the
-/// report's appendix with its misprints corrected, docs/errata.md): the
+/// derived from each author's definitions
+/// (stability-core/specs/notation.toml; the report's appendix with its
+/// misprints corrected, docs/errata.md): the
 /// dict `delta-stability convert --from F --to T FILE --json` prints, with
 /// `from`, `to`, `values` (T's names; None where the input does not
 /// determine one), `report` (the report's values) and `parameters`.

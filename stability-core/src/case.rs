@@ -9,8 +9,8 @@
 //! consistency the report could not afford ("quasi-static derivatives are
 //! used in cases where frequency effects should properly be included",
 //! Summary); the result records the starting and converged ω̄ and what the
-//! iteration changed. One iteration serves every such theory
-//! ([`Point::iterate_frequency`]).
+//! iteration changed ([`FrequencyIteration`]). One iteration, the secant
+//! method on the residual s(ω̄)/μ₁ − ω̄, serves every such theory.
 
 use crate::Derivatives;
 use crate::aero::{AeroError, AeroModel, Coefficients, TheoryCoefficients, level_flight_lift};

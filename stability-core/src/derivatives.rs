@@ -10,7 +10,7 @@
 /// Serializes as an object of the fifteen inputs by their names
 /// ([`Derivatives::QUARTIC_INPUTS`]).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, derive_quartic::Quartic)]
-#[quartic(spec = "../specs/quartic.toml")]
+#[quartic(spec = "specs/quartic.toml")]
 pub struct Derivatives {
     /// x_u = X_u/(½ρSV), eq (9).
     pub x_u: f64,

@@ -1,8 +1,8 @@
 //! A derivative set from one notation into another (`convert`), by the
-//! factors derived in `specs/notation.toml` (see docs/notations.md): the
-//! values, and the file or JSON object they are written as. No value that
-//! is not finite is written: a conversion that overflows is an error at the
-//! value that caused it.
+//! factors derived in `stability-core/specs/notation.toml` (see
+//! docs/notations.md): the values, and the file or JSON object they are
+//! written as. No value that is not finite is written: a conversion that
+//! overflows is an error at the value that caused it.
 
 use crate::diag::InputError;
 use crate::input::dimensional_notation::DIMENSIONAL;
@@ -16,8 +16,9 @@ use stability_core::notation::{Notation, NotationError, Values, tables};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-/// A notation a set can be written in: one of `specs/notation.toml`'s, or
-/// the dimensional one (AVL's is read only).
+/// A notation a set can be written in: one of
+/// `stability-core/specs/notation.toml`'s, or the dimensional one (AVL's is
+/// read only).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Target {
     Table(Notation),
@@ -46,7 +47,7 @@ pub fn written_in(any: &AnyFile) -> (&str, &'static str) {
 /// not matter.)
 #[allow(clippy::large_enum_variant)]
 pub enum Conversion<'a> {
-    /// Into one of the notations of `specs/notation.toml`.
+    /// Into one of the notations of `stability-core/specs/notation.toml`.
     Table {
         input: std::borrow::Cow<'a, DerivativeFile>,
         from: &'a str,
@@ -251,7 +252,7 @@ fn to_toml(input: &DerivativeFile, from: &str, to: Notation, values: &Values) ->
     );
     let _ = writeln!(
         s,
-        "# ({}); factors derived in specs/notation.toml, see docs/notations.md",
+        "# ({}); factors derived in stability-core/specs/notation.toml, see docs/notations.md",
         to.title()
     );
     let _ = writeln!(s, "notation = \"{}\"", to.name());

@@ -13,7 +13,7 @@ use std::path::Path;
 /// The most characters of the user's text a message quotes.
 pub const QUOTE_CHARS: usize = 48;
 /// The most characters of an input line shown under a message.
-const LINE_CHARS: usize = 80;
+pub const LINE_CHARS: usize = 80;
 /// The most characters of a message or field (a safety net: messages are
 /// built from [`quote`]d text).
 const MESSAGE_CHARS: usize = 600;

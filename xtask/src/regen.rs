@@ -1,11 +1,15 @@
 //! `cargo xtask regen [--check]`: every generated artefact of the project,
 //! written (or, with `--check`, compared) through one
-//! [`ensure_file_contents`], each with the preamble this module owns.
+//! [`ensure_file_contents`], each with the preamble this module owns: whole
+//! files, and README.md's text between its `conclusions` markers (the
+//! paragraph under Fig 33 and the note's conclusions as the report judges
+//! them, `delta_stability::report::readme`), the preamble in the first
+//! marker.
 //!
 //! After rust-analyzer's `xtask codegen`: the list of artefacts is
-//! [`artefacts`]; the test at the bottom runs the regeneration in check
+//! [`artefacts`]; the tests at the bottom run the regeneration in check
 //! mode, so `cargo test --workspace` fails, naming the file, while anything
-//! is stale.
+//! is stale, and check that it does on a copy made stale on purpose.
 
 use formula_engine::notation::{self, NotationModel};
 use formula_engine::quartic::{self, QuarticModel};
@@ -33,7 +37,7 @@ struct QuarticSpec {
 
 const QUARTIC_SPECS: &[QuarticSpec] = &[
     QuarticSpec {
-        spec: "specs/quartic.toml",
+        spec: "stability-core/specs/quartic.toml",
         ty: "Derivatives",
         formulas: "docs/formulas.md",
         expansion: "docs/generated/quartic-expansion.txt",
@@ -41,7 +45,7 @@ const QUARTIC_SPECS: &[QuarticSpec] = &[
     },
     // The general dimensional model (issue 12): eq (4) is its special case.
     QuarticSpec {
-        spec: "specs/dimensional.toml",
+        spec: "stability-core/specs/dimensional.toml",
         ty: "DescriptorSystem",
         formulas: "docs/dimensional-formulas.md",
         expansion: "docs/generated/dimensional-expansion.txt",
@@ -57,12 +61,14 @@ struct NotationSpec {
 }
 
 const NOTATION_SPEC: NotationSpec = NotationSpec {
-    spec: "specs/notation.toml",
+    spec: "stability-core/specs/notation.toml",
     notations: "docs/notations.md",
     generated: "docs/generated/notation.rs.txt",
 };
 
 const ERRATA: &str = "docs/errata.md";
+
+const README: &str = "README.md";
 
 /// How a file's preamble is written.
 #[derive(Clone, Copy)]
@@ -75,10 +81,22 @@ enum Comment {
     Hash,
 }
 
-/// One generated file: where it goes and what it holds (without preamble).
+/// What of a file is generated.
+#[derive(Clone, Copy)]
+enum Part {
+    /// All of it, after a preamble.
+    Whole(Comment),
+    /// The text between the Markdown markers `<!-- NAME:begin … -->` and
+    /// `<!-- NAME:end -->` (each on a line of its own), the preamble in the
+    /// first; the rest of the file is left as it is.
+    Between(&'static str),
+}
+
+/// One generated file, or part of one: where it goes and what it holds
+/// (without preamble).
 struct Artefact {
     path: String,
-    comment: Comment,
+    part: Part,
     contents: String,
 }
 
@@ -86,20 +104,42 @@ impl Artefact {
     fn new(path: &str, comment: Comment, contents: String) -> Artefact {
         Artefact {
             path: path.to_string(),
-            comment,
+            part: Part::Whole(comment),
             contents,
         }
     }
 
-    /// The file's text: the preamble, then the contents.
-    fn text(&self) -> String {
-        let preamble = match self.comment {
-            Comment::Html => format!("<!-- {PREAMBLE} -->\n\n"),
-            Comment::Slashes => format!("// {PREAMBLE}\n"),
-            Comment::Hash => format!("# {PREAMBLE}\n"),
+    /// The file's text, given what it holds now (`old`): the preamble and
+    /// the contents, or `old` with the text between the markers replaced.
+    fn text(&self, old: &str) -> Result<String, String> {
+        let preamble = match self.part {
+            Part::Whole(Comment::Html) => format!("<!-- {PREAMBLE} -->\n\n"),
+            Part::Whole(Comment::Slashes) => format!("// {PREAMBLE}\n"),
+            Part::Whole(Comment::Hash) => format!("# {PREAMBLE}\n"),
+            Part::Between(name) => return splice(old, &self.path, name, &self.contents),
         };
-        format!("{preamble}{}", self.contents)
+        Ok(format!("{preamble}{}", self.contents))
     }
+}
+
+/// `old` (the file `rel`) with the text between its `name` markers
+/// replaced by `contents`.
+fn splice(old: &str, rel: &str, name: &str, contents: &str) -> Result<String, String> {
+    let begin = format!("<!-- {name}:begin");
+    let end = format!("<!-- {name}:end -->");
+    let missing = || {
+        format!(
+            "{rel} lacks the markers `{begin} -->` and, after it, `{end}` around the text `cargo xtask regen` writes there"
+        )
+    };
+    let b = old.find(&begin).ok_or_else(missing)?;
+    let after = b + old[b..].find("-->").ok_or_else(missing)? + "-->".len();
+    let e = after + old[after..].find(&end).ok_or_else(missing)?;
+    Ok(format!(
+        "{}{begin} — {PREAMBLE} -->\n{contents}{}",
+        &old[..b],
+        &old[e..]
+    ))
 }
 
 /// Every generated artefact of the project.
@@ -143,8 +183,11 @@ fn artefacts(root: &Path) -> Result<Vec<Artefact>, String> {
         Comment::Html,
         docs::errata_markdown(&quartics, Some(&notation)),
     ));
-    // The README's figure: Fig 33 as the report draws it.
-    for (rel, contents) in delta_stability::report::readme_figures()? {
+    // The README's figure, Fig 33 as the report draws it, and the text
+    // under it: its numbers and the note's conclusions as the report judges
+    // them.
+    let readme = delta_stability::report::readme::compute()?;
+    for (rel, contents) in readme.figures {
         let comment = if rel.ends_with(".svg") {
             Comment::Html
         } else {
@@ -152,6 +195,11 @@ fn artefacts(root: &Path) -> Result<Vec<Artefact>, String> {
         };
         out.push(Artefact::new(&rel, comment, contents));
     }
+    out.push(Artefact {
+        path: README.into(),
+        part: Part::Between(delta_stability::report::readme::MARKER),
+        contents: readme.conclusions,
+    });
     Ok(out)
 }
 
@@ -167,14 +215,23 @@ fn load<T, E: std::fmt::Display>(
 
 /// Write every artefact (or, with `check`, fail naming each stale one).
 pub fn regen(root: &Path, check: bool) -> Result<(), String> {
-    let artefacts = artefacts(root)?;
+    apply(root, &artefacts(root)?, check)
+}
+
+/// Write `artefacts` under `root` (or, with `check`, fail naming each file
+/// that is stale or missing, and each stray under [`GENERATED_DIR`]).
+fn apply(root: &Path, artefacts: &[Artefact], check: bool) -> Result<(), String> {
     let mut stale: Vec<String> = Vec::new();
-    for a in &artefacts {
-        if let Err(e) = ensure_file_contents(root, &a.path, &a.text(), check) {
+    for a in artefacts {
+        let old = std::fs::read_to_string(root.join(&a.path)).unwrap_or_default();
+        let written = a
+            .text(&old)
+            .and_then(|text| ensure_file_contents(root, &a.path, &text, check));
+        if let Err(e) = written {
             stale.push(e);
         }
     }
-    stale.extend(strays(root, &artefacts, check));
+    stale.extend(strays(root, artefacts, check));
     if stale.is_empty() {
         Ok(())
     } else {
@@ -241,36 +298,142 @@ fn strays(root: &Path, artefacts: &[Artefact], check: bool) -> Vec<String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::collections::BTreeMap;
+    use std::path::PathBuf;
+    use std::sync::OnceLock;
+
+    /// Every artefact as the generator makes it now, computed once for the
+    /// tests (the README's text needs the report's study).
+    fn computed() -> &'static [Artefact] {
+        static ARTEFACTS: OnceLock<Result<Vec<Artefact>, String>> = OnceLock::new();
+        match ARTEFACTS.get_or_init(|| artefacts(&crate::root())) {
+            Ok(a) => a,
+            Err(e) => panic!("{e}"),
+        }
+    }
 
     /// `cargo test --workspace` fails while any artefact is stale.
     #[test]
     fn generated_artefacts_are_up_to_date() {
-        if let Err(e) = regen(&crate::root(), true) {
+        if let Err(e) = apply(&crate::root(), computed(), true) {
             panic!("{e}");
         }
     }
 
-    #[test]
-    fn every_artefact_carries_the_preamble() {
-        let artefacts = artefacts(&crate::root()).unwrap_or_else(|e| panic!("{e}"));
-        assert!(artefacts.len() >= 6);
-        for a in &artefacts {
-            let first = a.text().lines().next().unwrap_or("").to_string();
-            assert!(first.contains(PREAMBLE), "{}: {first}", a.path);
+    /// A directory of its own under the system's temporary one, removed
+    /// when dropped.
+    struct Scratch(PathBuf);
+
+    impl Scratch {
+        fn new(name: &str) -> Scratch {
+            let dir = std::env::temp_dir().join(format!("xtask-{name}-{}", std::process::id()));
+            let _ = std::fs::remove_dir_all(&dir);
+            std::fs::create_dir_all(&dir).unwrap();
+            Scratch(dir)
         }
+    }
+
+    impl Drop for Scratch {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
+
+    /// Every file under `dir` and its text, by relative path.
+    fn files(dir: &Path) -> BTreeMap<String, String> {
+        fn walk(base: &Path, dir: &Path, out: &mut BTreeMap<String, String>) {
+            for entry in std::fs::read_dir(dir).unwrap().flatten() {
+                let path = entry.path();
+                if path.is_dir() {
+                    walk(base, &path, out);
+                } else {
+                    let rel = path.strip_prefix(base).unwrap().to_string_lossy();
+                    let text = std::fs::read_to_string(&path).unwrap();
+                    out.insert(rel.replace('\\', "/"), text);
+                }
+            }
+        }
+        let mut out = BTreeMap::new();
+        walk(dir, dir, &mut out);
+        out
+    }
+
+    /// In a copy made stale on purpose — a generated file edited, one
+    /// deleted, a stray one added, and a verdict in the README's
+    /// conclusions changed — check mode names each and changes nothing;
+    /// regenerating writes every file the preamble first, restores the
+    /// README's text and keeps what is outside its markers; without the
+    /// markers the README is named.
+    #[test]
+    fn check_mode_names_what_is_stale_and_regen_restores_it() {
+        let dir = Scratch::new("regen");
+        let tmp = &dir.0;
+        let readme = std::fs::read_to_string(crate::root().join(README)).unwrap();
+        std::fs::write(tmp.join(README), format!("# a copy\n\n{readme}")).unwrap();
+        apply(tmp, computed(), false).unwrap();
+        apply(tmp, computed(), true).unwrap();
+        let fresh = files(tmp);
+        assert_eq!(fresh.len(), computed().len());
+        for (rel, text) in &fresh {
+            let mut lines = text.lines();
+            let first = if rel == README {
+                lines.find(|l| l.starts_with("<!-- conclusions:begin"))
+            } else {
+                lines.next()
+            };
+            assert!(
+                first.is_some_and(|l| l.contains(PREAMBLE)),
+                "{rel}: {first:?}"
+            );
+        }
+        let (stale, gone, stray) = (
+            "docs/formulas.md",
+            "docs/generated/quartic.rs.txt",
+            "docs/generated/old.rs.txt",
+        );
+        std::fs::write(tmp.join(stale), format!("{}x\n", fresh[stale])).unwrap();
+        std::fs::remove_file(tmp.join(gone)).unwrap();
+        std::fs::write(tmp.join(stray), "old\n").unwrap();
+        let (head, region) = fresh[README].split_once("conclusions:begin").unwrap();
+        let [yes, no] = ["- Reproduced:", "- Not reproduced:"];
+        let region = if region.contains(yes) {
+            region.replacen(yes, no, 1)
+        } else {
+            region.replacen(no, yes, 1)
+        };
+        std::fs::write(tmp.join(README), format!("{head}conclusions:begin{region}")).unwrap();
+        let before = files(tmp);
+        let e = apply(tmp, computed(), true).unwrap_err();
+        for rel in [stale, gone, README] {
+            assert!(
+                e.contains(&format!("{rel} was not up to date")),
+                "{rel}: {e}"
+            );
+        }
+        assert!(
+            e.contains(&format!("{stray} is generated by nothing")),
+            "{e}"
+        );
+        assert_eq!(e.lines().count(), 4, "{e}");
+        assert_eq!(files(tmp), before, "check mode changed a file");
+        apply(tmp, computed(), false).unwrap();
+        assert_eq!(files(tmp), fresh);
+        assert!(fresh[README].starts_with("# a copy\n\n"));
+        std::fs::write(tmp.join(README), readme.replace("conclusions:end", "end")).unwrap();
+        let e = apply(tmp, computed(), true).unwrap_err();
+        assert!(e.starts_with("README.md lacks the markers"), "{e}");
     }
 
     #[test]
     fn check_mode_names_a_stale_file_and_changes_nothing() {
-        let dir = std::env::temp_dir().join(format!("xtask-regen-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+        let dir = Scratch::new("ensure");
+        let dir = &dir.0;
         std::fs::write(dir.join("a.md"), "old\n").unwrap();
-        let e = ensure_file_contents(&dir, "a.md", "new\n", true).unwrap_err();
+        let e = ensure_file_contents(dir, "a.md", "new\n", true).unwrap_err();
         assert!(e.contains("a.md was not up to date"), "{e}");
         assert_eq!(std::fs::read_to_string(dir.join("a.md")).unwrap(), "old\n");
-        ensure_file_contents(&dir, "a.md", "new\n", false).unwrap();
+        ensure_file_contents(dir, "a.md", "new\n", false).unwrap();
         assert_eq!(std::fs::read_to_string(dir.join("a.md")).unwrap(), "new\n");
-        assert!(ensure_file_contents(&dir, "a.md", "new\r\n", true).is_ok());
-        std::fs::remove_dir_all(&dir).unwrap();
+        assert!(ensure_file_contents(dir, "a.md", "new\r\n", true).is_ok());
     }
 }

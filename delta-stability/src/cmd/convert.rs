@@ -1,6 +1,6 @@
 //! `delta-stability convert --from X --to Y FILE [--json]`: a derivative set
 //! from one notation into another, by the factors derived in
-//! `specs/notation.toml` (see docs/notations.md), through
+//! `stability-core/specs/notation.toml` (see docs/notations.md), through
 //! [`stability_io::convert`].
 
 use crate::Failure;

@@ -23,7 +23,7 @@ use std::path::Path;
 pub struct Args {
     /// The derivative file (TOML).
     pub file: String,
-    /// Print one JSON object (keys coefficients, routh_discriminant, stable, roots, modes, criteria, mode_shapes; with [dimensional] also damp and short_period_frequency) instead of a table.
+    /// Print one JSON object (keys coefficients, routh_discriminant, stable, roots, modes, criteria, mode_shapes; with `[dimensional]` also damp and short_period_frequency) instead of a table.
     #[arg(long)]
     pub json: bool,
     #[command(flatten)]
@@ -33,7 +33,7 @@ pub struct Args {
 /// The options that write the engineer's outputs (`quartic`, `analyze`).
 #[derive(Debug, Clone, clap::Args)]
 pub struct EngineeringArgs {
-    /// Write the state space ẋ = A x + B δ, x = (u/V, α, q, θ), in seconds when the flight condition is dimensional (else in τ), to OUT.json, with a python-control script OUT.py and a MATLAB script OUT.m beside it. B needs a [control] table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; optional name); without one, A only.
+    /// Write the state space ẋ = A x + B δ, x = (u/V, α, q, θ), in seconds when the flight condition is dimensional (else in τ), to OUT.json, with a python-control script OUT.py and a MATLAB script OUT.m beside it. B needs a `[control]` table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; optional name); without one, A only.
     #[arg(long, value_name = "OUT.json")]
     pub state_space: Option<String>,
     /// The MIL-F-8785C airplane class (§1.3) whose Category C floors the short-period frequency requirement applies.

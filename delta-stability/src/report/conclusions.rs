@@ -83,6 +83,9 @@ pub struct Assessment {
 pub struct Conclusion {
     /// A stable name: "45-transonic".
     pub id: &'static str,
+    /// A short name for lists, lower case: "the 45° delta's transonic
+    /// instability" (README.md's paragraph, `readme`).
+    pub title: &'static str,
     /// What it is about: "45° delta".
     pub subject: &'static str,
     /// Where the note says it: "Summary; §9, Fig 33".
@@ -103,6 +106,7 @@ const BOTH: &[Assumption] = &Assumption::ALL;
 pub const CONCLUSIONS: &[Conclusion] = &[
     Conclusion {
         id: "45-transonic",
+        title: "the 45° delta's transonic instability",
         subject: "45° delta",
         section: "Summary; §9, Fig 33",
         claim: "Inadequately damped at transonic speeds (μ₁ = 50): a tailplane is needed “to correct the serious instability in the range 0.97 < M < 1.5”.",
@@ -112,6 +116,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
     },
     Conclusion {
         id: "60-mu1-limit",
+        title: "the 60° delta's limit of μ₁ ≈ 200",
         subject: "60° delta",
         section: "Summary; §9, Fig 33",
         claim: "Adequately damped “for values of the relative density parameter μ₁ … less than about 200”.",
@@ -121,6 +126,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
     },
     Conclusion {
         id: "subcritical-trend",
+        title: "the subcritical rise of damping and frequency",
         subject: "45° delta",
         section: "§11, Fig 37",
         claim: "“The increase in damping and frequency with Mach number at subcritical speeds will be apparent” in the response to an elevon step.",
@@ -130,6 +136,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
     },
     Conclusion {
         id: "mwdot-negligible",
+        title: "m_ẇ negligible at subcritical speeds",
         subject: "both wings",
         section: "§7 (a)",
         claim: "“The moment-acceleration derivative m_ẇ can be safely neglected at sub-critical speeds.”",
@@ -139,6 +146,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
     },
     Conclusion {
         id: "45-m-thetadot-positive",
+        title: "(36)'s negative damping at M = 1.2",
         subject: "45° delta",
         section: "§7, eq (36), Fig 17",
         claim: "Supersonic theory (36) indicates “negative damping [m_θ̇ > 0] for the specified practical C.G. range of 0.4 < x₀/c₀ < 0.6 at M = 1.2”.",
@@ -148,6 +156,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
     },
     Conclusion {
         id: "cropping",
+        title: "cropping",
         subject: "both wings",
         section: "§10, Fig 36",
         claim: "Cropping the tips (taper 1/7) gives “a substantial increase in −m_θ̇ at M = 1.2” for the 45° delta, “but this is not the case for the 60° delta”.",
@@ -157,6 +166,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
     },
     Conclusion {
         id: "sweep-diminishing",
+        title: "diminishing returns beyond 60° of sweep",
         subject: "deltas of 45°–75°",
         section: "§8, Figs 25–26",
         claim: "“There are diminishing returns in damping for increased sweep. In fact, little advantage is to be gained for sweep angles greater than about 60°.”",
@@ -166,6 +176,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
     },
     Conclusion {
         id: "omega-approximation",
+        title: "§9's ω̄ approximation",
         subject: "both wings",
         section: "§9, Fig 32",
         claim: "√(−m_w/(μ₁i_B)) is “a good first approximation to the short period frequency parameter” ω̄.",
@@ -175,6 +186,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
     },
     Conclusion {
         id: "omega-maximum",
+        title: "ω̄'s maximum of 0.6",
         subject: "both wings",
         section: "§7",
         claim: "“The frequency parameter for the short period oscillation has in fact a maximum value of 0.6.”",
@@ -184,6 +196,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
     },
     Conclusion {
         id: "45-forward-cg",
+        title: "a forward c.g. improving the damping",
         subject: "45° delta",
         section: "§8, Figs 25–26",
         claim: "“Forward movement of the C.G. improves the damping.”",
@@ -262,12 +275,12 @@ fn transonic_45(f: &Findings) -> Assessment {
 }
 
 /// The note's limit of μ₁ for the 60° delta …
-const MU1_LIMIT: f64 = 200.0;
+pub const MU1_LIMIT: f64 = 200.0;
 /// … "about" it: within this factor.
-const ABOUT: f64 = 1.25;
+pub const ABOUT: f64 = 1.25;
 
 /// Whether `mu1` is "about" [`MU1_LIMIT`].
-fn about_limit(mu1: f64) -> bool {
+pub fn about_limit(mu1: f64) -> bool {
     (mu1 / MU1_LIMIT).ln().abs() <= ABOUT.ln()
 }
 

@@ -7,7 +7,8 @@
 //! §11 responses ([`responses`], 37–38), with the regime bands and sonic
 //! edges of [`regimes`] on those against Mach number — then the
 //! [`summary`] of what was found, the note's [`conclusions`] set beside
-//! it, and the page ([`html`]).
+//! it, and the page ([`html`]); and what README.md shows of it
+//! ([`readme`]).
 //!
 //! Everything here computes; writing the files is `cmd::report`'s.
 
@@ -17,6 +18,7 @@ pub mod damping;
 pub mod html;
 pub mod lifting_surface;
 pub mod quartic;
+pub mod readme;
 pub mod regimes;
 pub mod responses;
 pub mod standard;
@@ -98,15 +100,3 @@ pub const SECTIONS: [Section; 7] = [
         plates: responses::plates,
     },
 ];
-
-/// The files README.md shows, as the report draws them, by their path in
-/// the repository: `docs/figures/fig33.svg` and `docs/figures/fig33.csv`
-/// (Fig. 33, cycles to half amplitude). `cargo xtask regen` writes them.
-pub fn readme_figures() -> Result<Vec<(String, String)>, String> {
-    let study = Study::new();
-    let plate = quartic::fig33(&study);
-    Ok(vec![
-        ("docs/figures/fig33.svg".to_string(), plate.figure.to_svg()?),
-        ("docs/figures/fig33.csv".to_string(), plate.figure.to_csv()),
-    ])
-}

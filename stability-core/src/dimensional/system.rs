@@ -12,7 +12,7 @@ use nalgebra::Matrix4;
 /// A flat, allocation-free view of a [`DimensionalModel`], which is how
 /// users build it ([`DimensionalModel::system`]).
 #[derive(Debug, Clone, Copy, PartialEq, derive_quartic::Quartic)]
-#[quartic(spec = "../specs/dimensional.toml")]
+#[quartic(spec = "specs/dimensional.toml")]
 pub struct DescriptorSystem {
     pub x_u: f64,
     pub x_w: f64,

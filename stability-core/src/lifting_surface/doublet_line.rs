@@ -22,9 +22,10 @@ pub enum LineRule {
     /// panelaero, and Nastran) do.
     Quartic,
     /// The quartic, but on graded pieces on the receiving point's own strip
-    /// ([`DoubletLine::integrate`]) and by two-point Gauss far from it
-    /// ([`DoubletLine::gauss`]): as exact near the singular strip, cheaper
-    /// far from it.
+    /// (the central one [`GRADING`]·|a|/β wide each side, a the point's
+    /// streamwise distance from the line) and by two-point Gauss far from it
+    /// (beyond [`GAUSS_BEYOND`]·e): as exact near the singular strip,
+    /// cheaper far from it.
     #[default]
     Graded,
 }
@@ -52,12 +53,15 @@ const STATIONS: [f64; 5] = [-1.0, -0.5, 0.0, 0.5, 1.0];
 const FAR: f64 = 4.0;
 
 /// The half-width of the central piece of a graded line, in units of the
-/// kernel's own length scale |a|/β there (see [`DoubletLine::integrate`]).
+/// kernel's own length scale |a|/β there, a the receiving point's
+/// streamwise distance from the line at its own station (each next piece is
+/// twice as wide; [`LineRule::Graded`]).
 pub const GRADING: f64 = 1.0;
 
 /// Beyond |ȳ| = GAUSS_BEYOND·e the oscillatory part is integrated by
-/// two-point Gauss–Legendre instead of the quartic (see
-/// [`DoubletLine::gauss`]).
+/// two-point Gauss–Legendre instead of the quartic ([`LineRule::Graded`]):
+/// the integrand is smooth on the scale |ȳ| there, and the error is of
+/// relative order (e/ȳ)⁴/135 of the line's own contribution.
 pub const GAUSS_BEYOND: f64 = 6.0;
 
 /// 1/√3, the two-point Gauss–Legendre station on [−1, 1].
@@ -346,14 +350,14 @@ impl DoubletLine {
     }
 
     /// The oscillatory increment D − D₀ at (x, y): N − N₀ integrated
-    /// across the line by [`Self::integrate`].
+    /// across the line by `rule` ([`LineRule`]).
     pub fn oscillatory(&self, x: f64, y: f64, flow: &KernelFlow, rule: LineRule) -> Complex64 {
         let beta = flow.beta2.sqrt();
         self.integrate(x, y, beta, rule, |x0, y0| kernel::increment(x0, y0, flow)) * self.factor()
     }
 
     /// The first-order term D₁ per unit iκ (κ = ω/V), N₁ integrated across
-    /// the line by [`Self::integrate`]; D = D₀ + iκD₁ + O(κ² ln κ).
+    /// the line by `rule` ([`LineRule`]); D = D₀ + iκD₁ + O(κ² ln κ).
     pub fn first_order(&self, x: f64, y: f64, beta2: f64, rule: LineRule) -> f64 {
         self.integrate(x, y, beta2.sqrt(), rule, |x0, y0| {
             kernel::first_order_numerator(x0, y0, beta2)

@@ -14,7 +14,7 @@ pub mod avl;
 
 /// The generated tables and conversion functions.
 pub mod tables {
-    derive_quartic::notations!("../specs/notation.toml");
+    derive_quartic::notations!("specs/notation.toml");
 }
 
 /// Number of rows.

@@ -1,6 +1,6 @@
 //! Derivative files: a derivative set in any notation of
-//! `specs/notation.toml` (or AVL's `.st` output) and its flight condition,
-//! as TOML.
+//! `stability-core/specs/notation.toml` (or AVL's `.st` output) and its
+//! flight condition, as TOML.
 //!
 //! ```toml
 //! notation = "report"
@@ -112,8 +112,8 @@ pub struct Reading {
     pub parameters: Parameters,
     pub dimensional: Option<Dimensional>,
     pub warnings: Vec<String>,
-    /// The notation of `specs/notation.toml` the values were read in (a
-    /// `notation = "american"` file may be in its C_L/C_D form).
+    /// The notation of `stability-core/specs/notation.toml` the values were
+    /// read in (a `notation = "american"` file may be in its C_L/C_D form).
     pub form: &'static str,
 }
 

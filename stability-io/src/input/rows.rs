@@ -1,6 +1,6 @@
-//! The rows of `specs/notation.toml` the reader uses, resolved at compile
-//! time: a name that is not a row stops the build (no run-time fallback
-//! that could write a misspelt row into another).
+//! The rows of `stability-core/specs/notation.toml` the reader uses,
+//! resolved at compile time: a name that is not a row stops the build (no
+//! run-time fallback that could write a misspelt row into another).
 
 use stability_core::notation::tables::ROWS;
 
@@ -29,7 +29,7 @@ pub const fn index(name: &str) -> usize {
         }
         i += 1;
     }
-    panic!("not a row of specs/notation.toml")
+    panic!("not a row of stability-core/specs/notation.toml")
 }
 
 const fn indices<const N: usize>(names: [&str; N]) -> [usize; N] {

@@ -1,10 +1,11 @@
-//! The reader for the notations of `specs/notation.toml` (report, garner,
-//! ribner, lehrian, duncan, perkins, american): each quantity under the
-//! notation's own name in `[derivatives]` or `[flight]`, quantities the
-//! notation lacks in `[report]`, its parameters in `[parameters]`. Nothing
-//! is silently defaulted or dropped: an unknown name is an error with the
-//! nearest valid one, a name given twice is an error, and the one default
-//! (American notation's C_xalphadot, C_xq = 0) is announced.
+//! The reader for the notations of `stability-core/specs/notation.toml`
+//! (report, garner, ribner, lehrian, duncan, perkins, american): each
+//! quantity under the notation's own name in `[derivatives]` or `[flight]`,
+//! quantities the notation lacks in `[report]`, its parameters in
+//! `[parameters]`. Nothing is silently defaulted or dropped: an unknown
+//! name is an error with the nearest valid one, a name given twice is an
+//! error, and the one default (American notation's C_xalphadot, C_xq = 0)
+//! is announced.
 
 use super::dimensional::Dims;
 use super::raw::{Ctx, RawFile, Table};
@@ -37,8 +38,9 @@ const NEEDED: &[(&str, usize, &str)] = &[(
     "the C_L/C_D form needs the trim drag coefficient: X_u = −½ρVS(C_Du + 2C_D), Z_w = −½ρVS(C_Lα + C_D)",
 )];
 
-/// The C_L/C_D form of American notation (`specs/notation.toml`), which a
-/// file with `notation = "american"` may be written in.
+/// The C_L/C_D form of American notation
+/// (`stability-core/specs/notation.toml`), which a file with
+/// `notation = "american"` may be written in.
 pub const AMERICAN_CL: &str = "american_cl";
 
 /// A notation's values as read, and where each was written.

@@ -4,7 +4,7 @@
 //! Every notation defines its quantity of each row (x_u, …, τ, μ, i_B, …)
 //! from dimensional quantities (X_u, ρ, S, V, c̄, m, …). The conversion
 //! factor between two notations is derived from their definitions
-//! ([`derive`]): every dimensional quantity must cancel (else the
+//! ([`mod@derive`]): every dimensional quantity must cancel (else the
 //! definitions are inconsistent), and the result is compared with the
 //! appendix's printed cell; a disagreement must be declared as an erratum,
 //! as for eq (6). Inverting the relations gives the conversions from the

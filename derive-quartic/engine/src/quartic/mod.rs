@@ -1,9 +1,9 @@
 //! The characteristic-polynomial spec kind: a determinant whose expansion in
 //! the variable gives the coefficients, and the coefficients as a report
-//! printed them, term by term, with declared errata. `specs/quartic.toml`
-//! (eq (4) and eq (6) of the report) is one such spec; another determinant
-//! over other symbols is another spec file of the same kind — nothing here
-//! knows eq (4)'s symbols.
+//! printed them, term by term, with declared errata.
+//! `stability-core/specs/quartic.toml` (eq (4) and eq (6) of the report) is
+//! one such spec; another determinant over other symbols is another spec
+//! file of the same kind — nothing here knows eq (4)'s symbols.
 //!
 //! Loading a spec reads its typed input ([`ast`]), validates it into a
 //! verified model ([`valid`] → [`model`]): the determinant expanded exactly,
