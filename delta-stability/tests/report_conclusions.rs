@@ -30,6 +30,18 @@ use stability_core::study::intervals;
 /// ω̄ approximation holds subsonic too; and with the lattice's aerodynamic
 /// centre further forward, the forward c.g.'s stiffness outweighs its
 /// damping at more Mach numbers.
+///
+/// Moved when a cropped wing's supersonic theory with subsonic leading
+/// edges became its own (issue 19, item 3; `supersonic::subsonic_edge`):
+/// "cropping", Agrees → Partly. At M = 1.2 the cropped wings had been
+/// given (36) at the cropped aspect ratio — the true delta's theory, which
+/// carries no lift aft of the tips' leading corners — and the 60° delta
+/// lost 0.16 in −m_θ̇ by cropping. Linear theory for the cropped wing itself
+/// keeps the true delta's loading everywhere but behind the tips' Mach
+/// lines, and its aerodynamic centre moves forward: the 45° delta gains
+/// +0.29 (was +0.081) and the 60° delta gains +0.065 — above the 0.05
+/// §10 calls significant, so "this is not the case for the 60° delta" no
+/// longer holds; the 45°'s "substantial increase" still does.
 const EXPECTED: &[(&str, Agreement)] = &[
     // fails one cycle at 0.98–1.50, diverges nowhere: 98 % of 0.97–1.5
     ("45-transonic", Agreement::Agrees),
@@ -41,8 +53,8 @@ const EXPECTED: &[(&str, Agreement)] = &[
     ("mwdot-negligible", Agreement::Partly),
     // m_θ̇ of (36) from +0.30 (x₀/c₀ = 0.4) to +0.07 (0.6)
     ("45-m-thetadot-positive", Agreement::Agrees),
-    // −m_θ̇ gains +0.081 (45°), loses 0.16 (60°)
-    ("cropping", Agreement::Agrees),
+    // −m_θ̇ gains +0.29 (45°) and +0.065 (60°, above the 0.05)
+    ("cropping", Agreement::Partly),
     // holds at M 0.50–1.53 (61 % of the Mach numbers); beyond, 75° gains
     ("sweep-diminishing", Agreement::Partly),
     // within 10 % but for the 45° delta at M 0.96–1.09 (14 % at 0.99)

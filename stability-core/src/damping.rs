@@ -158,8 +158,8 @@ pub fn damping_derivatives_with(
             lifting_surface(wing, h, mach, omega_bar, harmonic, &mut out)?
         }
     };
-    // garner-taper is for taper 1/7; supersonic says where it applies a
-    // true-delta formula itself; the lifting surface is for any taper
+    // garner-taper is for taper 1/7; supersonic and the lifting surface
+    // are theories of the cropped wing itself
     let own_rule = matches!(theory, Theory::GarnerTaper | Theory::Supersonic);
     if wing.taper > 0.0 && !own_rule && !theory.is_lifting_surface() {
         out.warnings.push(Warning::TrueDeltaOnly {
@@ -237,11 +237,12 @@ fn incompressible(mach: f64, out: &mut Damping) {
 }
 
 /// The whole supersonic linear theory ([`supersonic::edge_theory`]): eq
-/// (36) with subsonic leading edges (β cot Λ < 1), E and H from Fig 18;
-/// the supersonic-edge theory beyond; continuous at β cot Λ = 1 (within
+/// (36) with subsonic leading edges (β cot Λ < 1), E and H from Fig 18,
+/// its potentials corrected behind the tips for a cropped wing
+/// ([`supersonic::subsonic_edge`]); the supersonic-edge theory beyond;
+/// continuous at β cot Λ = 1 for every taper (within
 /// [`supersonic::SONIC_EDGE_TOLERANCE`], so the 60° delta at M = 2 is
-/// accepted). Warnings: (36), a true-delta theory, on a cropped wing; the
-/// low-frequency rule at ω̄ ([`low_frequency`]).
+/// accepted). Warning: the low-frequency rule at ω̄ ([`low_frequency`]).
 fn supersonic(
     wing: &WingInput,
     h: f64,
@@ -256,12 +257,6 @@ fn supersonic(
     let r = supersonic::edge_theory(&w, mach, h)?;
     if r.regime != EdgeRegime::SupersonicEdge {
         out.fig18 = Some(Fig18::at(r.beta_cot.min(1.0)));
-    }
-    if r.true_delta_formula_on_cropped_wing {
-        out.warnings.push(Warning::TrueDeltaOnly {
-            theory: out.theory,
-            taper: wing.taper,
-        });
     }
     low_frequency(&w, mach, omega_bar, out);
     Ok(r.derivatives.damping)

@@ -10,7 +10,7 @@
 //! | 0.9 < M < 1 | faired: the lattice's values at 0.9 joined to Mangler's at M = 1 | faired: the lattice's at 0.9 joined to linear supersonic theory's at 1.2 |
 //! | M = [`SONIC`] (1) | Mangler's transonic theory (38)–(40) at the short period's ω̄ ("claimed to be valid at M = 1.0") | (faired, as above) |
 //! | 1 < M < 1.2 | faired: Mangler's at M = 1 joined to linear theory's at 1.2 | (faired, as above) |
-//! | M ≥ [`SUPERSONIC_FROM`] (1.2) | linear supersonic theory: (36) while the leading edge is subsonic, the supersonic-edge theory past it (`supersonic::edge_theory`) | the same theory's |
+//! | M ≥ [`SUPERSONIC_FROM`] (1.2) | linear supersonic theory: (36) while the leading edge is subsonic (a cropped wing: its potentials less the tips' corrections, `supersonic::subsonic_edge`), the supersonic-edge theory past it (`supersonic::edge_theory`; continuous at the sonic edge) | the same theory's |
 //!
 //! The bands are where the curve is a guess: the report draws them shaded.
 

@@ -162,7 +162,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
         claim: "Cropping the tips (taper 1/7) gives “a substantial increase in −m_θ̇ at M = 1.2” for the 45° delta, “but this is not the case for the 60° delta”.",
         assess: cropping,
         depends_on: &[],
-        when_they_part: "The note reasoned from Fig 17 with cropping as a shift of axis; we evaluate the cropped wing itself, the c.g. in place, as Fig 36 draws it.",
+        when_they_part: "The note reasoned from Fig 17 with cropping as a shift of axis: the true delta's (36) about another c.g. We evaluate the cropped wing itself, the c.g. in place, as Fig 36 draws it, with its own linear theory (the true delta's potentials less the tips' Mach-cone corrections), which keeps more lift and moves the aerodynamic centre forward.",
     },
     Conclusion {
         id: "sweep-diminishing",

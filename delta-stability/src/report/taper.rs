@@ -48,6 +48,6 @@ pub fn plates(study: &Study) -> Vec<Plate> {
     ));
     vec![Plate::new(
         regimes::faired(fig, study, &[45.0], Basis::Both),
-        "§10: cropping the tips acts like a shift of axis; the cropped wing's theories are the true delta's at its own aspect ratio.",
+        "§10: cropping the tips acts like a shift of axis. The theories are the cropped wing's own — the lattice to M = 0.9, linear supersonic theory from M = 1.2 (with subsonic leading edges the true delta's potentials less the tips' corrections, supersonic::subsonic_edge) — but for Mangler's at M = 1, a true-delta theory taken at the cropped wing's aspect ratio.",
     )]
 }

@@ -5,35 +5,41 @@
 //! coefficients from its damping theory (`aero::Source::Default` under
 //! `--damping supersonic`).
 //!
-//! - Subsonic leading edges, eq (36) (Mangler; Ribner & Malvestuto):
-//!   a = πA/(2E(k)), k² = 1 − β²cot²Λ, so with dE/dm = (E − K)/(2m)
-//!   (m = k², `aero::defaults::ellip_e_and_slope`) and dk²/dM = −2M cot²Λ,
-//!   da/dM = (πA/(2E²))·(dE/dm)·2M cot²Λ; H₀ = ½, dH₀/dM = 0. As M → 1⁺,
-//!   K grows like ln(4/k′) and da/dM like −ln(1/β): linear theory's
-//!   logarithm again (see [`super::transonic`]).
+//! - Subsonic leading edges, true delta, eq (36) (Mangler; Ribner &
+//!   Malvestuto): a = πA/(2E(k)), k² = 1 − β²cot²Λ, so with
+//!   dE/dm = (E − K)/(2m) (m = k², `aero::defaults::ellip_e_and_slope`) and
+//!   dk²/dM = −2M cot²Λ, da/dM = (πA/(2E²))·(dE/dm)·2M cot²Λ; H₀ = ½,
+//!   dH₀/dM = 0. As M → 1⁺, K grows like ln(4/k′) and da/dM like
+//!   −ln(1/β): linear theory's logarithm again (see [`super::transonic`]).
 //! - Sonic or supersonic leading edges, true delta ([`super::strip`]):
 //!   a = 4/β, da/dM = −4M/β³; H₀ = ½.
-//! - Supersonic leading edges, cropped delta ([`super::evvard`]): no closed
-//!   form for H₀ (nor for a where a tip's reach crosses the root), so both
-//!   derivatives are numerical — the fourth-order five-point difference of
-//!   the Evvard integrals with step [`STEP`] in M, central where the stencil
-//!   stays in the theory's domain (β cot Λ ≥ 1, 2βs ≥ c₀) and one-sided
-//!   forward within 2·[`STEP`] of its lower end (the sonic edge, where the
-//!   derivative is the supersonic side's). The integrals' quadrature is a
-//!   fixed tanh-sinh rule, a smooth function of M accurate to about 1e-11,
-//!   so the difference is accurate to about 1e-8 (tests/supersonic.rs:
-//!   against the derivative of the closed-form lift slope
-//!   `evvard::lift_slope_closed` and a central difference of the
-//!   independent direct source integral).
+//! - Cropped delta, either side ([`super::subsonic_edge`] with subsonic
+//!   leading edges, [`super::evvard`] with supersonic ones): no closed
+//!   form for H₀ (nor for a but where a tip's reach stays on its own
+//!   half-wing, supersonic edges), so both derivatives are numerical — the
+//!   fourth-order five-point difference of the potential integrals with
+//!   step [`STEP`] in M, central where the stencil stays on one side of the
+//!   sonic edge and in that side's domain (subsonic edges: 2βs ≥ c_t;
+//!   supersonic: 2βs ≥ c₀), else one-sided: forward near a side's lower
+//!   end (the sonic edge, where in its band of [`super::SONIC_EDGE_TOLERANCE`]
+//!   the derivative is the supersonic side's), backward near its upper end
+//!   (the sonic edge seen from below). The integrals' quadrature is a fixed
+//!   tanh-sinh rule, a smooth function of M accurate to about 1e-11, so the
+//!   difference is accurate to about 1e-8 (tests/supersonic.rs: against
+//!   the derivative of the closed-form lift slope
+//!   `evvard::lift_slope_closed`, a central difference of the independent
+//!   direct source integral, and Richardson-extrapolated differences of
+//!   the subsonic side's values).
 //!
 //! The slope of a has a kink at the sonic edge in linear theory: aβ against
 //! m = β cot Λ rises with slope 2 below m = 1 (E ≈ (π/2)(1 − k²/4)) and is
 //! flat above, so for the true delta da/dM is −2M/β³ on the subsonic side
-//! and −4M/β³ on the supersonic side. a and H₀ are continuous there; their
-//! Mach derivatives, and with them x_u, z_u, m_u, are not.
+//! and −4M/β³ on the supersonic side (a cropped delta's likewise differ).
+//! a and H₀ are continuous there, for every taper; their Mach derivatives,
+//! and with them x_u, z_u, m_u, are not.
 
 use super::eq36::Fig18;
-use super::{EdgeRegime, SupersonicError, Wing, check_mach, evvard};
+use super::{EdgeRegime, SupersonicError, Wing, check_mach};
 use crate::aero::{Value, defaults::ellip_e_and_slope};
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -59,12 +65,12 @@ pub fn edge_coefficients(wing: &Wing, mach: f64) -> Result<EdgeCoefficients, Sup
     let beta = check_mach(mach)?;
     let regime = EdgeRegime::of(beta * wing.cot());
     let (lift_slope, aerodynamic_centre) = match regime {
+        _ if wing.taper > 0.0 => cropped(wing, mach, regime)?,
         EdgeRegime::SubsonicEdge => (eq36_lift_slope(wing, mach), Value::new(0.5, 0.0)),
-        _ if wing.taper == 0.0 => (
+        _ => (
             Value::new(4.0 / beta, -4.0 * mach / (beta * beta * beta)),
             Value::new(0.5, 0.0),
         ),
-        _ => cropped(wing, mach)?,
     };
     Ok(EdgeCoefficients {
         regime,
@@ -83,9 +89,10 @@ fn eq36_lift_slope(wing: &Wing, mach: f64) -> Value {
     Value::new(a, a / f.e * de_dm * 2.0 * mach * cot2)
 }
 
-/// a and H₀ of the cropped delta from the Evvard integrals.
+/// a and H₀ of the cropped delta from its potential integrals
+/// ([`super::subsonic_edge`] or [`super::evvard`], as [`super::edge_theory`]).
 fn cropped_values(wing: &Wing, mach: f64) -> Result<[f64; 2], SupersonicError> {
-    let d = evvard::integrals(wing, mach)?.derivatives(wing, mach, 0.0);
+    let d = super::edge_theory(wing, mach, 0.0)?.derivatives;
     Ok([d.lift_slope, d.aerodynamic_centre])
 }
 
@@ -96,18 +103,47 @@ pub fn domain_start(wing: &Wing) -> f64 {
     wing.sonic_mach().max((1.0 + 1.0 / (two_s * two_s)).sqrt())
 }
 
+/// Whether the cropped delta's theory at `mach` is the one of the side
+/// `subsonic` (subsonic leading edges, [`super::subsonic_edge`], which
+/// needs 2βs ≥ c_t; or sonic and supersonic ones, [`super::evvard`], which needs
+/// 2βs ≥ c₀): a stencil stays on one side, since a and H₀ have a kink at
+/// the sonic edge.
+fn on_side(wing: &Wing, subsonic: bool, mach: f64) -> bool {
+    if mach.is_nan() || mach <= 1.0 {
+        return false;
+    }
+    let beta = (mach * mach - 1.0).sqrt();
+    let two_beta_s = 2.0 * beta * wing.semi_span();
+    if subsonic {
+        EdgeRegime::of(beta * wing.cot()) == EdgeRegime::SubsonicEdge && two_beta_s >= wing.taper
+    } else {
+        EdgeRegime::of(beta * wing.cot()) != EdgeRegime::SubsonicEdge && two_beta_s >= 1.0
+    }
+}
+
 /// The cropped delta's a and H₀ with their five-point numerical
-/// derivatives (module doc).
-fn cropped(wing: &Wing, mach: f64) -> Result<(Value, Value), SupersonicError> {
+/// derivatives (module doc): central where the stencil stays on the side
+/// of the sonic edge `regime` is on and in its domain, else one-sided
+/// forward, else backward.
+fn cropped(wing: &Wing, mach: f64, regime: EdgeRegime) -> Result<(Value, Value), SupersonicError> {
     let f0 = cropped_values(wing, mach)?;
     let at = |k: f64| cropped_values(wing, mach + k * STEP);
-    let d: [f64; 2] = if mach - 2.0 * STEP >= domain_start(wing) {
+    let subsonic = regime == EdgeRegime::SubsonicEdge;
+    let fits = |ks: &[f64]| ks.iter().all(|&k| on_side(wing, subsonic, mach + k * STEP));
+    let d: [f64; 2] = if fits(&[-2.0, -1.0, 1.0, 2.0]) {
         let (m2, m1, p1, p2) = (at(-2.0)?, at(-1.0)?, at(1.0)?, at(2.0)?);
         std::array::from_fn(|i| (m2[i] - 8.0 * m1[i] + 8.0 * p1[i] - p2[i]) / (12.0 * STEP))
     } else {
-        let (p1, p2, p3, p4) = (at(1.0)?, at(2.0)?, at(3.0)?, at(4.0)?);
+        // forward (k = 1…4), or backward (k = −1…−4: the same weights,
+        // negated)
+        let sign = if fits(&[1.0, 2.0, 3.0, 4.0]) {
+            1.0
+        } else {
+            -1.0
+        };
+        let (p1, p2, p3, p4) = (at(sign)?, at(2.0 * sign)?, at(3.0 * sign)?, at(4.0 * sign)?);
         std::array::from_fn(|i| {
-            (-25.0 * f0[i] + 48.0 * p1[i] - 36.0 * p2[i] + 16.0 * p3[i] - 3.0 * p4[i])
+            sign * (-25.0 * f0[i] + 48.0 * p1[i] - 36.0 * p2[i] + 16.0 * p3[i] - 3.0 * p4[i])
                 / (12.0 * STEP)
         })
     };

@@ -89,6 +89,7 @@ pub fn integrals(wing: &Wing, mach: f64) -> Result<PotentialIntegrals, Supersoni
             mach,
             taper: wing.taper,
             two_beta_s,
+            limit: 1.0,
         });
     }
     let strip = strip_integrals(wing, mach);

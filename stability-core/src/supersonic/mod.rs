@@ -1,29 +1,33 @@
-//! Linear supersonic theory of flat triangular and cropped-delta wings
-//! whose leading edges are supersonic, β cot Λ ≥ 1 (β = √(M² − 1)): the
-//! lift slope a = ∂C_L/∂α, the aerodynamic centre H₀ and the damping
+//! Linear supersonic theory of flat triangular and cropped-delta wings:
+//! the lift slope a = ∂C_L/∂α, the aerodynamic centre H₀ and the damping
 //! derivatives z_q, m_q, z_ẇ, m_ẇ in the report's notation (§3, §7: forces
 //! on ½ρV²S, moments on ½ρV²Sc̄, rates per qc̄/V and α̇c̄/V, c̄ the M.A.C., h
-//! the c.g. aft of the M.A.C.'s leading edge in M.A.C.) — the theory that
-//! takes over from the report's eq (36) (Mangler; Ribner & Malvestuto,
-//! subsonic leading edges) where the leading edge turns supersonic.
+//! the c.g. aft of the M.A.C.'s leading edge in M.A.C.), on both sides of
+//! the sonic leading edge β cot Λ = 1 (β = √(M² − 1)): the report's eq (36)
+//! (Mangler; Ribner & Malvestuto, subsonic leading edges) and the theory
+//! that takes over from it where the leading edge turns supersonic.
 //!
 //! The wing: straight leading edge swept Λ from the apex, unswept (hence
 //! supersonic) trailing edge, streamwise tips, taper λ ∈ [0, 1). With the
 //! leading and trailing edges supersonic the only subsonic edges are the
 //! tips, and the problem is direct: the potential is the source integral
 //! over the wing (Puckett 1946), corrected in the tip Mach cones by
-//! Evvard's reduced area (NACA TN 1382 / Rep. 951, 1950). To first order in
-//! frequency the oscillatory source kernel (Miles, *The Potential Theory of
-//! Unsteady Supersonic Flow*, 1959, ch. 5; Garrick & Rubinow, NACA Rep.
+//! Evvard's reduced area (NACA TN 1382 / Rep. 951, 1950). With subsonic
+//! leading edges the true delta's potentials are Ribner & Malvestuto's
+//! (eq 36), and a cropped wing's are theirs corrected behind the tips by
+//! the same theorem of Evvard's, taken along the Mach lines. To first order
+//! in frequency the oscillatory source kernel (Miles, *The Potential Theory
+//! of Unsteady Supersonic Flow*, 1959, ch. 5; Garrick & Rubinow, NACA Rep.
 //! 846, 1946) adds the α̇ terms. `docs/damping-theories.md` derives every
 //! formula used here.
 //!
 //! | module | what | route |
 //! | --- | --- | --- |
 //! | [`eq36`](mod@eq36) | eq (36) for subsonic leading edges and the functions of Fig 18 | closed form (elliptic integrals) |
+//! | [`subsonic_edge`] | the cropped delta with subsonic leading edges: the true delta's potentials less the tips' corrections | closed-form potentials, integrated along the Mach lines and over the tip regions |
 //! | [`strip`] | Ackeret's two-dimensional values and their strip integrals; the true delta exactly | closed form |
-//! | [`evvard`] | the cropped delta: strip values less the tip deficits | closed-form weights, integrated over the tip regions |
-//! | [`source`] | the same seven potential integrals from the source integral at each receiver | independent numerical route (tests) |
+//! | [`evvard`] | the cropped delta with supersonic leading edges: strip values less the tip deficits | closed-form weights, integrated over the tip regions |
+//! | [`source`] | the same seven potential integrals from the source integral at each receiver (supersonic leading edges) | independent numerical route (tests) |
 //! | [`coefficients`] | the lift slope and aerodynamic centre with their Mach derivatives (eqs 27–29) | closed forms; the cropped delta by a tested numerical derivative |
 //! | [`transonic`] | where (36)'s low-frequency theory is valid as M → 1⁺ | stated rule |
 //! | [`wave_drag`] | zero-lift wave drag against the edge parameter (the note's Fig 1) | linear theory, numerical |
@@ -34,6 +38,7 @@ pub mod evvard;
 pub mod quadrature;
 pub mod source;
 pub mod strip;
+pub mod subsonic_edge;
 pub mod transonic;
 pub mod wave_drag;
 
@@ -46,12 +51,12 @@ use std::f64::consts::PI;
 
 /// |β cot Λ − 1| at or below which the leading edge counts as sonic.
 ///
-/// Both theories are continuous at β cot Λ = 1 (`tests/supersonic.rs`), so
-/// the choice decides only which formula is evaluated there; 1e-9 covers
-/// the rounding of β cot Λ (the 60° delta at M = 2 computes
-/// 1.0000000000000002) with a margin of seven decades, and (36) differs
-/// from its sonic-edge limit by O(1 − β²cot²Λ), i.e. by 2e-9 relatively at
-/// the tolerance.
+/// Both theories are continuous at β cot Λ = 1 for every taper
+/// (`tests/supersonic.rs`), so the choice decides only which formula is
+/// evaluated there; 1e-9 covers the rounding of β cot Λ (the 60° delta at
+/// M = 2 computes 1.0000000000000002) with a margin of seven decades, and
+/// the subsonic-edge theory differs from its sonic-edge limit by
+/// O(1 − β²cot²Λ), i.e. by 2e-9 relatively at the tolerance.
 pub const SONIC_EDGE_TOLERANCE: f64 = 1e-9;
 
 /// The planform in the units of this module: a [`Planform`] of unit root
@@ -89,13 +94,17 @@ pub enum SupersonicError {
         beta_cot: f64,
         sonic: f64,
     },
+    /// `limit` is the least 2βs/c₀ of the theory: 1 with supersonic
+    /// leading edges ([`evvard`]), the taper with subsonic ones
+    /// ([`subsonic_edge`]).
     #[error(
-        "at M = {mach} the Mach waves from one tip reach the other (2β·s/c₀ = {two_beta_s:.4} < 1; taper {taper}): Evvard's single reflection does not hold"
+        "at M = {mach} the Mach waves from one tip reach the other (2β·s/c₀ = {two_beta_s:.4} < {limit}; taper {taper}): Evvard's single reflection does not hold"
     )]
     TipsInteract {
         mach: f64,
         taper: f64,
         two_beta_s: f64,
+        limit: f64,
     },
     #[error(
         "the ridge of a double-wedge section must lie strictly inside the chord (0 < f < 1), not {0}"
@@ -244,9 +253,13 @@ fn check_mach(mach: f64) -> Result<f64, SupersonicError> {
 
 /// The supersonic-edge theory at `mach`: the true delta in closed form
 /// ([`strip::true_delta`]), a cropped delta by [`evvard::integrals`]. Needs
-/// β cot Λ ≥ 1 − [`SONIC_EDGE_TOLERANCE`] (a value within the tolerance is
-/// evaluated at the sonic edge itself) and, for a cropped wing,
-/// 2βs ≥ c₀ (no Mach wave from one tip reaches the other).
+/// β cot Λ ≥ 1 − [`SONIC_EDGE_TOLERANCE`] (within the tolerance, the
+/// sonic-edge formula) and, for a cropped wing, 2βs ≥ c₀ (no Mach wave
+/// from one tip reaches the other). In the tolerance's band below the
+/// edge (β cot Λ < 1) a cropped wing's integrals are
+/// [`subsonic_edge::integrals`] — equal to Evvard's at the edge to
+/// rounding, and valid there where 2βs = 2β cot Λ·(1 − λ) falls below c₀
+/// by rounding (λ = ½).
 pub fn supersonic_edge(wing: &Wing, mach: f64, h: f64) -> Result<Derivatives, SupersonicError> {
     let beta = check_mach(mach)?;
     if !h.is_finite() {
@@ -266,7 +279,12 @@ pub fn supersonic_edge(wing: &Wing, mach: f64, h: f64) -> Result<Derivatives, Su
     if wing.taper == 0.0 {
         return Ok(strip::true_delta(mach, h));
     }
-    Ok(evvard::integrals(wing, mach)?.derivatives(wing, mach, h))
+    let integrals = if m < 1.0 {
+        subsonic_edge::integrals(wing, mach)?
+    } else {
+        evvard::integrals(wing, mach)?
+    };
+    Ok(integrals.derivatives(wing, mach, h))
 }
 
 /// Which theory [`edge_theory`] used.
@@ -299,16 +317,16 @@ pub struct EdgeDerivatives {
     pub regime: EdgeRegime,
     pub beta_cot: f64,
     pub derivatives: Derivatives,
-    /// (36) is a true-delta theory: set when it was applied to a cropped
-    /// wing (with the cropped wing's aspect ratio, as `damping` does).
-    pub true_delta_formula_on_cropped_wing: bool,
 }
 
-/// The single entry point for M > 1: eq (36) with its own lift slope
-/// πA/(2E) and aerodynamic centre H₀ = ½ (from m_w = z_w(½ − h)) where the
-/// leading edge is subsonic, the supersonic-edge theory where it is
-/// supersonic, chosen by β cot Λ with [`SONIC_EDGE_TOLERANCE`]; continuous
-/// at the sonic edge (`tests/supersonic.rs`).
+/// The single entry point for M > 1, chosen by β cot Λ with
+/// [`SONIC_EDGE_TOLERANCE`]: where the leading edge is subsonic, eq (36)
+/// with its own lift slope πA/(2E) and aerodynamic centre H₀ = ½ (from
+/// m_w = z_w(½ − h)) for the true delta ([`eq36_with_own_aero`]), the same
+/// theory's potentials corrected behind the tips for a cropped one
+/// ([`subsonic_edge`]); where it is supersonic (or sonic), the
+/// supersonic-edge theory ([`supersonic_edge`]). Continuous in M across
+/// the sonic edge for every taper (`tests/supersonic.rs`).
 pub fn edge_theory(wing: &Wing, mach: f64, h: f64) -> Result<EdgeDerivatives, SupersonicError> {
     let beta = check_mach(mach)?;
     if !h.is_finite() {
@@ -320,19 +338,28 @@ pub fn edge_theory(wing: &Wing, mach: f64, h: f64) -> Result<EdgeDerivatives, Su
     let m = beta * wing.cot();
     let regime = EdgeRegime::of(m);
     let derivatives = match regime {
-        EdgeRegime::SubsonicEdge => eq36_with_own_aero(wing, mach, h),
+        EdgeRegime::SubsonicEdge if wing.taper == 0.0 => eq36_with_own_aero(wing, mach, h),
+        EdgeRegime::SubsonicEdge => {
+            subsonic_edge::integrals(wing, mach)?.derivatives(wing, mach, h)
+        }
         _ => supersonic_edge(wing, mach, h)?,
     };
     Ok(EdgeDerivatives {
         regime,
         beta_cot: m,
         derivatives,
-        true_delta_formula_on_cropped_wing: regime == EdgeRegime::SubsonicEdge && wing.taper > 0.0,
     })
 }
 
 /// Eq (36) as `damping::eq36` recovers it, with (36)'s own lift slope
-/// a = πA/(2E) (z_w = −πA/(2E)) and aerodynamic centre ½ (m_w = z_w(½ − h)).
+/// a = πA/(2E) (z_w = −πA/(2E)) and aerodynamic centre ½ (m_w = z_w(½ − h)):
+/// the true delta's theory. On a cropped wing with the cropped aspect
+/// ratio it is not the cropped wing's: its a·S = (π/2E)·4s² is the lift of
+/// the true delta of the same span, as if the wing aft of the tips' leading
+/// corners carried none (a slender-wing result), where linear theory loses
+/// lift only behind the tips' Mach lines — at the sonic edge, 45°, λ = 1/7,
+/// a = 3.00 against the cropped wing's 3.72 ([`subsonic_edge`], which
+/// [`edge_theory`] uses there; issue 19, item 3).
 pub fn eq36_with_own_aero(wing: &Wing, mach: f64, h: f64) -> Derivatives {
     let f = Fig18::at(wing.beta_cot(mach));
     let a = wing.aspect_ratio();
