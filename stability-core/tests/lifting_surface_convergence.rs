@@ -3,10 +3,10 @@
 //! zero — of a lattice twice as dense in each direction, for the note's
 //! wings, cropped deltas and aspect ratios 0.5 to 8, at M = 0, 0.8
 //! (quasi-steady) and M = 0.5, ω̄ = 0.5. The dense lattice's values are a
-//! fixture, which debug-mode CI could not afford to recompute: the example
-//! writes it, and checks it against a fresh computation —
-//! `cargo run --release -p stability-core --example
-//! lifting_surface_convergence -- --write` (or `-- --check`, a few seconds).
+//! fixture, written by `cargo run --release -p stability-core --example
+//! lifting_surface_convergence -- --write`, and recomputed here to hold it
+//! to the code (the test profile optimises stability-core and the dense
+//! solver: seconds).
 
 #[path = "../examples/lifting_surface_convergence.rs"]
 #[allow(dead_code)]
@@ -64,6 +64,31 @@ fn the_default_lattice_is_within_half_a_percent_of_one_twice_as_dense() {
                 "{name}, M = {mach}, ω̄ = {omega_bar}: {} = {x} against {y} twice as dense",
                 convergence::NAMES[k]
             );
+        }
+    }
+}
+
+/// The fixture is the dense lattice's, recomputed now from the example's
+/// wings and conditions, to 1e-9 (relative): a change to the lattice that
+/// moves it fails here, not only in a separate run of the example.
+#[test]
+fn the_fixture_is_the_dense_lattice_of_the_present_code() {
+    let cases = cases();
+    let mut k = 0;
+    for (name, wing) in convergence::wings() {
+        for (mach, omega_bar) in convergence::CONDITIONS {
+            let (fixture_name, _, m, w, dense) = &cases[k];
+            assert_eq!((fixture_name.as_str(), *m, *w), (name, mach, omega_bar));
+            let spec = LatticeSpec::for_wing(&wing).scaled(2);
+            let fine = convergence::outputs(&wing, spec, mach, omega_bar);
+            for (j, (x, y)) in fine.iter().zip(dense).enumerate() {
+                assert!(
+                    (x - y).abs() <= 1e-9 * (1.0 + y.abs()),
+                    "{name}, M = {mach}, ω̄ = {omega_bar}: {} = {x}, the fixture {y}; rewrite it with the example's --write",
+                    convergence::NAMES[j]
+                );
+            }
+            k += 1;
         }
     }
 }
