@@ -134,7 +134,7 @@ const THEORIES: [Entry; 8] = [
             name: "supersonic",
             equations: "(36)",
             summary: "supersonic linear theory (M > 1): Mangler, Ribner & Malvestuto for subsonic leading edges, conical flow beyond the sonic edge",
-            validity: "M > 1, true and cropped deltas, ω̄(c₀/c̄)M²/(M² − 1) small (warns past it)",
+            validity: "M > 1; true deltas, and cropped ones while the tips' Mach waves do not meet on the wing; ω̄(c₀/c̄)M²/(M² − 1) small (warns past it)",
             supplies: "z_q, z_ẇ, m_q, m_ẇ, and its own lift slope and aerodynamic centre",
             source: "K.W. Mangler; H.S. Ribner & F.S. Malvestuto, NACA Rep. 908 (1948); conical flow for supersonic leading edges (`supersonic`)",
         },

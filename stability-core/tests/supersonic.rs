@@ -368,7 +368,7 @@ fn errors_are_typed() {
     ));
     assert!(matches!(
         supersonic::edge_theory(&w, f64::NAN, 0.25),
-        Err(SupersonicError::NonFinite { .. })
+        Err(SupersonicError::Invalid(_))
     ));
     assert!(matches!(
         Wing::new(0.0, 0.0),

@@ -200,7 +200,46 @@ fn artefacts(root: &Path) -> Result<Vec<Artefact>, String> {
         part: Part::Between(delta_stability::report::readme::MARKER),
         contents: readme.conclusions,
     });
+    out.push(Artefact {
+        path: MODELS.into(),
+        part: Part::Between("models"),
+        contents: models_table(),
+    });
     Ok(out)
+}
+
+/// The document whose table of models the registry writes.
+const MODELS: &str = "docs/models.md";
+
+/// The registry's rows (`stability_core::theory::Row`) as Markdown: the
+/// damping models, then the aerodynamic models.
+fn models_table() -> String {
+    use stability_core::aero::AeroModelName;
+    use stability_core::case::DampingModel;
+    use stability_core::theory::Row;
+    let cell = |s: &str| s.replace('|', "\\|");
+    let rows = |title: &str, flag: &str, rows: Vec<&Row>| {
+        let mut t = format!(
+            "\n{title} (`{flag}`):\n\n| name | equations | what it is | valid | supplies | source |\n| --- | --- | --- | --- | --- | --- |\n"
+        );
+        for r in rows {
+            t.push_str(&format!(
+                "| `{}` | {} | {} | {} | {} | {} |\n",
+                r.name,
+                cell(r.equations),
+                cell(r.summary),
+                cell(r.validity),
+                cell(r.supplies),
+                cell(r.source)
+            ));
+        }
+        t
+    };
+    let damping = DampingModel::ALL.iter().map(|m| m.row()).collect();
+    let aero = AeroModelName::ALL.iter().map(|m| m.row()).collect();
+    let mut s = rows("Damping models", "--damping, [model] damping", damping);
+    s.push_str(&rows("Aerodynamic models", "--aero, [model] aero", aero));
+    s
 }
 
 fn load<T, E: std::fmt::Display>(
@@ -368,18 +407,31 @@ mod tests {
     fn check_mode_names_what_is_stale_and_regen_restores_it() {
         let dir = Scratch::new("regen");
         let tmp = &dir.0;
-        let readme = std::fs::read_to_string(crate::root().join(README)).unwrap();
-        std::fs::write(tmp.join(README), format!("# a copy\n\n{readme}")).unwrap();
+        // the files of which a part is generated, copied (the README with a
+        // line of its own before it)
+        for a in computed() {
+            if let Part::Between(_) = a.part {
+                let text = std::fs::read_to_string(crate::root().join(&a.path)).unwrap();
+                let path = tmp.join(&a.path);
+                std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+                std::fs::write(path, format!("# a copy\n\n{text}")).unwrap();
+            }
+        }
         apply(tmp, computed(), false).unwrap();
         apply(tmp, computed(), true).unwrap();
         let fresh = files(tmp);
         assert_eq!(fresh.len(), computed().len());
+        let part_of = |rel: &str| {
+            computed().iter().find_map(|a| match a.part {
+                Part::Between(name) if a.path == rel => Some(name),
+                _ => None,
+            })
+        };
         for (rel, text) in &fresh {
             let mut lines = text.lines();
-            let first = if rel == README {
-                lines.find(|l| l.starts_with("<!-- conclusions:begin"))
-            } else {
-                lines.next()
+            let first = match part_of(rel) {
+                Some(name) => lines.find(|l| l.starts_with(&format!("<!-- {name}:begin"))),
+                None => lines.next(),
             };
             assert!(
                 first.is_some_and(|l| l.contains(PREAMBLE)),
@@ -419,6 +471,7 @@ mod tests {
         apply(tmp, computed(), false).unwrap();
         assert_eq!(files(tmp), fresh);
         assert!(fresh[README].starts_with("# a copy\n\n"));
+        let readme = std::fs::read_to_string(crate::root().join(README)).unwrap();
         std::fs::write(tmp.join(README), readme.replace("conclusions:end", "end")).unwrap();
         let e = apply(tmp, computed(), true).unwrap_err();
         assert!(e.starts_with("README.md lacks the markers"), "{e}");

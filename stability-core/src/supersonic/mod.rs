@@ -44,6 +44,7 @@ pub mod wave_drag;
 
 use crate::derivatives::DampingDerivatives;
 use crate::geometry::{self, GeometryError, Planform, Size};
+use crate::invalid::Invalid;
 pub use coefficients::{EdgeCoefficients, edge_coefficients};
 use eq36::{Fig18, eq36};
 use serde::Serialize;
@@ -78,8 +79,8 @@ impl std::ops::Deref for Wing {
 /// Why the supersonic-edge theory cannot be applied.
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
 pub enum SupersonicError {
-    #[error("{what} must be a finite number, not {value}")]
-    NonFinite { what: &'static str, value: f64 },
+    #[error(transparent)]
+    Invalid(#[from] Invalid<&'static str>),
     #[error("the leading-edge sweep must lie strictly between 0° and 90°, not {0}°")]
     Sweep(f64),
     #[error("the taper ratio must lie in [0, 1), not {0}")]
@@ -123,10 +124,11 @@ impl Wing {
     /// λ ∈ [0, 1), checked by [`Planform::new`].
     pub fn new(sweep_le: f64, taper: f64) -> Result<Wing, SupersonicError> {
         if !sweep_le.is_finite() {
-            return Err(SupersonicError::NonFinite {
-                what: "the sweep",
+            return Err(Invalid::NonFinite {
+                quantity: "the sweep",
                 value: sweep_le,
-            });
+            }
+            .into());
         }
         match Planform::new(sweep_le, taper, Size::RootChord(1.0)) {
             Ok(p) => Ok(Wing(p)),
@@ -240,10 +242,11 @@ impl PotentialIntegrals {
 
 fn check_mach(mach: f64) -> Result<f64, SupersonicError> {
     if !mach.is_finite() {
-        return Err(SupersonicError::NonFinite {
-            what: "the Mach number",
+        return Err(Invalid::NonFinite {
+            quantity: "the Mach number",
             value: mach,
-        });
+        }
+        .into());
     }
     if mach <= 1.0 {
         return Err(SupersonicError::SubsonicMach(mach));
@@ -263,10 +266,11 @@ fn check_mach(mach: f64) -> Result<f64, SupersonicError> {
 pub fn supersonic_edge(wing: &Wing, mach: f64, h: f64) -> Result<Derivatives, SupersonicError> {
     let beta = check_mach(mach)?;
     if !h.is_finite() {
-        return Err(SupersonicError::NonFinite {
-            what: "h",
+        return Err(Invalid::NonFinite {
+            quantity: "h",
             value: h,
-        });
+        }
+        .into());
     }
     let m = beta * wing.cot();
     if EdgeRegime::of(m) == EdgeRegime::SubsonicEdge {
@@ -330,10 +334,11 @@ pub struct EdgeDerivatives {
 pub fn edge_theory(wing: &Wing, mach: f64, h: f64) -> Result<EdgeDerivatives, SupersonicError> {
     let beta = check_mach(mach)?;
     if !h.is_finite() {
-        return Err(SupersonicError::NonFinite {
-            what: "h",
+        return Err(Invalid::NonFinite {
+            quantity: "h",
             value: h,
-        });
+        }
+        .into());
     }
     let m = beta * wing.cot();
     let regime = EdgeRegime::of(m);

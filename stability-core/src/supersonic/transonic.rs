@@ -41,6 +41,7 @@
 //! has to bridge.
 
 use super::{SupersonicError, Wing};
+use crate::invalid::Invalid;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -71,10 +72,11 @@ fn check(mach: f64, omega_bar: f64) -> Result<(), SupersonicError> {
         return Err(SupersonicError::Frequency(omega_bar));
     }
     if !mach.is_finite() {
-        return Err(SupersonicError::NonFinite {
-            what: "the Mach number",
+        return Err(Invalid::NonFinite {
+            quantity: "the Mach number",
             value: mach,
-        });
+        }
+        .into());
     }
     if mach <= 1.0 {
         return Err(SupersonicError::SubsonicMach(mach));

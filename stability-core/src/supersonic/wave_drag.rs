@@ -32,6 +32,7 @@
 
 use super::SupersonicError;
 use super::quadrature::{adaptive, tanh_sinh};
+use crate::invalid::Invalid;
 use std::f64::consts::PI;
 
 /// The note's sections, as linear theory can take them: a double wedge,
@@ -127,10 +128,11 @@ fn chevron_area(xp: f64, y: f64, me: f64) -> f64 {
 /// (0 < f < 1), computed at β = 1 (the scaled drag depends on m alone).
 pub fn scaled_wave_drag(m: f64, ridge: f64) -> Result<f64, SupersonicError> {
     if !(m.is_finite() && m > 0.0) {
-        return Err(SupersonicError::NonFinite {
-            what: "the edge parameter β cot Λ",
+        return Err(Invalid::NonFinite {
+            quantity: "the edge parameter β cot Λ",
             value: m,
-        });
+        }
+        .into());
     }
     if !(ridge > 0.0 && ridge < 1.0) {
         return Err(SupersonicError::Ridge(ridge));
