@@ -272,6 +272,35 @@ fn a_csv_table_without_a_header_is_used_whole() {
 }
 
 #[test]
+fn a_first_row_with_one_bad_cell_is_an_error_not_a_header() {
+    let dir = Scratch::new();
+    let cfg = dir.write(
+        "c.toml",
+        example("delta-45.toml").replace(
+            "damping = \"faired\"",
+            "damping = \"faired\"\n[model.tables]\nzero_lift_drag = { file = \"t.csv\" }",
+        ),
+    );
+    for (first, at) in [
+        (
+            "0.5,2.6x",
+            "t.csv:1:5: column 2 (value): `2.6x` is not a number",
+        ),
+        (
+            "O.5,2.6",
+            "t.csv:1:1: column 1 (Mach): `O.5` is not a number",
+        ),
+    ] {
+        dir.write("t.csv", format!("{first}\n0.7,0.03\n2.0,0.04\n"));
+        let err = stderr(&run_err(&["analyze", path(&cfg), "--mach", "0.8"], INPUT));
+        assert!(err.contains(at), "{first}: {err}");
+    }
+    // a header is a first line with no number in it
+    dir.write("t.csv", "mach,cd0\n0.5,0.02\n2.0,0.04\n");
+    run_ok(&["analyze", path(&cfg), "--mach", "0.8"]);
+}
+
+#[test]
 fn a_huge_string_gives_a_short_message() {
     let dir = Scratch::new();
     let huge = "a".repeat(10 << 20);
