@@ -557,3 +557,37 @@ fn an_analysis_that_overflows_is_an_error_at_the_value_behind_it() {
         assert_short(&err);
     }
 }
+
+/// A `[dimensional]` table for the 45° example: τ known, the modes in
+/// seconds and the short-period frequency requirement assessed.
+const SECONDS: &str =
+    "\n[dimensional]\nV = 250.0\nrho = 0.41\nS = 93.0\nchord = 6.6\nmass = 12000.0\n";
+
+#[test]
+fn an_undefined_cap_is_not_assessed_not_graded_on_infinity() {
+    let dir = Scratch::new();
+    let report = format!("{}{SECONDS}", example("tailless-delta-45.toml"));
+    let dimensional = example("aircraft/boeing-747-etkin-reid.toml");
+    for (text, why) in [
+        (report.replace("c_l = 0.3 ", "c_l = 0.0 "), "C_L = 0"),
+        (report.replace("z_w = -3.2", "z_w = 0.0 "), "Z_w = 0"),
+        (dimensional.replace("g = 9.81 ", "g = 5e-324 "), "g → 0"),
+    ] {
+        let f = dir.write("x.toml", &text);
+        let page = stdout(&run_ok(&["quartic", path(&f)]));
+        let line = page
+            .lines()
+            .find(|l| l.contains("short-period frequency"))
+            .unwrap_or_else(|| panic!("{why}: no requirement line:\n{page}"));
+        assert!(
+            line.contains("not assessed") && line.contains(why),
+            "{line}"
+        );
+        // no level graded on an infinite or undefined CAP, no `inf` printed
+        assert!(!line.contains("Level") && !line.contains("inf "), "{line}");
+        let j = json(&run_ok(&["quartic", path(&f), "--json"]));
+        assert!(j.get("short_period_frequency").is_none(), "{why}: {j}");
+        let reason = j["short_period_frequency_not_assessed"].as_str().unwrap();
+        assert!(reason.contains(why), "{reason}");
+    }
+}

@@ -107,9 +107,7 @@ pub fn page(cfg: &config::Config, res: &Results) -> String {
         &r.analysis,
         res.flight.map(|(_, p)| p.tau),
     ));
-    if let Some(f) = &res.engineering.short_period_frequency {
-        let _ = writeln!(s, "{}", crate::engineering::frequency_line(f));
-    }
+    s.push_str(&super::quartic::frequency_line(&res.engineering));
     let lift_slope = r.coefficients.lift_slope.value;
     let m = Margins::of(&r.analysis.quartic, &r.derivatives, lift_slope);
     let _ = writeln!(

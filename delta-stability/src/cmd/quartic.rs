@@ -81,12 +81,25 @@ pub fn table(input: &DerivativeFile, a: &Analysis, engineering: &Engineering) ->
         a,
         input.tau(),
     );
-    if let Some(f) = &engineering.short_period_frequency {
-        s.push_str(&crate::engineering::frequency_line(f));
-        s.push('\n');
-    }
+    s.push_str(&frequency_line(engineering));
     s.push_str(&crate::engineering::tables(engineering));
     s
+}
+
+/// The MIL-F-8785C short-period frequency requirement's line: the levels,
+/// or why it is not assessed (CAP undefined); empty when it does not
+/// apply (no oscillatory short period, or no times in seconds).
+pub fn frequency_line(e: &Engineering) -> String {
+    match (
+        &e.short_period_frequency,
+        &e.short_period_frequency_not_assessed,
+    ) {
+        (Some(f), _) => format!("{}\n", crate::engineering::frequency_line(f)),
+        (None, Some(why)) => {
+            format!("MIL-F-8785C short-period frequency (§3.2.2.1.1): not assessed: {why}\n")
+        }
+        (None, None) => String::new(),
+    }
 }
 
 /// `quartic` of a `notation = "dimensional"` set: the general model
@@ -116,10 +129,7 @@ fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> 
         input.path
     );
     let mut page = crate::page_dimensional::page(&title, &a);
-    if let Some(f) = &engineering.short_period_frequency {
-        page.push_str(&crate::engineering::frequency_line(f));
-        page.push('\n');
-    }
+    page.push_str(&frequency_line(&engineering));
     page.push_str(&crate::engineering::tables(&engineering));
     print(&page)
 }
