@@ -151,11 +151,20 @@ pub fn warn_all(warnings: &[String]) {
     }
 }
 
-/// Prints `value` as pretty JSON (the `--json` of every command).
-pub fn print_json(value: &impl serde::Serialize) -> Result<(), crate::Failure> {
+/// Checks that every number of a result is finite (the guard of every
+/// writer, [`stability_io::finite`]): the error names the field and the
+/// input file `source` the result is of.
+pub fn finite(source: &str, value: &impl serde::Serialize) -> Result<(), crate::Failure> {
+    Ok(stability_io::finite::guard(source, value)?)
+}
+
+/// Prints `value`, a result of the input file `source`, as pretty JSON
+/// (the `--json` of every command), every number in it finite.
+pub fn print_json(source: &str, value: &impl serde::Serialize) -> Result<(), crate::Failure> {
+    finite(source, value)?;
     let text = serde_json::to_string_pretty(value).map_err(|e| {
         crate::Failure::Input(stability_io::diag::InputError::file(
-            "<output>",
+            source,
             format!("the result cannot be written as JSON: {e}"),
         ))
     })?;

@@ -591,3 +591,198 @@ fn an_undefined_cap_is_not_assessed_not_graded_on_infinity() {
         assert!(reason.contains(why), "{reason}");
     }
 }
+
+/// Each mode's damping ratio, by mode name, from `quartic --json`.
+fn damping_ratios(j: &serde_json::Value) -> Vec<(String, f64)> {
+    let mut v: Vec<(String, f64)> = j["modes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|m| {
+            Some((
+                m["name"].as_str()?.to_string(),
+                m["damping_ratio"].as_f64()?,
+            ))
+        })
+        .collect();
+    v.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    v
+}
+
+#[test]
+fn convert_writes_files_its_own_reader_accepts_or_says_what_is_missing() {
+    let dir = Scratch::new();
+    let root = common::root();
+    std::fs::copy(
+        root.join("examples/tailless-delta.st"),
+        dir.path().join("tailless-delta.st"),
+    )
+    .unwrap();
+    let mut examples: Vec<std::path::PathBuf> = ["examples", "examples/aircraft"]
+        .iter()
+        .flat_map(|d| std::fs::read_dir(root.join(d)).unwrap())
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    examples.sort();
+    let targets: Vec<&str> = stability_core::notation::Notation::all()
+        .map(|n| n.name())
+        .chain(["dimensional"])
+        .collect();
+    let (mut written, mut refused) = (0, 0);
+    for ex in &examples {
+        let text = std::fs::read_to_string(ex).unwrap();
+        let Some(line) = text.lines().find(|l| l.starts_with("notation = ")) else {
+            continue; // a design-point config, not a derivative file
+        };
+        let from = line.split('"').nth(1).unwrap();
+        let input = dir.write("in.toml", &text);
+        let original = json(&run_ok(&["quartic", path(&input), "--json"]));
+        for to in &targets {
+            let args = ["convert", "--from", from, "--to", to, path(&input)];
+            let out = bin().args(args).output().unwrap();
+            let err = stderr(&out);
+            match out.status.code() {
+                Some(0) => {
+                    let back = dir.write("back.toml", &out.stdout);
+                    let read = bin()
+                        .args(["quartic", path(&back), "--json"])
+                        .output()
+                        .unwrap();
+                    assert!(
+                        read.status.success(),
+                        "{ex:?} --to {to}: written, then refused by the reader:\n{}\n{}",
+                        stdout(&out),
+                        stderr(&read)
+                    );
+                    let (a, b) = (damping_ratios(&original), damping_ratios(&json(&read)));
+                    assert_eq!(a.len(), b.len(), "{ex:?} --to {to}");
+                    for ((n, x), (_, y)) in a.iter().zip(&b) {
+                        assert!((x - y).abs() < 0.02, "{ex:?} --to {to}: {n} ζ {x} → {y}");
+                    }
+                    written += 1;
+                }
+                Some(2) => {
+                    assert!(stdout(&out).is_empty() && err.contains("in.toml"), "{err}");
+                    refused += 1;
+                }
+                code => panic!("{ex:?} --to {to}: {code:?}\n{err}"),
+            }
+        }
+    }
+    assert!(
+        written > 40 && refused > 0,
+        "{written} written, {refused} refused"
+    );
+    // the shipped example has no C_D: Ribner's C_Lα holds it with z_w
+    let ex = "examples/tailless-delta-45.toml";
+    for to in ["ribner", "lehrian", "perkins", "american_cl"] {
+        let err = stderr(&run_err(
+            &["convert", "--from", "report", "--to", to, ex],
+            INPUT,
+        ));
+        assert!(
+            err.contains(&format!("--to {to} needs C_D")) && err.contains("give c_d in [flight]"),
+            "{err}"
+        );
+        // the JSON still says which values the input determines (null: not)
+        let j = json(&run_ok(&[
+            "convert", "--from", "report", "--to", to, ex, "--json",
+        ]));
+        assert!(
+            j["values"]
+                .as_object()
+                .unwrap()
+                .values()
+                .any(|v| v.is_null())
+        );
+    }
+}
+
+#[test]
+fn convert_to_dimensional_writes_only_what_a_dimensional_file_holds() {
+    let dir = Scratch::new();
+    let ex = example("tailless-delta-60-dimensional.toml");
+    for (from, to, expect) in [
+        (
+            "c_l = 0.121",
+            "c_l = 0.0  ",
+            ":24:7: [flight] c_l: --to dimensional: C_L = 0",
+        ),
+        (
+            "c_l = 0.121",
+            "c_l = -0.2 ",
+            ":24:7: [flight] c_l: --to dimensional: C_L = -0.2",
+        ),
+        (
+            "i_b = 0.06",
+            "i_b = 1e-310",
+            "the result's `model.derivatives.M_w` = -inf is not finite",
+        ),
+        ("mu1 = 138.2", "mu1 = 1e-310", "is not finite"),
+    ] {
+        let f = dir.write("x.toml", ex.replace(from, to));
+        for json in [None, Some("--json")] {
+            let mut args = vec![
+                "convert",
+                "--from",
+                "report",
+                "--to",
+                "dimensional",
+                path(&f),
+            ];
+            args.extend(json);
+            let out = run_err(&args, INPUT);
+            assert!(stderr(&out).contains(expect), "{to}: {}", stderr(&out));
+            assert!(stdout(&out).is_empty(), "{to}: wrote {}", stdout(&out));
+        }
+    }
+    // a body-axis set whose stability-axis attitude is beyond ±89°
+    let steep = dir.write(
+        "steep.toml",
+        example("aircraft/boeing-747-cr2144-fc9.toml")
+            .replace("W0 = 62.0740 ", "W0 = -300.0 ")
+            .replace("theta0 = 4.6 ", "theta0 = 88.9 "),
+    );
+    let args = [
+        "convert",
+        "--from",
+        "dimensional",
+        "--to",
+        "dimensional",
+        path(&steep),
+    ];
+    let err = stderr(&run_err(&args, INPUT));
+    assert!(
+        err.contains("[flight] theta0") && err.contains("110.1°"),
+        "{err}"
+    );
+}
+
+#[test]
+fn the_warning_of_what_eq4_leaves_out_never_says_inf_percent() {
+    let dir = Scratch::new();
+    // Z_u = M_u = 0: a root at 0, which a relative move divided by
+    let f = dir.write(
+        "zero-root.toml",
+        example("aircraft/boeing-747-etkin-reid.toml")
+            .replace("Z_u = -0.08989797864 ", "Z_u = 0.0 ")
+            .replace("M_u = 0.0003547884187 ", "M_u = 0.0 ")
+            .replace("X_q = 0.0", "X_q = 0.0\nX_udot = 0.01"),
+    );
+    let out = run_ok(&[
+        "convert",
+        "--from",
+        "dimensional",
+        "--to",
+        "report",
+        path(&f),
+    ]);
+    let err = stderr(&out);
+    assert!(err.contains("cannot hold X_u̇ = 0.0100"), "{err}");
+    assert!(
+        err.contains("the modes move by up to 1.00 % of |λ|"),
+        "{err}"
+    );
+    assert!(!err.contains("inf") && !err.contains("NaN"), "{err}");
+}

@@ -68,6 +68,8 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     for w in &res.result.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
+    let view = AnalyzeJson::new(&cfg, &res);
+    crate::output::finite(path, &view)?;
     if let Some(out) = &options.state_space {
         let tau = res.tau();
         let roots = res.result.analysis.roots;
@@ -83,14 +85,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         )?;
     }
     if args.json {
-        print(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&AnalyzeJson::new(&cfg, &res)).unwrap_or_default()
-        ))?;
+        crate::output::print_json(path, &view)
     } else {
-        print(&page(&cfg, &res))?;
+        print(&page(&cfg, &res))
     }
-    Ok(())
 }
 
 pub fn page(cfg: &config::Config, res: &Results) -> String {

@@ -52,6 +52,8 @@ pub fn run(a: &Args) -> Result<(), Failure> {
     crate::output::warn_all(&input.warnings);
     let (analysis, engineering) = input.evaluated(control.as_ref(), o.class.0)?;
     let tau = input.tau();
+    let view = QuarticJson::new(&input, &analysis, &engineering);
+    crate::output::finite(file, &view)?;
     if let Some(out) = &o.state_space {
         let roots = tau.map_or(analysis.roots, |t| analysis.roots.map(|z| z / t));
         crate::state_space::write(
@@ -66,7 +68,7 @@ pub fn run(a: &Args) -> Result<(), Failure> {
         )?;
     }
     if a.json {
-        crate::output::print_json(&QuarticJson::new(&input, &analysis, &engineering))
+        crate::output::print_json(file, &view)
     } else {
         print(&table(&input, &analysis, &engineering))
     }
@@ -109,6 +111,8 @@ pub fn frequency_line(e: &Engineering) -> String {
 fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> {
     crate::output::warn_all(&input.warnings);
     let (a, engineering) = input.evaluated(args.engineering.class.0)?;
+    let view = DimensionalJson::new(input, &a, &engineering);
+    crate::output::finite(&input.path, &view)?;
     if let Some(out) = &args.engineering.state_space {
         crate::state_space::write(
             out,
@@ -122,7 +126,7 @@ fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> 
         )?;
     }
     if args.json {
-        return crate::output::print_json(&DimensionalJson::new(input, &a, &engineering));
+        return crate::output::print_json(&input.path, &view);
     }
     let title = format!(
         "Stability quartic of {} (notation \"dimensional\": the general longitudinal model, eqs D1–D2)",
