@@ -20,7 +20,10 @@ Exit status:
      the path)
 
 Input files (derivative files, configs, AVL .st files, CSV tables) are read
-only from regular files (not a FIFO or a device) of at most 16 MiB.";
+only from regular files (not a FIFO or a device) of at most 16 MiB. No output
+may be an input (the file, or a table or .st file it names) or another output
+of the same command (exit status 2); files written together (--state-space's
+.json, .py and .m) are written as a set.";
 
 /// Longitudinal dynamic stability of aircraft, after McCarter (1953).
 ///

@@ -179,6 +179,33 @@ pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     f.commit()
 }
 
+/// Writes files as a set: every one into its temporary file first, then
+/// all renamed into place, so that a failure while writing (a full disk)
+/// leaves none of them changed, never a mix of old and new. The error
+/// names the file that failed.
+pub fn write_set(files: &[(PathBuf, Vec<u8>)]) -> Result<(), (PathBuf, std::io::Error)> {
+    // a directory in a file's place would fail its rename, after the others'
+    for (path, _) in files {
+        if path.symlink_metadata().is_ok_and(|m| m.is_dir()) {
+            let e = std::io::Error::new(std::io::ErrorKind::IsADirectory, "it is a directory");
+            return Err((path.clone(), e));
+        }
+    }
+    let mut written = Vec::with_capacity(files.len());
+    for (path, bytes) in files {
+        let at = |e| (path.clone(), e);
+        let mut f = AtomicFile::create(path).map_err(at)?;
+        f.write_all(bytes).map_err(at)?;
+        f.tmp.as_file().sync_all().map_err(at)?;
+        written.push(f);
+    }
+    for f in written {
+        let path = f.path.clone();
+        f.tmp.persist(&path).map_err(|e| (path, e.error))?;
+    }
+    Ok(())
+}
+
 /// Makes a private (0700/0600) temporary readable by others, as a result
 /// should be.
 fn make_public(path: &Path, mode: u32) -> std::io::Result<()> {
@@ -337,6 +364,31 @@ mod tests {
             let mode = std::fs::metadata(&p).unwrap().permissions().mode();
             assert_eq!(mode & 0o777, 0o644);
         }
+    }
+
+    #[test]
+    fn a_set_is_written_whole_or_not_at_all() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("x.json"), dir.path().join("x.py"));
+        std::fs::write(&a, "old").unwrap();
+        // the second file's directory cannot be made: the first is untouched
+        let plain = dir.path().join("plain");
+        std::fs::write(&plain, "a file").unwrap();
+        let bad = plain.join("x.m");
+        let (at, _) =
+            write_set(&[(a.clone(), b"new".to_vec()), (bad.clone(), b"m".to_vec())]).unwrap_err();
+        assert_eq!(at, bad);
+        assert_eq!(std::fs::read_to_string(&a).unwrap(), "old");
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+        // nor when a directory stands where the last file goes
+        std::fs::create_dir(&b).unwrap();
+        let set = [(a.clone(), b"new".to_vec()), (b.clone(), b"py".to_vec())];
+        assert_eq!(write_set(&set).unwrap_err().0, b);
+        assert_eq!(std::fs::read_to_string(&a).unwrap(), "old");
+        std::fs::remove_dir(&b).unwrap();
+        write_set(&[(a.clone(), b"new".to_vec()), (b.clone(), b"py".to_vec())]).unwrap();
+        assert_eq!(std::fs::read_to_string(&a).unwrap(), "new");
+        assert_eq!(std::fs::read_to_string(&b).unwrap(), "py");
     }
 
     #[test]

@@ -786,3 +786,120 @@ fn the_warning_of_what_eq4_leaves_out_never_says_inf_percent() {
     );
     assert!(!err.contains("inf") && !err.contains("NaN"), "{err}");
 }
+
+/// The names and contents of the files in `dir`, sorted.
+fn contents(dir: &std::path::Path) -> Vec<(String, Vec<u8>)> {
+    let mut v: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.is_file())
+        .map(|p| {
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            (name, std::fs::read(&p).unwrap())
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn no_output_overwrites_an_input_or_another_output() {
+    let dir = Scratch::new();
+    let set = example("tailless-delta-45.toml");
+    for name in ["X.toml", "X.json", "X.py", "X.m"] {
+        dir.write(name, &set);
+    }
+    let config = example("delta-45.toml").replace(
+        "damping = \"faired\"",
+        "damping = \"faired\"\n[model.tables]\nzero_lift_drag = { file = \"t.csv\" }",
+    );
+    dir.write("W.json", &config);
+    dir.write("t.csv", "mach,cd0\n0.5,0.02\n2.0,0.03\n");
+    let st = common::root().join("examples/tailless-delta.st");
+    std::fs::copy(st, dir.path().join("tailless-delta.st")).unwrap();
+    dir.write("avl.toml", example("avl-tailless-delta.toml"));
+    std::fs::create_dir(dir.path().join("sub")).unwrap();
+    let mut cases = vec![
+        (
+            "response X.toml --until 1 --csv X.toml",
+            "--csv would overwrite FILE",
+        ),
+        (
+            "quartic X.json --state-space X.json",
+            "--state-space would overwrite FILE",
+        ),
+        (
+            "quartic X.py --state-space X.json",
+            "the script X.py that --state-space writes",
+        ),
+        (
+            "quartic X.m --state-space X.json",
+            "the script X.m that --state-space writes",
+        ),
+        (
+            "sweep W.json --mach 1 -o W.json",
+            "-o would overwrite CONFIG",
+        ),
+        (
+            "analyze W.json --state-space W.json",
+            "--state-space would overwrite CONFIG",
+        ),
+        (
+            "sweep W.json --mach 1 -o sub/../t.csv",
+            "`t.csv` (named in CONFIG)",
+        ),
+        (
+            "response X.toml --until 1 --csv o.csv --svg ./o.csv",
+            "--csv and --svg name the same file",
+        ),
+        (
+            "response avl.toml --until 1 --svg tailless-delta.st",
+            "(named in FILE)",
+        ),
+    ];
+    #[cfg(unix)]
+    {
+        std::fs::hard_link(dir.path().join("X.toml"), dir.path().join("hard.csv")).unwrap();
+        cases.push((
+            "response X.toml --until 1 --csv hard.csv",
+            "--csv would overwrite FILE",
+        ));
+    }
+    let before = contents(dir.path());
+    for (args, expect) in cases {
+        let out = bin()
+            .current_dir(dir.path())
+            .args(args.split(' '))
+            .output()
+            .unwrap();
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(INPUT), "{args}:\n{err}");
+        assert!(err.contains(expect), "{args}:\n{err}");
+        assert_eq!(contents(dir.path()), before, "{args} changed a file");
+    }
+}
+
+#[test]
+fn the_state_space_files_are_written_as_a_set() {
+    let dir = Scratch::new();
+    let out = dir.path().join("ss.json");
+    // a directory where the MATLAB script goes: nothing of the set written
+    std::fs::create_dir(dir.path().join("ss.m")).unwrap();
+    let args = [
+        "quartic",
+        "examples/tailless-delta-45.toml",
+        "--state-space",
+        path(&out),
+    ];
+    let err = stderr(&run_err(&args, IO));
+    assert!(
+        err.contains("ss.m") && err.contains("it is a directory"),
+        "{err}"
+    );
+    assert!(!out.exists() && !dir.path().join("ss.py").exists());
+    std::fs::remove_dir(dir.path().join("ss.m")).unwrap();
+    run_ok(&args);
+    for ext in ["json", "py", "m"] {
+        assert!(out.with_extension(ext).is_file(), "{ext}");
+    }
+}

@@ -63,7 +63,10 @@ impl Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, options) = (args.config.as_str(), &args.engineering);
-    let cfg = overridden(path, &args.overrides())?;
+    let (cfg, read) = stability_io::files::recording(|| overridden(path, &args.overrides()));
+    let cfg = cfg?;
+    let outputs = crate::overwrite::state_space(options.state_space.as_deref())?;
+    crate::overwrite::refuse("CONFIG", path, &read, &outputs)?;
     let res = results(&cfg, options.class.0)?;
     for w in &res.result.warnings {
         crate::output::warn(&format!("warning: {w}"));

@@ -13,6 +13,7 @@ use crate::output::print;
 use crate::page::analysis_page;
 use stability_core::analysis::Analysis;
 use stability_core::engineering::Engineering;
+use stability_core::linear::Control;
 use stability_io::input::dimensional_notation::{self, DimensionalFile, is_dimensional};
 use stability_io::input::{self, DerivativeFile};
 use stability_io::views::{DimensionalJson, QuarticJson};
@@ -41,14 +42,34 @@ pub struct EngineeringArgs {
     pub class: ClassArg,
 }
 
-pub fn run(a: &Args) -> Result<(), Failure> {
-    let (file, o) = (a.file.as_str(), &a.engineering);
+/// A derivative file as `quartic` reads it: a dimensional set as it is,
+/// any other in the report's notation with its `[control]` table.
+enum Read {
+    Dimensional(Box<DimensionalFile>),
+    Report(Box<DerivativeFile>, Option<Control>),
+}
+
+fn read(file: &str) -> Result<Read, Failure> {
     let text = stability_io::files::read_input(Path::new(file))?;
     if is_dimensional(&text) {
-        return run_dimensional(&dimensional_notation::parse(file, &text)?, a);
+        let d = dimensional_notation::parse(file, &text)?;
+        return Ok(Read::Dimensional(Box::new(d)));
     }
     let input = input::parse(file, &text)?;
     let control = stability_io::control::read_control(file, &text)?;
+    Ok(Read::Report(Box::new(input), control))
+}
+
+pub fn run(a: &Args) -> Result<(), Failure> {
+    let (file, o) = (a.file.as_str(), &a.engineering);
+    let (read, files) = stability_io::files::recording(|| read(file));
+    let read = read?;
+    let outputs = crate::overwrite::state_space(o.state_space.as_deref())?;
+    crate::overwrite::refuse("FILE", file, &files, &outputs)?;
+    let (input, control) = match read {
+        Read::Dimensional(d) => return run_dimensional(&d, a),
+        Read::Report(input, control) => (input, control),
+    };
     crate::output::warn_all(&input.warnings);
     let (analysis, engineering) = input.evaluated(control.as_ref(), o.class.0)?;
     let tau = input.tau();

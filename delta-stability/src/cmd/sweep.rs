@@ -119,9 +119,12 @@ pub fn run(o: &Args) -> Result<(), Failure> {
         omega_bar: o.omega_bar,
         ..Overrides::default()
     };
-    let cfg = overridden(&o.config, &overrides)?;
+    let (cfg, read) = stability_io::files::recording(|| overridden(&o.config, &overrides));
+    let cfg = cfg?;
     let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
     let json = is_json(o).map_err(&bad)?;
+    let outputs = [crate::overwrite::Named::new("-o", &o.output)];
+    crate::overwrite::refuse("CONFIG", &o.config, &read, &outputs)?;
     let grid = grid(o, &cfg).map_err(&bad)?;
     let out = Path::new(&o.output);
     let write_err = |e: std::io::Error| Failure::Io(write_error(out, &e));
