@@ -198,7 +198,10 @@ enum Command {
     /// is). About 8 s on 2 cores, most of it the doublet lattice. The files
     /// are written into a temporary directory beside DIR that replaces DIR
     /// only when complete, so a killed run leaves the previous report whole;
-    /// DIR, if it exists, must be an earlier report or empty.
+    /// DIR, if it exists, must be an earlier report or empty: everything in
+    /// it a file the report's manifest (.report-manifest.json) lists,
+    /// unchanged, checked when the run starts and again when DIR is
+    /// replaced (else exit status 3, naming what would be lost).
     Report(cmd::report::Args),
     /// Design points over a Cartesian grid of Mach, sweep, c.g., μ₁ and i_B.
     ///

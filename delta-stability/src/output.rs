@@ -284,28 +284,74 @@ impl AtomicDir {
         self.tmp.path()
     }
 
-    /// Writes the file `name` (a relative path) into the directory.
+    /// Writes the file `name` (a relative path) into the directory. Its
+    /// subdirectories are made as needed, never the directory itself (gone,
+    /// it stays gone: see [`remove_temporaries`]).
     pub fn write(&self, name: &str, bytes: &[u8]) -> std::io::Result<()> {
-        let path = self.tmp.path().join(name);
-        if let Some(d) = path.parent() {
-            std::fs::create_dir_all(d)?;
+        let root = self.tmp.path();
+        let path = root.join(name);
+        let mut missing = Vec::new();
+        let mut at = path.parent();
+        while let Some(d) = at.filter(|d| *d != root && !d.is_dir()) {
+            missing.push(d);
+            at = d.parent();
+        }
+        for d in missing.into_iter().rev() {
+            std::fs::create_dir(d)?;
         }
         std::fs::write(path, bytes)
     }
 
     /// Puts the directory in the target's place; a previous target (a
     /// directory) is removed.
-    pub fn commit(self) -> std::io::Result<()> {
+    pub fn commit(self) -> Result<(), Refused> {
+        self.commit_if(|_| Ok(()))
+    }
+
+    /// Puts the directory in the target's place if `may_replace` allows
+    /// the previous target (a directory), which is then removed: asked just
+    /// before the swap, and again of the previous directory just after it
+    /// (something saved into it in between would otherwise be lost), when a
+    /// refusal swaps them back. A refusal is `Refused::Not(why)`.
+    pub fn commit_if(
+        self,
+        may_replace: impl Fn(&Path) -> Result<(), String>,
+    ) -> Result<(), Refused> {
         let AtomicDir { tmp, target } = self;
         if target.symlink_metadata().is_err() {
+            // rename(2) replaces only an empty directory made meanwhile
             std::fs::rename(tmp.path(), &target)?;
             let _ = tmp.keep();
             return Ok(());
         }
-        // the previous result ends up at the temporary path, removed with it
+        may_replace(&target).map_err(Refused::Not)?;
         exchange(tmp.path(), &target)?;
+        // the previous result is now at the temporary path
+        if let Err(why) = may_replace(tmp.path()) {
+            if let Err(e) = exchange(tmp.path(), &target) {
+                // never remove what may not be replaced: keep it, and say where
+                let kept = tmp.keep();
+                let m = format!("{e}; the previous directory is kept at {}", kept.display());
+                return Err(Refused::Io(std::io::Error::new(e.kind(), m)));
+            }
+            return Err(Refused::Not(why));
+        }
         drop(tmp);
         Ok(())
+    }
+}
+
+/// Why [`AtomicDir::commit_if`] did not replace its target.
+#[derive(Debug)]
+pub enum Refused {
+    /// The target may not be replaced: why.
+    Not(String),
+    Io(std::io::Error),
+}
+
+impl From<std::io::Error> for Refused {
+    fn from(e: std::io::Error) -> Self {
+        Refused::Io(e)
     }
 }
 
@@ -422,6 +468,46 @@ mod tests {
         assert_eq!(now, ["b", "c"]);
         assert_eq!(std::fs::read_to_string(target.join("b")).unwrap(), "1");
         // nothing left beside it
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn a_directory_is_replaced_only_if_it_may_be_at_the_swap() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("report");
+        std::fs::create_dir(&target).unwrap();
+        std::fs::write(target.join("mine.txt"), "mine").unwrap();
+        let d = AtomicDir::create(&target).unwrap();
+        d.write("docs/a.md", b"new").unwrap();
+        // refused before the swap
+        let no = |p: &Path| match p.join("mine.txt").exists() {
+            true => Err("mine.txt".to_string()),
+            false => Ok(()),
+        };
+        assert!(matches!(d.commit_if(no), Err(Refused::Not(w)) if w == "mine.txt"));
+        assert_eq!(
+            std::fs::read_to_string(target.join("mine.txt")).unwrap(),
+            "mine"
+        );
+        // allowed before the swap, refused after it (a file saved meanwhile):
+        // swapped back, nothing lost, nothing left beside it
+        let d = AtomicDir::create(&target).unwrap();
+        d.write("a", b"new").unwrap();
+        let calls = std::cell::Cell::new(0);
+        let second = |_: &Path| {
+            calls.set(calls.get() + 1);
+            if calls.get() == 1 {
+                Ok(())
+            } else {
+                Err("saved meanwhile".to_string())
+            }
+        };
+        assert!(matches!(d.commit_if(second), Err(Refused::Not(_))));
+        assert_eq!(
+            std::fs::read_to_string(target.join("mine.txt")).unwrap(),
+            "mine"
+        );
+        assert!(!target.join("a").exists());
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
     }
 

@@ -903,3 +903,95 @@ fn the_state_space_files_are_written_as_a_set() {
         assert!(out.with_extension(ext).is_file(), "{ext}");
     }
 }
+
+/// Runs `report --out out`, which must refuse (exit status 3) naming each
+/// of `lost`, and leave every file in `out` as it was.
+fn report_refuses(out: &std::path::Path, lost: &[&str]) {
+    let before = contents(out);
+    let err = stderr(&run_err(&["report", "--out", path(out)], IO));
+    assert!(err.contains("will not replace"), "{err}");
+    for name in lost {
+        assert!(err.contains(&format!("`{name}`")), "{name}: {err}");
+    }
+    assert_eq!(contents(out), before);
+}
+
+#[test]
+fn the_report_replaces_only_what_a_report_wrote_checked_at_the_swap() {
+    let dir = Scratch::new();
+    let out = dir.path().join("report");
+    run_ok(&["report", "--out", path(&out)]);
+    let page = std::fs::read(out.join("index.html")).unwrap();
+    // a file of the user's under docs/, a name the report writes
+    std::fs::write(out.join("docs/mine.md"), "my notes").unwrap();
+    report_refuses(&out, &["docs/mine.md"]);
+    assert!(out.join("docs/mine.md").is_file());
+    std::fs::remove_file(out.join("docs/mine.md")).unwrap();
+    // the report's page edited by its user
+    std::fs::write(out.join("index.html"), "<p>my own page</p>").unwrap();
+    report_refuses(&out, &["index.html"]);
+    std::fs::write(out.join("index.html"), &page).unwrap();
+    // a user's own index.html and summary.json, never written by a report
+    let own = dir.path().join("own");
+    std::fs::create_dir(&own).unwrap();
+    std::fs::write(own.join("index.html"), "<p>mine</p>").unwrap();
+    std::fs::write(own.join("summary.json"), "{}").unwrap();
+    report_refuses(&own, &["index.html", "summary.json"]);
+    // a file saved into the report while a run writes the new one: the
+    // run refuses at the swap and removes nothing
+    let child = bin()
+        .args(["report", "--out", path(&out)])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run");
+    let writing = wait_until(|| {
+        temporaries(dir.path())
+            .iter()
+            .any(|d| std::fs::read_dir(d).is_ok_and(|mut e| e.next().is_some()))
+    });
+    std::fs::write(out.join("notes.txt"), "saved during the run").unwrap();
+    let done = child.wait_with_output().unwrap();
+    assert!(writing, "the run never wrote into its temporary directory");
+    let err = stderr(&done);
+    assert_eq!(done.status.code(), Some(IO), "{err}");
+    assert!(
+        err.contains("will not replace") && err.contains("`notes.txt`"),
+        "{err}"
+    );
+    let notes = std::fs::read_to_string(out.join("notes.txt")).unwrap();
+    assert_eq!(notes, "saved during the run");
+    assert_eq!(std::fs::read(out.join("index.html")).unwrap(), page);
+    assert!(
+        temporaries(dir.path()).is_empty(),
+        "{:?}",
+        temporaries(dir.path())
+    );
+    // with the user's file moved away, the report is replaced
+    std::fs::remove_file(out.join("notes.txt")).unwrap();
+    run_ok(&["report", "--out", path(&out)]);
+}
+
+/// The program's temporary files and directories in `dir`.
+fn temporaries(dir: &std::path::Path) -> Vec<std::path::PathBuf> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| {
+            p.file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with(".delta-stability-"))
+        })
+        .collect()
+}
+
+/// Polls `ready` every 2 ms for up to 60 s; whether it became true.
+fn wait_until(mut ready: impl FnMut() -> bool) -> bool {
+    let start = Instant::now();
+    while start.elapsed() < Duration::from_secs(60) {
+        if ready() {
+            return true;
+        }
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    false
+}

@@ -16,6 +16,7 @@ pub mod conclusions;
 pub mod damping;
 pub mod html;
 pub mod lifting_surface;
+pub mod manifest;
 pub mod quartic;
 pub mod regimes;
 pub mod responses;
