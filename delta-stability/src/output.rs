@@ -8,6 +8,10 @@
 //! run that writes into the same directory removes them ([`remove_stale`])
 //! once it can tell they are stale: their process no longer runs and they
 //! have not changed for [`STALE_AFTER`]. Nothing else is touched.
+//!
+//! Interrupted by SIGINT or SIGTERM, a run removes its own temporaries
+//! before it exits (status 130 or 143, 128 + the signal):
+//! [`remove_temporaries_on_signals`].
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -27,6 +31,90 @@ const LEGACY_STALE_AFTER: Duration = Duration::from_secs(60 * 60);
 /// Where the process cannot be checked, a temporary file is removed only
 /// after this long unchanged.
 const UNCHECKED_STALE_AFTER: Duration = Duration::from_secs(24 * 60 * 60);
+
+/// The temporaries this run has made and neither committed nor removed:
+/// what [`remove_temporaries`] removes.
+static LIVE: std::sync::Mutex<Vec<PathBuf>> = std::sync::Mutex::new(Vec::new());
+
+/// A temporary file or directory of this run, listed in [`LIVE`] while
+/// this lives.
+struct Live(PathBuf);
+
+impl Live {
+    fn new(path: &Path) -> Live {
+        let path = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+        LIVE.lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .push(path.clone());
+        Live(path)
+    }
+}
+
+impl Drop for Live {
+    fn drop(&mut self) {
+        let mut live = LIVE.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(k) = live.iter().position(|p| *p == self.0) {
+            live.swap_remove(k);
+        }
+    }
+}
+
+/// Removes every temporary file and directory of this run not yet
+/// committed ([`AtomicFile`], [`AtomicDir`]); returns how many it removed.
+/// A directory being filled is not made again after this: its writes
+/// fail.
+pub fn remove_temporaries() -> usize {
+    let live = LIVE.lock().unwrap_or_else(|e| e.into_inner());
+    let mut removed = 0;
+    for p in live.iter() {
+        // a file written into a directory while it is removed: try again
+        for _ in 0..3 {
+            let gone = match p.symlink_metadata() {
+                Ok(m) if m.is_dir() => std::fs::remove_dir_all(p),
+                Ok(_) => std::fs::remove_file(p),
+                Err(_) => break,
+            };
+            if gone.is_ok() {
+                removed += 1;
+                break;
+            }
+        }
+    }
+    removed
+}
+
+/// On SIGINT or SIGTERM, removes this run's temporaries
+/// ([`remove_temporaries`]) and exits with status 128 + the signal (130,
+/// 143). To be called first in `main`, before any other thread starts: the
+/// two signals are blocked in every thread, and one thread waits for them.
+/// (Not on Windows, where a killed run's temporaries are left to a later
+/// run, [`remove_stale`].)
+pub fn remove_temporaries_on_signals() {
+    #[cfg(unix)]
+    {
+        // SAFETY: plain libc calls on a local, initialised signal set; the
+        // mask is set before any other thread exists, so every thread
+        // inherits it and the signals go only to the waiting thread.
+        unsafe {
+            let mut set: libc::sigset_t = std::mem::zeroed();
+            libc::sigemptyset(&mut set);
+            libc::sigaddset(&mut set, libc::SIGINT);
+            libc::sigaddset(&mut set, libc::SIGTERM);
+            if libc::pthread_sigmask(libc::SIG_BLOCK, &set, std::ptr::null_mut()) != 0 {
+                return;
+            }
+            std::thread::spawn(move || {
+                let mut signal: libc::c_int = 0;
+                // SAFETY: waits on the signal set above, blocked in this thread
+                while libc::sigwait(&set, &mut signal) != 0 {}
+                remove_temporaries();
+                // SAFETY: ends the process at once, without running
+                // destructors or flushing buffers another thread may hold
+                libc::_exit(128 + signal);
+            });
+        }
+    }
+}
 
 /// The directory a target path is written in.
 fn parent_of(path: &Path) -> &Path {
@@ -119,6 +207,65 @@ pub fn remove_stale(dir: &Path) -> usize {
         removed += usize::from(gone.is_ok());
     }
     removed
+}
+
+/// How much this process may write on a file system, and what bounds it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Room {
+    pub bytes: u64,
+    /// In words: "free space on its file system", or "file-size limit
+    /// (ulimit -f)".
+    pub limited_by: &'static str,
+}
+
+/// The room for a file in directory `dir`: the space its file system has
+/// free for an unprivileged process (statvfs), and no more than the
+/// process's file-size limit (RLIMIT_FSIZE, `ulimit -f`, beyond which
+/// writing kills it). `None` where neither can be told.
+#[allow(clippy::unnecessary_cast)] // the fields' types differ between systems
+pub fn room(dir: &Path) -> Option<Room> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        let path = std::ffi::CString::new(dir.as_os_str().as_bytes()).ok()?;
+        // SAFETY: statvfs fills the zeroed struct from a NUL-terminated
+        // path; getrlimit fills the zeroed rlimit.
+        let (free, limit) = unsafe {
+            let mut st: libc::statvfs = std::mem::zeroed();
+            let free = (libc::statvfs(path.as_ptr(), &mut st) == 0)
+                .then(|| (st.f_bavail as u64).saturating_mul(st.f_frsize as u64));
+            let mut lim: libc::rlimit = std::mem::zeroed();
+            let limit = (libc::getrlimit(libc::RLIMIT_FSIZE, &mut lim) == 0
+                && lim.rlim_cur != libc::RLIM_INFINITY)
+                .then_some(lim.rlim_cur as u64);
+            (free, limit)
+        };
+        let free = free.map(|bytes| Room {
+            bytes,
+            limited_by: "free space on its file system",
+        });
+        let limit = limit.map(|bytes| Room {
+            bytes,
+            limited_by: "file-size limit (ulimit -f)",
+        });
+        [free, limit].into_iter().flatten().min_by_key(|r| r.bytes)
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = dir;
+        None
+    }
+}
+
+/// A number of bytes in words: `44.0 GB`, `812 bytes`.
+pub fn bytes(n: f64) -> String {
+    match [(1e12, "TB"), (1e9, "GB"), (1e6, "MB"), (1e3, "kB")]
+        .into_iter()
+        .find(|(unit, _)| n >= *unit)
+    {
+        Some((unit, name)) => format!("{:.1} {name}", n / unit),
+        None => format!("{n:.0} bytes"),
+    }
 }
 
 /// Prints `text` on standard output. A reader that stops reading (`| head`)
@@ -224,6 +371,7 @@ fn make_public(path: &Path, mode: u32) -> std::io::Result<()> {
 pub struct AtomicFile {
     tmp: tempfile::NamedTempFile,
     path: PathBuf,
+    _live: Live,
 }
 
 impl AtomicFile {
@@ -232,10 +380,12 @@ impl AtomicFile {
         std::fs::create_dir_all(dir)?;
         remove_stale(dir);
         let tmp = temp_builder(&our_prefix()).tempfile_in(dir)?;
+        let _live = Live::new(tmp.path());
         make_public(tmp.path(), 0o644)?;
         Ok(AtomicFile {
             tmp,
             path: path.to_path_buf(),
+            _live,
         })
     }
 
@@ -263,6 +413,7 @@ impl Write for AtomicFile {
 pub struct AtomicDir {
     tmp: tempfile::TempDir,
     target: PathBuf,
+    live: Live,
 }
 
 impl AtomicDir {
@@ -272,10 +423,12 @@ impl AtomicDir {
         std::fs::create_dir_all(dir)?;
         remove_stale(dir);
         let tmp = temp_builder(&our_prefix()).tempdir_in(dir)?;
+        let live = Live::new(tmp.path());
         make_public(tmp.path(), 0o755)?;
         Ok(AtomicDir {
             tmp,
             target: target.to_path_buf(),
+            live,
         })
     }
 
@@ -317,7 +470,7 @@ impl AtomicDir {
         self,
         may_replace: impl Fn(&Path) -> Result<(), String>,
     ) -> Result<(), Refused> {
-        let AtomicDir { tmp, target } = self;
+        let AtomicDir { tmp, target, live } = self;
         if target.symlink_metadata().is_err() {
             // rename(2) replaces only an empty directory made meanwhile
             std::fs::rename(tmp.path(), &target)?;
@@ -325,6 +478,9 @@ impl AtomicDir {
             return Ok(());
         }
         may_replace(&target).map_err(Refused::Not)?;
+        // from the swap on, the temporary path may hold the previous
+        // directory: no signal removes it then
+        drop(live);
         exchange(tmp.path(), &target)?;
         // the previous result is now at the temporary path
         if let Err(why) = may_replace(tmp.path()) {
@@ -509,6 +665,19 @@ mod tests {
         );
         assert!(!target.join("a").exists());
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn the_room_for_a_file_is_known_and_said_in_words() {
+        let dir = tempfile::tempdir().unwrap();
+        #[cfg(unix)]
+        {
+            let r = room(dir.path()).unwrap();
+            assert!(r.bytes > 0, "{r:?}");
+        }
+        assert_eq!(bytes(4.4e10), "44.0 GB");
+        assert_eq!(bytes(812.0), "812 bytes");
+        assert_eq!(bytes(1500.0), "1.5 kB");
     }
 
     #[test]

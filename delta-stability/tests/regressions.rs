@@ -995,3 +995,149 @@ fn wait_until(mut ready: impl FnMut() -> bool) -> bool {
     }
     false
 }
+
+/// Sends `signal` (`TERM`, `INT`) to process `pid`.
+#[cfg(unix)]
+fn send(signal: &str, pid: u32) {
+    let sent = std::process::Command::new("kill")
+        .args(["-s", signal, &pid.to_string()])
+        .status()
+        .expect("kill");
+    assert!(sent.success());
+}
+
+#[cfg(unix)]
+#[test]
+fn sigint_and_sigterm_remove_the_runs_temporaries() {
+    for (signal, status) in [("TERM", 143), ("INT", 130)] {
+        let dir = Scratch::new();
+        let out = dir.path().join("big.csv");
+        let child = bin()
+            .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.00001"])
+            .args(["--damping", "faired-slender", "--cg", "0.2:0.3:0.001", "-o"])
+            .arg(&out)
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("run");
+        // once rows (not only the header) are in the temporary file
+        let writing = wait_until(|| {
+            temporaries(dir.path())
+                .iter()
+                .any(|p| std::fs::metadata(p).is_ok_and(|m| m.len() > 200))
+        });
+        send(signal, child.id());
+        let done = child.wait_with_output().unwrap();
+        assert!(writing, "the sweep never wrote into a temporary file");
+        assert_eq!(done.status.code(), Some(status), "SIG{signal}");
+        assert!(
+            temporaries(dir.path()).is_empty(),
+            "SIG{signal}: a temporary left"
+        );
+        assert!(!out.exists());
+    }
+    // a report's temporary directory too
+    let dir = Scratch::new();
+    let out = dir.path().join("report");
+    let child = bin()
+        .args(["report", "--out", path(&out)])
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("run");
+    let writing = wait_until(|| {
+        temporaries(dir.path())
+            .iter()
+            .any(|d| std::fs::read_dir(d).is_ok_and(|mut e| e.next().is_some()))
+    });
+    send("INT", child.id());
+    let done = child.wait_with_output().unwrap();
+    assert!(
+        writing && done.status.code() == Some(130),
+        "{:?}",
+        done.status
+    );
+    assert!(temporaries(dir.path()).is_empty() && !out.exists());
+}
+
+#[test]
+fn sweep_counts_in_messages_are_short() {
+    let dir = Scratch::new();
+    let o = dir.path().join("o.csv");
+    for (range, expect) in [
+        (
+            vec!["--mach", "0.5:2:1e-300"],
+            "0.5:2:1e-300 gives about 1.50e300 values",
+        ),
+        (
+            vec!["--mach", "1", "--sweep", "0:1e308:1e-308"],
+            "gives more values than can be counted",
+        ),
+        (
+            vec![
+                "--mach",
+                "0.5:1.4999999:1e-7",
+                "--cg",
+                "0.1:0.19999999:1e-8",
+                "--mu1",
+                "10:10.00099:1e-8",
+            ],
+            "the grid has about 9.90e18 points",
+        ),
+    ] {
+        let mut args = vec!["sweep", "examples/delta-60.toml", "-o", path(&o)];
+        args.extend(range);
+        let err = stderr(&run_err(&args, INPUT));
+        assert!(err.contains(expect), "{args:?}: {err}");
+        assert!(!err.contains("inf"), "{err}");
+        let digits = err.split(|c: char| !c.is_ascii_digit()).map(str::len).max();
+        assert!(digits < Some(10), "{err}");
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn a_sweep_that_would_not_fit_is_refused_with_its_estimate() {
+    let dir = Scratch::new();
+    let out = dir.path().join("out.csv");
+    // a file-size limit of 100 blocks (51.2 kB in sh's 512-byte blocks, or
+    // 102.4 kB): about 320 kB of rows would not fit
+    let done = std::process::Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -f 100; exec \"$0\" \"$@\"")
+        .arg(bin().get_program())
+        .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.001"])
+        // quasi-steady: this is about the file, not the lattice's solves
+        .args(["--damping", "faired-slender", "-o"])
+        .arg(&out)
+        .current_dir(common::root())
+        .output()
+        .unwrap();
+    let err = stderr(&done);
+    assert_eq!(done.status.code(), Some(IO), "{err}");
+    assert!(
+        err.contains("the grid's 1501 rows need about") && err.contains("bytes a row"),
+        "{err}"
+    );
+    assert!(err.contains("file-size limit (ulimit -f)"), "{err}");
+    assert!(!out.exists() && temporaries(dir.path()).is_empty());
+}
+
+#[test]
+fn a_response_over_a_tiny_span_is_written_in_short_numbers() {
+    let args = [
+        "response",
+        "examples/tailless-delta-45.toml",
+        "--until",
+        "1e-300",
+        "--steps",
+        "10",
+    ];
+    let csv = stdout(&run_ok(&args));
+    assert_eq!(csv.lines().count(), 12, "{csv}");
+    for line in csv.lines().skip(1) {
+        for field in line.split(',') {
+            assert!(field.len() <= 20, "{field} in {line}");
+            assert!(field.is_empty() || field.parse::<f64>().is_ok_and(f64::is_finite));
+        }
+    }
+    assert!(csv.lines().nth(10).unwrap().starts_with("9e-301,"), "{csv}");
+}
