@@ -105,8 +105,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     bar.inc(1);
     bar.set_message("conclusions, swept over i_B and C_L·M²");
     let judged = conclusions::judge_all(&findings);
-    let json = serde_json::to_string_pretty(&summary::summary_json(&findings, &judged))
-        .unwrap_or_default();
+    let summary = summary::summary_json(&findings, &judged);
+    crate::output::finite("summary.json", &summary)?;
+    let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
     write("summary.json", json.as_bytes())?;
     write(
         "index.html",
