@@ -609,6 +609,43 @@ fn damping_ratios(j: &serde_json::Value) -> Vec<(String, f64)> {
     v
 }
 
+/// Converts `input` (in notation `from`) to `to` and reads the file back
+/// with the program's reader: the same aircraft (each mode's ζ within
+/// 0.02), or a refusal (exit status 2) that writes nothing. Whether it was
+/// written.
+fn round_trip(dir: &Scratch, ex: &std::path::Path, from: &str, to: &str) -> bool {
+    let input = dir.write("in.toml", std::fs::read(ex).unwrap());
+    let original = json(&run_ok(&["quartic", path(&input), "--json"]));
+    let args = ["convert", "--from", from, "--to", to, path(&input)];
+    let out = bin().args(args).output().unwrap();
+    let (err, ex) = (stderr(&out), ex.display());
+    match out.status.code() {
+        Some(0) => {}
+        Some(2) => {
+            assert!(stdout(&out).is_empty() && err.contains("in.toml"), "{err}");
+            return false;
+        }
+        code => panic!("{ex} --to {to}: {code:?}\n{err}"),
+    }
+    let back = dir.write("back.toml", &out.stdout);
+    let read = bin()
+        .args(["quartic", path(&back), "--json"])
+        .output()
+        .unwrap();
+    assert!(
+        read.status.success(),
+        "{ex} --to {to}: written, then refused by the reader:\n{}\n{}",
+        stdout(&out),
+        stderr(&read)
+    );
+    let (a, b) = (damping_ratios(&original), damping_ratios(&json(&read)));
+    assert_eq!(a.len(), b.len(), "{ex} --to {to}");
+    for ((n, x), (_, y)) in a.iter().zip(&b) {
+        assert!((x - y).abs() < 0.02, "{ex} --to {to}: {n} ζ {x} → {y}");
+    }
+    true
+}
+
 #[test]
 fn convert_writes_files_its_own_reader_accepts_or_says_what_is_missing() {
     let dir = Scratch::new();
@@ -636,37 +673,10 @@ fn convert_writes_files_its_own_reader_accepts_or_says_what_is_missing() {
             continue; // a design-point config, not a derivative file
         };
         let from = line.split('"').nth(1).unwrap();
-        let input = dir.write("in.toml", &text);
-        let original = json(&run_ok(&["quartic", path(&input), "--json"]));
         for to in &targets {
-            let args = ["convert", "--from", from, "--to", to, path(&input)];
-            let out = bin().args(args).output().unwrap();
-            let err = stderr(&out);
-            match out.status.code() {
-                Some(0) => {
-                    let back = dir.write("back.toml", &out.stdout);
-                    let read = bin()
-                        .args(["quartic", path(&back), "--json"])
-                        .output()
-                        .unwrap();
-                    assert!(
-                        read.status.success(),
-                        "{ex:?} --to {to}: written, then refused by the reader:\n{}\n{}",
-                        stdout(&out),
-                        stderr(&read)
-                    );
-                    let (a, b) = (damping_ratios(&original), damping_ratios(&json(&read)));
-                    assert_eq!(a.len(), b.len(), "{ex:?} --to {to}");
-                    for ((n, x), (_, y)) in a.iter().zip(&b) {
-                        assert!((x - y).abs() < 0.02, "{ex:?} --to {to}: {n} ζ {x} → {y}");
-                    }
-                    written += 1;
-                }
-                Some(2) => {
-                    assert!(stdout(&out).is_empty() && err.contains("in.toml"), "{err}");
-                    refused += 1;
-                }
-                code => panic!("{ex:?} --to {to}: {code:?}\n{err}"),
+            match round_trip(&dir, ex, from, to) {
+                true => written += 1,
+                false => refused += 1,
             }
         }
     }
