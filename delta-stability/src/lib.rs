@@ -7,6 +7,7 @@ pub mod args;
 pub mod cmd;
 pub mod engineering;
 pub mod output;
+pub mod overwrite;
 pub mod page;
 pub mod plot;
 pub mod report;

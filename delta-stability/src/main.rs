@@ -18,9 +18,13 @@ Exit status:
   3  a file could not be read or written: missing, not a regular file, no
      permission, a full disk, or a path through a file (the message names
      the path)
+  130, 143  interrupted (SIGINT, SIGTERM): the run's temporary files removed
 
 Input files (derivative files, configs, AVL .st files, CSV tables) are read
-only from regular files (not a FIFO or a device) of at most 16 MiB.";
+only from regular files (not a FIFO or a device) of at most 16 MiB. No output
+may be an input (the file, or a table or .st file it names) or another output
+of the same command (exit status 2); files written together (--state-space's
+.json, .py and .m) are written as a set.";
 
 /// Longitudinal dynamic stability of aircraft, after McCarter (1953).
 ///
@@ -195,7 +199,10 @@ enum Command {
     /// is). About 8 s on 2 cores, most of it the doublet lattice. The files
     /// are written into a temporary directory beside DIR that replaces DIR
     /// only when complete, so a killed run leaves the previous report whole;
-    /// DIR, if it exists, must be an earlier report or empty.
+    /// DIR, if it exists, must be an earlier report or empty: everything in
+    /// it a file the report's manifest (.report-manifest.json) lists,
+    /// unchanged, checked when the run starts and again when DIR is
+    /// replaced (else exit status 3, naming what would be lost).
     Report(cmd::report::Args),
     /// Design points over a Cartesian grid of Mach, sweep, c.g., μ₁ and i_B.
     ///
@@ -203,7 +210,11 @@ enum Command {
     /// come from CONFIG (see `analyze --help`). Points are evaluated in
     /// parallel; OUT (.csv or .json) is written atomically — a killed run
     /// leaves no half-written file (its temporary file beside OUT,
-    /// .delta-stability-PID-XXXXXX, is removed by a later run once stale). Columns: the grid values, stable (Routh),
+    /// .delta-stability-PID-XXXXXX, is removed on SIGINT or SIGTERM, or by a
+    /// later run once stale). A grid whose file would not fit in the free
+    /// space of OUT's file system (or the file-size limit) is refused before
+    /// it is written, with the estimate (bytes per row, measured on the
+    /// first rows, × rows). Columns: the grid values, stable (Routh),
     /// verdict (the one-cycle standard: meets, fails, divergent), the short
     /// period's root, cycles to half amplitude, damping ratio and ω̄, the
     /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
@@ -247,6 +258,9 @@ enum Command {
 }
 
 fn main() -> ExitCode {
+    // first, before any thread starts: SIGINT and SIGTERM remove this
+    // run's temporary files and directories before it exits
+    delta_stability::output::remove_temporaries_on_signals();
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Quartic(a) => cmd::quartic::run(&a),

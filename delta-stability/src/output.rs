@@ -8,6 +8,10 @@
 //! run that writes into the same directory removes them ([`remove_stale`])
 //! once it can tell they are stale: their process no longer runs and they
 //! have not changed for [`STALE_AFTER`]. Nothing else is touched.
+//!
+//! Interrupted by SIGINT or SIGTERM, a run removes its own temporaries
+//! before it exits (status 130 or 143, 128 + the signal):
+//! [`remove_temporaries_on_signals`].
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -27,6 +31,90 @@ const LEGACY_STALE_AFTER: Duration = Duration::from_secs(60 * 60);
 /// Where the process cannot be checked, a temporary file is removed only
 /// after this long unchanged.
 const UNCHECKED_STALE_AFTER: Duration = Duration::from_secs(24 * 60 * 60);
+
+/// The temporaries this run has made and neither committed nor removed:
+/// what [`remove_temporaries`] removes.
+static LIVE: std::sync::Mutex<Vec<PathBuf>> = std::sync::Mutex::new(Vec::new());
+
+/// A temporary file or directory of this run, listed in [`LIVE`] while
+/// this lives.
+struct Live(PathBuf);
+
+impl Live {
+    fn new(path: &Path) -> Live {
+        let path = std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf());
+        LIVE.lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .push(path.clone());
+        Live(path)
+    }
+}
+
+impl Drop for Live {
+    fn drop(&mut self) {
+        let mut live = LIVE.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(k) = live.iter().position(|p| *p == self.0) {
+            live.swap_remove(k);
+        }
+    }
+}
+
+/// Removes every temporary file and directory of this run not yet
+/// committed ([`AtomicFile`], [`AtomicDir`]); returns how many it removed.
+/// A directory being filled is not made again after this: its writes
+/// fail.
+pub fn remove_temporaries() -> usize {
+    let live = LIVE.lock().unwrap_or_else(|e| e.into_inner());
+    let mut removed = 0;
+    for p in live.iter() {
+        // a file written into a directory while it is removed: try again
+        for _ in 0..3 {
+            let gone = match p.symlink_metadata() {
+                Ok(m) if m.is_dir() => std::fs::remove_dir_all(p),
+                Ok(_) => std::fs::remove_file(p),
+                Err(_) => break,
+            };
+            if gone.is_ok() {
+                removed += 1;
+                break;
+            }
+        }
+    }
+    removed
+}
+
+/// On SIGINT or SIGTERM, removes this run's temporaries
+/// ([`remove_temporaries`]) and exits with status 128 + the signal (130,
+/// 143). To be called first in `main`, before any other thread starts: the
+/// two signals are blocked in every thread, and one thread waits for them.
+/// (Not on Windows, where a killed run's temporaries are left to a later
+/// run, [`remove_stale`].)
+pub fn remove_temporaries_on_signals() {
+    #[cfg(unix)]
+    {
+        // SAFETY: plain libc calls on a local, initialised signal set; the
+        // mask is set before any other thread exists, so every thread
+        // inherits it and the signals go only to the waiting thread.
+        unsafe {
+            let mut set: libc::sigset_t = std::mem::zeroed();
+            libc::sigemptyset(&mut set);
+            libc::sigaddset(&mut set, libc::SIGINT);
+            libc::sigaddset(&mut set, libc::SIGTERM);
+            if libc::pthread_sigmask(libc::SIG_BLOCK, &set, std::ptr::null_mut()) != 0 {
+                return;
+            }
+            std::thread::spawn(move || {
+                let mut signal: libc::c_int = 0;
+                // SAFETY: waits on the signal set above, blocked in this thread
+                while libc::sigwait(&set, &mut signal) != 0 {}
+                remove_temporaries();
+                // SAFETY: ends the process at once, without running
+                // destructors or flushing buffers another thread may hold
+                libc::_exit(128 + signal);
+            });
+        }
+    }
+}
 
 /// The directory a target path is written in.
 fn parent_of(path: &Path) -> &Path {
@@ -121,6 +209,65 @@ pub fn remove_stale(dir: &Path) -> usize {
     removed
 }
 
+/// How much this process may write on a file system, and what bounds it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Room {
+    pub bytes: u64,
+    /// In words: "free space on its file system", or "file-size limit
+    /// (ulimit -f)".
+    pub limited_by: &'static str,
+}
+
+/// The room for a file in directory `dir`: the space its file system has
+/// free for an unprivileged process (statvfs), and no more than the
+/// process's file-size limit (RLIMIT_FSIZE, `ulimit -f`, beyond which
+/// writing kills it). `None` where neither can be told.
+#[allow(clippy::unnecessary_cast)] // the fields' types differ between systems
+pub fn room(dir: &Path) -> Option<Room> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::ffi::OsStrExt;
+        let path = std::ffi::CString::new(dir.as_os_str().as_bytes()).ok()?;
+        // SAFETY: statvfs fills the zeroed struct from a NUL-terminated
+        // path; getrlimit fills the zeroed rlimit.
+        let (free, limit) = unsafe {
+            let mut st: libc::statvfs = std::mem::zeroed();
+            let free = (libc::statvfs(path.as_ptr(), &mut st) == 0)
+                .then(|| (st.f_bavail as u64).saturating_mul(st.f_frsize as u64));
+            let mut lim: libc::rlimit = std::mem::zeroed();
+            let limit = (libc::getrlimit(libc::RLIMIT_FSIZE, &mut lim) == 0
+                && lim.rlim_cur != libc::RLIM_INFINITY)
+                .then_some(lim.rlim_cur as u64);
+            (free, limit)
+        };
+        let free = free.map(|bytes| Room {
+            bytes,
+            limited_by: "free space on its file system",
+        });
+        let limit = limit.map(|bytes| Room {
+            bytes,
+            limited_by: "file-size limit (ulimit -f)",
+        });
+        [free, limit].into_iter().flatten().min_by_key(|r| r.bytes)
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = dir;
+        None
+    }
+}
+
+/// A number of bytes in words: `44.0 GB`, `812 bytes`.
+pub fn bytes(n: f64) -> String {
+    match [(1e12, "TB"), (1e9, "GB"), (1e6, "MB"), (1e3, "kB")]
+        .into_iter()
+        .find(|(unit, _)| n >= *unit)
+    {
+        Some((unit, name)) => format!("{:.1} {name}", n / unit),
+        None => format!("{n:.0} bytes"),
+    }
+}
+
 /// Prints `text` on standard output. A reader that stops reading (`| head`)
 /// ends the output quietly, not with a panic; any other failure (a full
 /// disk) is an I/O failure naming standard output.
@@ -151,11 +298,20 @@ pub fn warn_all(warnings: &[String]) {
     }
 }
 
-/// Prints `value` as pretty JSON (the `--json` of every command).
-pub fn print_json(value: &impl serde::Serialize) -> Result<(), crate::Failure> {
+/// Checks that every number of a result is finite (the guard of every
+/// writer, [`stability_io::finite`]): the error names the field and the
+/// input file `source` the result is of.
+pub fn finite(source: &str, value: &impl serde::Serialize) -> Result<(), crate::Failure> {
+    Ok(stability_io::finite::guard(source, value)?)
+}
+
+/// Prints `value`, a result of the input file `source`, as pretty JSON
+/// (the `--json` of every command), every number in it finite.
+pub fn print_json(source: &str, value: &impl serde::Serialize) -> Result<(), crate::Failure> {
+    finite(source, value)?;
     let text = serde_json::to_string_pretty(value).map_err(|e| {
         crate::Failure::Input(stability_io::diag::InputError::file(
-            "<output>",
+            source,
             format!("the result cannot be written as JSON: {e}"),
         ))
     })?;
@@ -168,6 +324,33 @@ pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let mut f = AtomicFile::create(path)?;
     f.write_all(bytes)?;
     f.commit()
+}
+
+/// Writes files as a set: every one into its temporary file first, then
+/// all renamed into place, so that a failure while writing (a full disk)
+/// leaves none of them changed, never a mix of old and new. The error
+/// names the file that failed.
+pub fn write_set(files: &[(PathBuf, Vec<u8>)]) -> Result<(), (PathBuf, std::io::Error)> {
+    // a directory in a file's place would fail its rename, after the others'
+    for (path, _) in files {
+        if path.symlink_metadata().is_ok_and(|m| m.is_dir()) {
+            let e = std::io::Error::new(std::io::ErrorKind::IsADirectory, "it is a directory");
+            return Err((path.clone(), e));
+        }
+    }
+    let mut written = Vec::with_capacity(files.len());
+    for (path, bytes) in files {
+        let at = |e| (path.clone(), e);
+        let mut f = AtomicFile::create(path).map_err(at)?;
+        f.write_all(bytes).map_err(at)?;
+        f.tmp.as_file().sync_all().map_err(at)?;
+        written.push(f);
+    }
+    for f in written {
+        let path = f.path.clone();
+        f.tmp.persist(&path).map_err(|e| (path, e.error))?;
+    }
+    Ok(())
 }
 
 /// Makes a private (0700/0600) temporary readable by others, as a result
@@ -188,6 +371,7 @@ fn make_public(path: &Path, mode: u32) -> std::io::Result<()> {
 pub struct AtomicFile {
     tmp: tempfile::NamedTempFile,
     path: PathBuf,
+    _live: Live,
 }
 
 impl AtomicFile {
@@ -196,10 +380,12 @@ impl AtomicFile {
         std::fs::create_dir_all(dir)?;
         remove_stale(dir);
         let tmp = temp_builder(&our_prefix()).tempfile_in(dir)?;
+        let _live = Live::new(tmp.path());
         make_public(tmp.path(), 0o644)?;
         Ok(AtomicFile {
             tmp,
             path: path.to_path_buf(),
+            _live,
         })
     }
 
@@ -227,6 +413,7 @@ impl Write for AtomicFile {
 pub struct AtomicDir {
     tmp: tempfile::TempDir,
     target: PathBuf,
+    live: Live,
 }
 
 impl AtomicDir {
@@ -236,10 +423,12 @@ impl AtomicDir {
         std::fs::create_dir_all(dir)?;
         remove_stale(dir);
         let tmp = temp_builder(&our_prefix()).tempdir_in(dir)?;
+        let live = Live::new(tmp.path());
         make_public(tmp.path(), 0o755)?;
         Ok(AtomicDir {
             tmp,
             target: target.to_path_buf(),
+            live,
         })
     }
 
@@ -248,28 +437,77 @@ impl AtomicDir {
         self.tmp.path()
     }
 
-    /// Writes the file `name` (a relative path) into the directory.
+    /// Writes the file `name` (a relative path) into the directory. Its
+    /// subdirectories are made as needed, never the directory itself (gone,
+    /// it stays gone: see [`remove_temporaries`]).
     pub fn write(&self, name: &str, bytes: &[u8]) -> std::io::Result<()> {
-        let path = self.tmp.path().join(name);
-        if let Some(d) = path.parent() {
-            std::fs::create_dir_all(d)?;
+        let root = self.tmp.path();
+        let path = root.join(name);
+        let mut missing = Vec::new();
+        let mut at = path.parent();
+        while let Some(d) = at.filter(|d| *d != root && !d.is_dir()) {
+            missing.push(d);
+            at = d.parent();
+        }
+        for d in missing.into_iter().rev() {
+            std::fs::create_dir(d)?;
         }
         std::fs::write(path, bytes)
     }
 
     /// Puts the directory in the target's place; a previous target (a
     /// directory) is removed.
-    pub fn commit(self) -> std::io::Result<()> {
-        let AtomicDir { tmp, target } = self;
+    pub fn commit(self) -> Result<(), Refused> {
+        self.commit_if(|_| Ok(()))
+    }
+
+    /// Puts the directory in the target's place if `may_replace` allows
+    /// the previous target (a directory), which is then removed: asked just
+    /// before the swap, and again of the previous directory just after it
+    /// (something saved into it in between would otherwise be lost), when a
+    /// refusal swaps them back. A refusal is `Refused::Not(why)`.
+    pub fn commit_if(
+        self,
+        may_replace: impl Fn(&Path) -> Result<(), String>,
+    ) -> Result<(), Refused> {
+        let AtomicDir { tmp, target, live } = self;
         if target.symlink_metadata().is_err() {
+            // rename(2) replaces only an empty directory made meanwhile
             std::fs::rename(tmp.path(), &target)?;
             let _ = tmp.keep();
             return Ok(());
         }
-        // the previous result ends up at the temporary path, removed with it
+        may_replace(&target).map_err(Refused::Not)?;
+        // from the swap on, the temporary path may hold the previous
+        // directory: no signal removes it then
+        drop(live);
         exchange(tmp.path(), &target)?;
+        // the previous result is now at the temporary path
+        if let Err(why) = may_replace(tmp.path()) {
+            if let Err(e) = exchange(tmp.path(), &target) {
+                // never remove what may not be replaced: keep it, and say where
+                let kept = tmp.keep();
+                let m = format!("{e}; the previous directory is kept at {}", kept.display());
+                return Err(Refused::Io(std::io::Error::new(e.kind(), m)));
+            }
+            return Err(Refused::Not(why));
+        }
         drop(tmp);
         Ok(())
+    }
+}
+
+/// Why [`AtomicDir::commit_if`] did not replace its target.
+#[derive(Debug)]
+pub enum Refused {
+    /// The target may not be replaced: why.
+    Not(String),
+    Io(std::io::Error),
+}
+
+impl From<std::io::Error> for Refused {
+    fn from(e: std::io::Error) -> Self {
+        Refused::Io(e)
     }
 }
 
@@ -331,6 +569,31 @@ mod tests {
     }
 
     #[test]
+    fn a_set_is_written_whole_or_not_at_all() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("x.json"), dir.path().join("x.py"));
+        std::fs::write(&a, "old").unwrap();
+        // the second file's directory cannot be made: the first is untouched
+        let plain = dir.path().join("plain");
+        std::fs::write(&plain, "a file").unwrap();
+        let bad = plain.join("x.m");
+        let (at, _) =
+            write_set(&[(a.clone(), b"new".to_vec()), (bad.clone(), b"m".to_vec())]).unwrap_err();
+        assert_eq!(at, bad);
+        assert_eq!(std::fs::read_to_string(&a).unwrap(), "old");
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+        // nor when a directory stands where the last file goes
+        std::fs::create_dir(&b).unwrap();
+        let set = [(a.clone(), b"new".to_vec()), (b.clone(), b"py".to_vec())];
+        assert_eq!(write_set(&set).unwrap_err().0, b);
+        assert_eq!(std::fs::read_to_string(&a).unwrap(), "old");
+        std::fs::remove_dir(&b).unwrap();
+        write_set(&[(a.clone(), b"new".to_vec()), (b.clone(), b"py".to_vec())]).unwrap();
+        assert_eq!(std::fs::read_to_string(&a).unwrap(), "new");
+        assert_eq!(std::fs::read_to_string(&b).unwrap(), "py");
+    }
+
+    #[test]
     fn an_uncommitted_file_leaves_nothing() {
         let dir = tempfile::tempdir().unwrap();
         let p = dir.path().join("out.csv");
@@ -362,6 +625,59 @@ mod tests {
         assert_eq!(std::fs::read_to_string(target.join("b")).unwrap(), "1");
         // nothing left beside it
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn a_directory_is_replaced_only_if_it_may_be_at_the_swap() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("report");
+        std::fs::create_dir(&target).unwrap();
+        std::fs::write(target.join("mine.txt"), "mine").unwrap();
+        let d = AtomicDir::create(&target).unwrap();
+        d.write("docs/a.md", b"new").unwrap();
+        // refused before the swap
+        let no = |p: &Path| match p.join("mine.txt").exists() {
+            true => Err("mine.txt".to_string()),
+            false => Ok(()),
+        };
+        assert!(matches!(d.commit_if(no), Err(Refused::Not(w)) if w == "mine.txt"));
+        assert_eq!(
+            std::fs::read_to_string(target.join("mine.txt")).unwrap(),
+            "mine"
+        );
+        // allowed before the swap, refused after it (a file saved meanwhile):
+        // swapped back, nothing lost, nothing left beside it
+        let d = AtomicDir::create(&target).unwrap();
+        d.write("a", b"new").unwrap();
+        let calls = std::cell::Cell::new(0);
+        let second = |_: &Path| {
+            calls.set(calls.get() + 1);
+            if calls.get() == 1 {
+                Ok(())
+            } else {
+                Err("saved meanwhile".to_string())
+            }
+        };
+        assert!(matches!(d.commit_if(second), Err(Refused::Not(_))));
+        assert_eq!(
+            std::fs::read_to_string(target.join("mine.txt")).unwrap(),
+            "mine"
+        );
+        assert!(!target.join("a").exists());
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn the_room_for_a_file_is_known_and_said_in_words() {
+        let dir = tempfile::tempdir().unwrap();
+        #[cfg(unix)]
+        {
+            let r = room(dir.path()).unwrap();
+            assert!(r.bytes > 0, "{r:?}");
+        }
+        assert_eq!(bytes(4.4e10), "44.0 GB");
+        assert_eq!(bytes(812.0), "812 bytes");
+        assert_eq!(bytes(1500.0), "1.5 kB");
     }
 
     #[test]

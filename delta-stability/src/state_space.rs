@@ -2,12 +2,13 @@
 //! [`stability_io::state_space`] written, its three files as a set.
 
 use crate::Failure;
-use crate::output::atomic_write;
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
 pub use stability_io::state_space::{Export, matlab_snippet, paths, python_snippet, to_json};
 
-/// Writes the export: the JSON, then the two scripts, each atomically.
+/// Writes the export as a set: the JSON and the two scripts written to
+/// their temporary files first, then all renamed into place, so that a
+/// failure leaves the three as they were. Every number is finite.
 pub fn write(out: &str, e: &Export<'_>) -> Result<(), Failure> {
     let [json, py, m] = paths(out)?;
     if !e.model.is_finite() {
@@ -17,13 +18,14 @@ pub fn write(out: &str, e: &Export<'_>) -> Result<(), Failure> {
         )
         .into());
     }
-    for (path, text) in [
-        (&json, to_json(e)),
-        (&py, python_snippet(e)),
-        (&m, matlab_snippet(e)),
-    ] {
-        atomic_write(path, text.as_bytes()).map_err(|err| Failure::Io(write_error(path, &err)))?;
-    }
+    stability_io::state_space::guard(e)?;
+    let files = [
+        (json.clone(), to_json(e).into_bytes()),
+        (py.clone(), python_snippet(e).into_bytes()),
+        (m.clone(), matlab_snippet(e).into_bytes()),
+    ];
+    crate::output::write_set(&files)
+        .map_err(|(path, err)| Failure::Io(write_error(&path, &err)))?;
     crate::output::warn(&format!(
         "wrote the state space to {} (and {}, {})",
         json.display(),

@@ -272,6 +272,35 @@ fn a_csv_table_without_a_header_is_used_whole() {
 }
 
 #[test]
+fn a_first_row_with_one_bad_cell_is_an_error_not_a_header() {
+    let dir = Scratch::new();
+    let cfg = dir.write(
+        "c.toml",
+        example("delta-45.toml").replace(
+            "damping = \"faired\"",
+            "damping = \"faired\"\n[model.tables]\nzero_lift_drag = { file = \"t.csv\" }",
+        ),
+    );
+    for (first, at) in [
+        (
+            "0.5,2.6x",
+            "t.csv:1:5: column 2 (value): `2.6x` is not a number",
+        ),
+        (
+            "O.5,2.6",
+            "t.csv:1:1: column 1 (Mach): `O.5` is not a number",
+        ),
+    ] {
+        dir.write("t.csv", format!("{first}\n0.7,0.03\n2.0,0.04\n"));
+        let err = stderr(&run_err(&["analyze", path(&cfg), "--mach", "0.8"], INPUT));
+        assert!(err.contains(at), "{first}: {err}");
+    }
+    // a header is a first line with no number in it
+    dir.write("t.csv", "mach,cd0\n0.5,0.02\n2.0,0.04\n");
+    run_ok(&["analyze", path(&cfg), "--mach", "0.8"]);
+}
+
+#[test]
 fn a_huge_string_gives_a_short_message() {
     let dir = Scratch::new();
     let huge = "a".repeat(10 << 20);
@@ -527,4 +556,598 @@ fn an_analysis_that_overflows_is_an_error_at_the_value_behind_it() {
         assert!(stdout(&out).is_empty(), "{to}: printed {}", stdout(&out));
         assert_short(&err);
     }
+}
+
+/// A `[dimensional]` table for the 45° example: τ known, the modes in
+/// seconds and the short-period frequency requirement assessed.
+const SECONDS: &str =
+    "\n[dimensional]\nV = 250.0\nrho = 0.41\nS = 93.0\nchord = 6.6\nmass = 12000.0\n";
+
+#[test]
+fn an_undefined_cap_is_not_assessed_not_graded_on_infinity() {
+    let dir = Scratch::new();
+    let report = format!("{}{SECONDS}", example("tailless-delta-45.toml"));
+    let dimensional = example("aircraft/boeing-747-etkin-reid.toml");
+    for (text, why) in [
+        (report.replace("c_l = 0.3 ", "c_l = 0.0 "), "C_L = 0"),
+        (report.replace("z_w = -3.2", "z_w = 0.0 "), "Z_w = 0"),
+        (dimensional.replace("g = 9.81 ", "g = 5e-324 "), "g → 0"),
+    ] {
+        let f = dir.write("x.toml", &text);
+        let page = stdout(&run_ok(&["quartic", path(&f)]));
+        let line = page
+            .lines()
+            .find(|l| l.contains("short-period frequency"))
+            .unwrap_or_else(|| panic!("{why}: no requirement line:\n{page}"));
+        assert!(
+            line.contains("not assessed") && line.contains(why),
+            "{line}"
+        );
+        // no level graded on an infinite or undefined CAP, no `inf` printed
+        assert!(!line.contains("Level") && !line.contains("inf "), "{line}");
+        let j = json(&run_ok(&["quartic", path(&f), "--json"]));
+        assert!(j.get("short_period_frequency").is_none(), "{why}: {j}");
+        let reason = j["short_period_frequency_not_assessed"].as_str().unwrap();
+        assert!(reason.contains(why), "{reason}");
+    }
+}
+
+/// Each mode's damping ratio, by mode name, from `quartic --json`.
+fn damping_ratios(j: &serde_json::Value) -> Vec<(String, f64)> {
+    let mut v: Vec<(String, f64)> = j["modes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|m| {
+            Some((
+                m["name"].as_str()?.to_string(),
+                m["damping_ratio"].as_f64()?,
+            ))
+        })
+        .collect();
+    v.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    v
+}
+
+/// Converts `input` (in notation `from`) to `to` and reads the file back
+/// with the program's reader: the same aircraft (each mode's ζ within
+/// 0.02), or a refusal (exit status 2) that writes nothing. Whether it was
+/// written.
+fn round_trip(dir: &Scratch, ex: &std::path::Path, from: &str, to: &str) -> bool {
+    let input = dir.write("in.toml", std::fs::read(ex).unwrap());
+    let original = json(&run_ok(&["quartic", path(&input), "--json"]));
+    let args = ["convert", "--from", from, "--to", to, path(&input)];
+    let out = bin().args(args).output().unwrap();
+    let (err, ex) = (stderr(&out), ex.display());
+    match out.status.code() {
+        Some(0) => {}
+        Some(2) => {
+            assert!(stdout(&out).is_empty() && err.contains("in.toml"), "{err}");
+            return false;
+        }
+        code => panic!("{ex} --to {to}: {code:?}\n{err}"),
+    }
+    let back = dir.write("back.toml", &out.stdout);
+    let read = bin()
+        .args(["quartic", path(&back), "--json"])
+        .output()
+        .unwrap();
+    assert!(
+        read.status.success(),
+        "{ex} --to {to}: written, then refused by the reader:\n{}\n{}",
+        stdout(&out),
+        stderr(&read)
+    );
+    let (a, b) = (damping_ratios(&original), damping_ratios(&json(&read)));
+    assert_eq!(a.len(), b.len(), "{ex} --to {to}");
+    for ((n, x), (_, y)) in a.iter().zip(&b) {
+        assert!((x - y).abs() < 0.02, "{ex} --to {to}: {n} ζ {x} → {y}");
+    }
+    true
+}
+
+#[test]
+fn convert_writes_files_its_own_reader_accepts_or_says_what_is_missing() {
+    let dir = Scratch::new();
+    let root = common::root();
+    std::fs::copy(
+        root.join("examples/tailless-delta.st"),
+        dir.path().join("tailless-delta.st"),
+    )
+    .unwrap();
+    let mut examples: Vec<std::path::PathBuf> = ["examples", "examples/aircraft"]
+        .iter()
+        .flat_map(|d| std::fs::read_dir(root.join(d)).unwrap())
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    examples.sort();
+    let targets: Vec<&str> = stability_core::notation::Notation::all()
+        .map(|n| n.name())
+        .chain(["dimensional"])
+        .collect();
+    let (mut written, mut refused) = (0, 0);
+    for ex in &examples {
+        let text = std::fs::read_to_string(ex).unwrap();
+        let Some(line) = text.lines().find(|l| l.starts_with("notation = ")) else {
+            continue; // a design-point config, not a derivative file
+        };
+        let from = line.split('"').nth(1).unwrap();
+        for to in &targets {
+            match round_trip(&dir, ex, from, to) {
+                true => written += 1,
+                false => refused += 1,
+            }
+        }
+    }
+    assert!(
+        written > 40 && refused > 0,
+        "{written} written, {refused} refused"
+    );
+    // the shipped example has no C_D: Ribner's C_Lα holds it with z_w
+    let ex = "examples/tailless-delta-45.toml";
+    for to in ["ribner", "lehrian", "perkins", "american_cl"] {
+        let err = stderr(&run_err(
+            &["convert", "--from", "report", "--to", to, ex],
+            INPUT,
+        ));
+        assert!(
+            err.contains(&format!("--to {to} needs C_D")) && err.contains("give c_d in [flight]"),
+            "{err}"
+        );
+        // the JSON still says which values the input determines (null: not)
+        let j = json(&run_ok(&[
+            "convert", "--from", "report", "--to", to, ex, "--json",
+        ]));
+        assert!(
+            j["values"]
+                .as_object()
+                .unwrap()
+                .values()
+                .any(|v| v.is_null())
+        );
+    }
+}
+
+#[test]
+fn convert_to_dimensional_writes_only_what_a_dimensional_file_holds() {
+    let dir = Scratch::new();
+    let ex = example("tailless-delta-60-dimensional.toml");
+    for (from, to, expect) in [
+        (
+            "c_l = 0.121",
+            "c_l = 0.0  ",
+            ":24:7: [flight] c_l: --to dimensional: C_L = 0",
+        ),
+        (
+            "c_l = 0.121",
+            "c_l = -0.2 ",
+            ":24:7: [flight] c_l: --to dimensional: C_L = -0.2",
+        ),
+        (
+            "i_b = 0.06",
+            "i_b = 1e-310",
+            "the result's `model.derivatives.M_w` = -inf is not finite",
+        ),
+        ("mu1 = 138.2", "mu1 = 1e-310", "is not finite"),
+    ] {
+        let f = dir.write("x.toml", ex.replace(from, to));
+        for json in [None, Some("--json")] {
+            let mut args = vec![
+                "convert",
+                "--from",
+                "report",
+                "--to",
+                "dimensional",
+                path(&f),
+            ];
+            args.extend(json);
+            let out = run_err(&args, INPUT);
+            assert!(stderr(&out).contains(expect), "{to}: {}", stderr(&out));
+            assert!(stdout(&out).is_empty(), "{to}: wrote {}", stdout(&out));
+        }
+    }
+    // a body-axis set whose stability-axis attitude is beyond ±89°
+    let steep = dir.write(
+        "steep.toml",
+        example("aircraft/boeing-747-cr2144-fc9.toml")
+            .replace("W0 = 62.0740 ", "W0 = -300.0 ")
+            .replace("theta0 = 4.6 ", "theta0 = 88.9 "),
+    );
+    let args = [
+        "convert",
+        "--from",
+        "dimensional",
+        "--to",
+        "dimensional",
+        path(&steep),
+    ];
+    let err = stderr(&run_err(&args, INPUT));
+    assert!(
+        err.contains("[flight] theta0") && err.contains("110.1°"),
+        "{err}"
+    );
+}
+
+#[test]
+fn the_warning_of_what_eq4_leaves_out_never_says_inf_percent() {
+    let dir = Scratch::new();
+    // Z_u = M_u = 0: a root at 0, which a relative move divided by
+    let f = dir.write(
+        "zero-root.toml",
+        example("aircraft/boeing-747-etkin-reid.toml")
+            .replace("Z_u = -0.08989797864 ", "Z_u = 0.0 ")
+            .replace("M_u = 0.0003547884187 ", "M_u = 0.0 ")
+            .replace("X_q = 0.0", "X_q = 0.0\nX_udot = 0.01"),
+    );
+    let out = run_ok(&[
+        "convert",
+        "--from",
+        "dimensional",
+        "--to",
+        "report",
+        path(&f),
+    ]);
+    let err = stderr(&out);
+    assert!(err.contains("cannot hold X_u̇ = 0.0100"), "{err}");
+    assert!(
+        err.contains("the modes move by up to 1.00 % of |λ|"),
+        "{err}"
+    );
+    assert!(!err.contains("inf") && !err.contains("NaN"), "{err}");
+}
+
+/// The names and contents of the files in `dir`, sorted.
+fn contents(dir: &std::path::Path) -> Vec<(String, Vec<u8>)> {
+    let mut v: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.is_file())
+        .map(|p| {
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            (name, std::fs::read(&p).unwrap())
+        })
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn no_output_overwrites_an_input_or_another_output() {
+    let dir = Scratch::new();
+    let set = example("tailless-delta-45.toml");
+    for name in ["X.toml", "X.json", "X.py", "X.m"] {
+        dir.write(name, &set);
+    }
+    let config = example("delta-45.toml").replace(
+        "damping = \"faired\"",
+        "damping = \"faired\"\n[model.tables]\nzero_lift_drag = { file = \"t.csv\" }",
+    );
+    dir.write("W.json", &config);
+    dir.write("t.csv", "mach,cd0\n0.5,0.02\n2.0,0.03\n");
+    let st = common::root().join("examples/tailless-delta.st");
+    std::fs::copy(st, dir.path().join("tailless-delta.st")).unwrap();
+    dir.write("avl.toml", example("avl-tailless-delta.toml"));
+    std::fs::create_dir(dir.path().join("sub")).unwrap();
+    let mut cases = vec![
+        (
+            "response X.toml --until 1 --csv X.toml",
+            "--csv would overwrite FILE",
+        ),
+        (
+            "quartic X.json --state-space X.json",
+            "--state-space would overwrite FILE",
+        ),
+        (
+            "quartic X.py --state-space X.json",
+            "the script X.py that --state-space writes",
+        ),
+        (
+            "quartic X.m --state-space X.json",
+            "the script X.m that --state-space writes",
+        ),
+        (
+            "sweep W.json --mach 1 -o W.json",
+            "-o would overwrite CONFIG",
+        ),
+        (
+            "analyze W.json --state-space W.json",
+            "--state-space would overwrite CONFIG",
+        ),
+        (
+            "sweep W.json --mach 1 -o sub/../t.csv",
+            "`t.csv` (named in CONFIG)",
+        ),
+        (
+            "response X.toml --until 1 --csv o.csv --svg ./o.csv",
+            "--csv and --svg name the same file",
+        ),
+        (
+            "response avl.toml --until 1 --svg tailless-delta.st",
+            "(named in FILE)",
+        ),
+    ];
+    #[cfg(unix)]
+    {
+        std::fs::hard_link(dir.path().join("X.toml"), dir.path().join("hard.csv")).unwrap();
+        cases.push((
+            "response X.toml --until 1 --csv hard.csv",
+            "--csv would overwrite FILE",
+        ));
+    }
+    let before = contents(dir.path());
+    for (args, expect) in cases {
+        let out = bin()
+            .current_dir(dir.path())
+            .args(args.split(' '))
+            .output()
+            .unwrap();
+        let err = stderr(&out);
+        assert_eq!(out.status.code(), Some(INPUT), "{args}:\n{err}");
+        assert!(err.contains(expect), "{args}:\n{err}");
+        assert_eq!(contents(dir.path()), before, "{args} changed a file");
+    }
+}
+
+#[test]
+fn the_state_space_files_are_written_as_a_set() {
+    let dir = Scratch::new();
+    let out = dir.path().join("ss.json");
+    // a directory where the MATLAB script goes: nothing of the set written
+    std::fs::create_dir(dir.path().join("ss.m")).unwrap();
+    let args = [
+        "quartic",
+        "examples/tailless-delta-45.toml",
+        "--state-space",
+        path(&out),
+    ];
+    let err = stderr(&run_err(&args, IO));
+    assert!(
+        err.contains("ss.m") && err.contains("it is a directory"),
+        "{err}"
+    );
+    assert!(!out.exists() && !dir.path().join("ss.py").exists());
+    std::fs::remove_dir(dir.path().join("ss.m")).unwrap();
+    run_ok(&args);
+    for ext in ["json", "py", "m"] {
+        assert!(out.with_extension(ext).is_file(), "{ext}");
+    }
+}
+
+/// Runs `report --out out`, which must refuse (exit status 3) naming each
+/// of `lost`, and leave every file in `out` as it was.
+fn report_refuses(out: &std::path::Path, lost: &[&str]) {
+    let before = contents(out);
+    let err = stderr(&run_err(&["report", "--out", path(out)], IO));
+    assert!(err.contains("will not replace"), "{err}");
+    for name in lost {
+        assert!(err.contains(&format!("`{name}`")), "{name}: {err}");
+    }
+    assert_eq!(contents(out), before);
+}
+
+#[test]
+fn the_report_replaces_only_what_a_report_wrote_checked_at_the_swap() {
+    let dir = Scratch::new();
+    let out = dir.path().join("report");
+    run_ok(&["report", "--out", path(&out)]);
+    let page = std::fs::read(out.join("index.html")).unwrap();
+    // a file of the user's under docs/, a name the report writes
+    std::fs::write(out.join("docs/mine.md"), "my notes").unwrap();
+    report_refuses(&out, &["docs/mine.md"]);
+    assert!(out.join("docs/mine.md").is_file());
+    std::fs::remove_file(out.join("docs/mine.md")).unwrap();
+    // the report's page edited by its user
+    std::fs::write(out.join("index.html"), "<p>my own page</p>").unwrap();
+    report_refuses(&out, &["index.html"]);
+    std::fs::write(out.join("index.html"), &page).unwrap();
+    // a user's own index.html and summary.json, never written by a report
+    let own = dir.path().join("own");
+    std::fs::create_dir(&own).unwrap();
+    std::fs::write(own.join("index.html"), "<p>mine</p>").unwrap();
+    std::fs::write(own.join("summary.json"), "{}").unwrap();
+    report_refuses(&own, &["index.html", "summary.json"]);
+    // a file saved into the report while a run writes the new one: the
+    // run refuses at the swap and removes nothing
+    let child = bin()
+        .args(["report", "--out", path(&out)])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run");
+    let writing = wait_until(|| {
+        temporaries(dir.path())
+            .iter()
+            .any(|d| std::fs::read_dir(d).is_ok_and(|mut e| e.next().is_some()))
+    });
+    std::fs::write(out.join("notes.txt"), "saved during the run").unwrap();
+    let done = child.wait_with_output().unwrap();
+    assert!(writing, "the run never wrote into its temporary directory");
+    let err = stderr(&done);
+    assert_eq!(done.status.code(), Some(IO), "{err}");
+    assert!(
+        err.contains("will not replace") && err.contains("`notes.txt`"),
+        "{err}"
+    );
+    let notes = std::fs::read_to_string(out.join("notes.txt")).unwrap();
+    assert_eq!(notes, "saved during the run");
+    assert_eq!(std::fs::read(out.join("index.html")).unwrap(), page);
+    assert!(
+        temporaries(dir.path()).is_empty(),
+        "{:?}",
+        temporaries(dir.path())
+    );
+    // with the user's file moved away, the report is replaced
+    std::fs::remove_file(out.join("notes.txt")).unwrap();
+    run_ok(&["report", "--out", path(&out)]);
+}
+
+/// The program's temporary files and directories in `dir`.
+fn temporaries(dir: &std::path::Path) -> Vec<std::path::PathBuf> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| {
+            p.file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with(".delta-stability-"))
+        })
+        .collect()
+}
+
+/// Polls `ready` every 2 ms for up to 60 s; whether it became true.
+fn wait_until(mut ready: impl FnMut() -> bool) -> bool {
+    let start = Instant::now();
+    while start.elapsed() < Duration::from_secs(60) {
+        if ready() {
+            return true;
+        }
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    false
+}
+
+/// Sends `signal` (`TERM`, `INT`) to process `pid`.
+#[cfg(unix)]
+fn send(signal: &str, pid: u32) {
+    let sent = std::process::Command::new("kill")
+        .args(["-s", signal, &pid.to_string()])
+        .status()
+        .expect("kill");
+    assert!(sent.success());
+}
+
+#[cfg(unix)]
+#[test]
+fn sigint_and_sigterm_remove_the_runs_temporaries() {
+    for (signal, status) in [("TERM", 143), ("INT", 130)] {
+        let dir = Scratch::new();
+        let out = dir.path().join("big.csv");
+        let child = bin()
+            .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.00001"])
+            .args(["--damping", "faired-slender", "--cg", "0.2:0.3:0.001", "-o"])
+            .arg(&out)
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("run");
+        // once rows (not only the header) are in the temporary file
+        let writing = wait_until(|| {
+            temporaries(dir.path())
+                .iter()
+                .any(|p| std::fs::metadata(p).is_ok_and(|m| m.len() > 200))
+        });
+        send(signal, child.id());
+        let done = child.wait_with_output().unwrap();
+        assert!(writing, "the sweep never wrote into a temporary file");
+        assert_eq!(done.status.code(), Some(status), "SIG{signal}");
+        assert!(
+            temporaries(dir.path()).is_empty(),
+            "SIG{signal}: a temporary left"
+        );
+        assert!(!out.exists());
+    }
+    // a report's temporary directory too
+    let dir = Scratch::new();
+    let out = dir.path().join("report");
+    let child = bin()
+        .args(["report", "--out", path(&out)])
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("run");
+    let writing = wait_until(|| {
+        temporaries(dir.path())
+            .iter()
+            .any(|d| std::fs::read_dir(d).is_ok_and(|mut e| e.next().is_some()))
+    });
+    send("INT", child.id());
+    let done = child.wait_with_output().unwrap();
+    assert!(
+        writing && done.status.code() == Some(130),
+        "{:?}",
+        done.status
+    );
+    assert!(temporaries(dir.path()).is_empty() && !out.exists());
+}
+
+#[test]
+fn sweep_counts_in_messages_are_short() {
+    let dir = Scratch::new();
+    let o = dir.path().join("o.csv");
+    for (range, expect) in [
+        (
+            vec!["--mach", "0.5:2:1e-300"],
+            "0.5:2:1e-300 gives about 1.50e300 values",
+        ),
+        (
+            vec!["--mach", "1", "--sweep", "0:1e308:1e-308"],
+            "gives more values than can be counted",
+        ),
+        (
+            vec![
+                "--mach",
+                "0.5:1.4999999:1e-7",
+                "--cg",
+                "0.1:0.19999999:1e-8",
+                "--mu1",
+                "10:10.00099:1e-8",
+            ],
+            "the grid has about 9.90e18 points",
+        ),
+    ] {
+        let mut args = vec!["sweep", "examples/delta-60.toml", "-o", path(&o)];
+        args.extend(range);
+        let err = stderr(&run_err(&args, INPUT));
+        assert!(err.contains(expect), "{args:?}: {err}");
+        assert!(!err.contains("inf"), "{err}");
+        let digits = err.split(|c: char| !c.is_ascii_digit()).map(str::len).max();
+        assert!(digits < Some(10), "{err}");
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn a_sweep_that_would_not_fit_is_refused_with_its_estimate() {
+    let dir = Scratch::new();
+    let out = dir.path().join("out.csv");
+    // a file-size limit of 100 blocks (51.2 kB in sh's 512-byte blocks, or
+    // 102.4 kB): about 320 kB of rows would not fit
+    let done = std::process::Command::new("sh")
+        .arg("-c")
+        .arg("ulimit -f 100; exec \"$0\" \"$@\"")
+        .arg(bin().get_program())
+        .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.001"])
+        // quasi-steady: this is about the file, not the lattice's solves
+        .args(["--damping", "faired-slender", "-o"])
+        .arg(&out)
+        .current_dir(common::root())
+        .output()
+        .unwrap();
+    let err = stderr(&done);
+    assert_eq!(done.status.code(), Some(IO), "{err}");
+    assert!(
+        err.contains("the grid's 1501 rows need about") && err.contains("bytes a row"),
+        "{err}"
+    );
+    assert!(err.contains("file-size limit (ulimit -f)"), "{err}");
+    assert!(!out.exists() && temporaries(dir.path()).is_empty());
+}
+
+#[test]
+fn a_response_over_a_tiny_span_is_written_in_short_numbers() {
+    let args = [
+        "response",
+        "examples/tailless-delta-45.toml",
+        "--until",
+        "1e-300",
+        "--steps",
+        "10",
+    ];
+    let csv = stdout(&run_ok(&args));
+    assert_eq!(csv.lines().count(), 12, "{csv}");
+    for line in csv.lines().skip(1) {
+        for field in line.split(',') {
+            assert!(field.len() <= 20, "{field} in {line}");
+            assert!(field.is_empty() || field.parse::<f64>().is_ok_and(f64::is_finite));
+        }
+    }
+    assert!(csv.lines().nth(10).unwrap().starts_with("9e-301,"), "{csv}");
 }

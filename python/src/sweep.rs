@@ -102,13 +102,11 @@ pub fn sweep_of(a: &AxisArgs<'_, '_>, cfg: &Config) -> PyResult<Sweep> {
     let n = [&axes.mach, &axes.sweep_deg, &axes.cg, &axes.mu1, &axes.i_b]
         .iter()
         .try_fold(1usize, |n, v| n.checked_mul(v.len()));
-    match n {
-        Some(n) if n <= MAX_POINTS => {}
-        Some(n) => {
-            let m = format!("the grid has {n} points; the limit of one call is {MAX_POINTS:e}");
-            return Err(argument("grid", m));
-        }
-        None => return Err(argument("grid", "the grid is too large")),
+    if n.is_none_or(|n| n > MAX_POINTS) {
+        // the count bounded in length, however large the grid
+        let points = stability_core::sweep::count(n, "points");
+        let m = format!("the grid has {points}; the limit of one call is {MAX_POINTS:e}");
+        return Err(argument("grid", m));
     }
     let sweep = Sweep::new(cfg.case.clone(), axes).map_err(|e| sweep_error(cfg, e))?;
     match &cfg.physical {

@@ -173,6 +173,27 @@ pub fn frequency_level(
     }
 }
 
+/// Why CAP = ω_sp²/(n/α) is undefined at ω_sp (rad/s) and n/α (g/rad),
+/// in words, or `None` when it is a finite number: n/α must be finite
+/// (n/α = −z_w/C_L is not at C_L = 0, nor −Z_w·U₀/g at g → 0) and not 0
+/// (at Z_w = 0 CAP is infinite), and CAP must not overflow.
+pub fn not_assessed(omega: f64, n_alpha: f64) -> Option<String> {
+    let cap = omega * omega / n_alpha;
+    Some(if !n_alpha.is_finite() {
+        "n/α is not finite (n/α = −z_w/C_L at C_L = 0, or −Z_w·U₀/g with g → 0): CAP = ω_sp²/(n/α) is undefined".to_string()
+    } else if n_alpha == 0.0 {
+        "n/α = 0 (Z_w = 0): CAP = ω_sp²/(n/α) is infinite".to_string()
+    } else if !omega.is_finite() || !cap.is_finite() {
+        format!(
+            "CAP = ω_sp²/(n/α) overflows (ω_sp = {} rad/s, n/α = {} g/rad)",
+            crate::display::Num(omega),
+            crate::display::Num(n_alpha)
+        )
+    } else {
+        return None;
+    })
+}
+
 /// n/α = −z_w/C_L (g/rad), from the report's z_w and the level-flight
 /// C_L (see the module's documentation).
 pub fn n_alpha(z_w: f64, c_l: f64) -> f64 {
@@ -205,6 +226,20 @@ pub struct ShortPeriodFrequency {
 }
 
 impl ShortPeriodFrequency {
+    /// The levels of ω_sp (rad/s) at n/α (g/rad), or why the requirement
+    /// cannot be assessed there ([`not_assessed`]): no level is given on a
+    /// CAP that is not a number.
+    pub fn assess(
+        omega: f64,
+        n_alpha: f64,
+        class: AirplaneClass,
+    ) -> Result<ShortPeriodFrequency, String> {
+        match not_assessed(omega, n_alpha) {
+            Some(why) => Err(why),
+            None => Ok(ShortPeriodFrequency::of(omega, n_alpha, class)),
+        }
+    }
+
     /// The levels of ω_sp (rad/s) at n/α (g/rad).
     pub fn of(omega: f64, n_alpha: f64, class: AirplaneClass) -> ShortPeriodFrequency {
         let level = |c| frequency_level(omega, n_alpha, c, class);

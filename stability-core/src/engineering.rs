@@ -38,6 +38,12 @@ pub struct Engineering {
     /// n/α are known.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub short_period_frequency: Option<ShortPeriodFrequency>,
+    /// Why §3.2.2.1.1 is not assessed where the short period oscillates in
+    /// seconds and n/α was given, but CAP = ω_sp²/(n/α) is undefined (n/α
+    /// not finite, as at C_L = 0, or zero): `short_period_frequency` is
+    /// then absent.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub short_period_frequency_not_assessed: Option<String>,
 }
 
 impl Engineering {
@@ -57,6 +63,7 @@ impl Engineering {
                 model,
                 damp: None,
                 short_period_frequency: None,
+                short_period_frequency_not_assessed: None,
             });
         };
         let roots = analysis.roots.map(|z| z / tau);
@@ -84,17 +91,21 @@ impl Engineering {
                 damp: None,
                 mode_shapes,
                 short_period_frequency: None,
+                short_period_frequency_not_assessed: None,
             };
         }
-        let short_period_frequency = match (damp.0.short_period(), n_alpha) {
-            (Some(sp), Some(n)) => Some(ShortPeriodFrequency::of(sp.natural_frequency, n, class)),
+        let assessed = match (damp.0.short_period(), n_alpha) {
+            (Some(sp), Some(n)) => {
+                Some(ShortPeriodFrequency::assess(sp.natural_frequency, n, class))
+            }
             _ => None,
         };
         Engineering {
             model,
             damp: Some(damp),
             mode_shapes,
-            short_period_frequency,
+            short_period_frequency: assessed.clone().and_then(Result::ok),
+            short_period_frequency_not_assessed: assessed.and_then(Result::err),
         }
     }
 }

@@ -100,7 +100,7 @@ pub enum SweepError {
         sweep_deg: f64,
         error: GeometryError,
     },
-    #[error("the grid has {} points; the limit is {MAX_POINTS}", points.map_or("too many".to_string(), |n| n.to_string()))]
+    #[error("the grid has {}; the limit is 2e8", count(*points, "points"))]
     TooLarge { points: Option<usize> },
     #[error("the flight condition at a sweep of {sweep_deg}°: {error}")]
     Flight { sweep_deg: f64, error: FlightError },
@@ -108,6 +108,20 @@ pub enum SweepError {
         "a physical flight condition fixes μ₁ and i_B (from the mass, I_y and the air): the `{axis}` axis must have one value, not {n}"
     )]
     FixedByFlight { axis: &'static str, n: usize },
+}
+
+/// A count of `what` in a message, bounded in length however large: exact
+/// below a billion, else to three figures (`2.25e13 points`); `None` (more
+/// than a `usize` holds) is "more than 1.8e19".
+pub fn count(n: Option<usize>, what: &str) -> String {
+    match n {
+        Some(n) if n < 1_000_000_000 => format!("{n} {what}"),
+        Some(n) => format!("about {} {what}", crate::display::sig(n as f64, 3)),
+        None => format!(
+            "more than {} {what}",
+            crate::display::sig(usize::MAX as f64, 2)
+        ),
+    }
 }
 
 /// Why one design point has no result.

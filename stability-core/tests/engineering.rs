@@ -269,6 +269,24 @@ fn the_damp_table_is_the_roots_over_tau() {
 }
 
 #[test]
+fn an_undefined_cap_is_not_assessed() {
+    use stability_core::cap::not_assessed;
+    for n in [
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+        0.0,
+        -0.0,
+        1e-320,
+    ] {
+        assert!(not_assessed(7.0, n).is_some(), "n/α = {n}");
+        assert!(ShortPeriodFrequency::assess(7.0, n, AirplaneClass::IV).is_err());
+    }
+    let f = ShortPeriodFrequency::assess(3.0, 20.0, AirplaneClass::IV).unwrap();
+    assert_eq!(f, ShortPeriodFrequency::of(3.0, 20.0, AirplaneClass::IV));
+}
+
+#[test]
 fn n_alpha_two_ways() {
     // (V/g)(−Z_w) with Z_w = z_w/τ (per unit mass) is −z_w/C_L when
     // C_L = W/(½ρV²S).

@@ -5,13 +5,15 @@
 //! overflows is an error at the value that caused it.
 
 use crate::diag::InputError;
-use crate::input::dimensional_notation::DIMENSIONAL;
-use crate::input::rows::{DERIVATIVES, FLIGHT, QUARTIC};
-use crate::input::tabled::uses_parameter;
+use crate::input::dimensional_notation::{DIMENSIONAL, DimensionalFile};
+use crate::input::rows::{C_L, DERIVATIVES, FLIGHT, QUARTIC};
+use crate::input::tabled::{needed_rows, uses_parameter};
 use crate::input::{AnyFile, DerivativeFile};
 use serde::Serialize;
-use stability_core::dimensional::{DimensionalDerivatives, DimensionalModel, Reference};
-use stability_core::display::Num;
+use stability_core::dimensional::{
+    DimensionalDerivatives, DimensionalModel, Reference, THETA0_MAX,
+};
+use stability_core::display::{Num, sig};
 use stability_core::notation::{Notation, NotationError, Values, tables};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -58,8 +60,30 @@ pub enum Conversion<'a> {
     Dimensional(Dimensional<'a>),
 }
 
-/// Converts `any`, written in notation `from`, into `to`.
+/// Converts `any`, written in notation `from`, into `to`: every value of
+/// the result finite ([`crate::finite`]), and a dimensional result one that
+/// a dimensional file can hold (g > 0, |θ₀| ≤ 89°). (Whether the target
+/// notation can express the whole set is [`Conversion::toml`]'s check: the
+/// JSON gives `null` for a value the input does not determine.)
 pub fn convert<'a>(
+    any: &'a AnyFile,
+    from: &'a str,
+    to: Target,
+) -> Result<Conversion<'a>, InputError> {
+    let c = conversion(any, from, to)?;
+    match &c {
+        Conversion::Table {
+            input,
+            from,
+            to,
+            values,
+        } => crate::finite::guard(&input.path, &ConvertJson::new(input, from, *to, values))?,
+        Conversion::Dimensional(d) => crate::finite::guard(d.path, &d.view())?,
+    }
+    Ok(c)
+}
+
+fn conversion<'a>(
     any: &'a AnyFile,
     from: &'a str,
     to: Target,
@@ -67,6 +91,7 @@ pub fn convert<'a>(
     use std::borrow::Cow;
     match (any, to) {
         (AnyFile::Dimensional(d), Target::Dimensional) => {
+            stability_attitude(d)?;
             Ok(Conversion::Dimensional(Dimensional {
                 path: &d.path,
                 from,
@@ -101,6 +126,16 @@ pub fn convert<'a>(
                     "--to dimensional needs the flight condition in seconds: a [dimensional] table with V, rho, S, chord and mass (SI)",
                 ));
             };
+            let c_l = input.derivatives.c_l;
+            if c_l <= 0.0 {
+                return Err(input.error_at(
+                    C_L,
+                    format!(
+                        "--to dimensional: C_L = {} gives g = C_L·V/τ ≤ 0, which a dimensional set cannot hold (its g is positive): the report's set must be of level flight with C_L > 0",
+                        Num(c_l)
+                    ),
+                ));
+            }
             let (model, reference) = DimensionalModel::from_report_with(&input.derivatives, dim);
             Ok(Conversion::Dimensional(Dimensional {
                 path: &input.path,
@@ -113,6 +148,22 @@ pub fn convert<'a>(
     }
 }
 
+/// A dimensional set's stability-axis attitude θ₀ − α₀ within the ±89°
+/// a dimensional file holds.
+fn stability_attitude(d: &DimensionalFile) -> Result<(), InputError> {
+    let theta0 = d.model.in_stability_axes().trim.theta0;
+    if theta0.abs() <= THETA0_MAX {
+        return Ok(());
+    }
+    Err(d.error_at(
+        "theta0",
+        format!(
+            "--to dimensional: in stability axes θ₀ = θ₀ − α₀ = {}°, beyond the ±89° a dimensional set holds (the x axis near the vertical): there is no such set in stability axes to write",
+            sig(theta0.to_degrees(), 4)
+        ),
+    ))
+}
+
 impl Conversion<'_> {
     /// The reader's warnings about the set converted (for a dimensional
     /// set into a table, those of its turn into the report's notation).
@@ -123,8 +174,55 @@ impl Conversion<'_> {
         }
     }
 
-    /// The converted set as a derivative file of the target notation.
-    pub fn toml(&self) -> String {
+    /// The converted set as a derivative file of the target notation, one
+    /// the program's own reader accepts: an error (naming what is missing)
+    /// when the target notation cannot express the set, as Ribner's C_Lα,
+    /// which holds z_w with C_D, cannot without C_D.
+    pub fn toml(&self) -> Result<String, InputError> {
+        if let Conversion::Table {
+            input, to, values, ..
+        } = self
+        {
+            expressible(input, *to, values)?;
+        }
+        let text = self.unchecked_toml();
+        self.reads_back(&text)?;
+        Ok(text)
+    }
+
+    /// The file's path.
+    fn path(&self) -> &str {
+        match self {
+            Conversion::Table { input, .. } => &input.path,
+            Conversion::Dimensional(d) => d.path,
+        }
+    }
+
+    /// The converted file, read back by the program's reader: a file it
+    /// would refuse is never written.
+    fn reads_back(&self, text: &str) -> Result<(), InputError> {
+        const CONVERTED: &str = "<converted>";
+        let read = match self {
+            Conversion::Dimensional(_) => {
+                crate::input::dimensional_notation::parse(CONVERTED, text)
+                    .map(|_| ())
+                    .map_err(crate::Failure::Input)
+            }
+            Conversion::Table { .. } => crate::input::parse(CONVERTED, text).map(|_| ()),
+        };
+        read.map_err(|e| {
+            let why = match &e {
+                crate::Failure::Input(e) => format!("{}{}", e.location(), e.message),
+                crate::Failure::Io(e) => e.to_string(),
+            };
+            InputError::file(
+                self.path(),
+                format!("the converted file would not be read back ({why}); nothing written"),
+            )
+        })
+    }
+
+    fn unchecked_toml(&self) -> String {
         match self {
             Conversion::Table {
                 input,
@@ -180,6 +278,68 @@ pub fn converted(input: &DerivativeFile, to: Notation) -> Result<Values, InputEr
                 None => InputError::file(&input.path, message),
             }
         })
+}
+
+/// Every quantity of the quartic that `to` names (and the C_L/C_D form's
+/// C_D) determined by the input: else an error naming what the target
+/// needs and the input lacks (`--to ribner needs C_D, for its C_La …`).
+fn expressible(input: &DerivativeFile, to: Notation, values: &Values) -> Result<(), InputError> {
+    let names = to.names();
+    let needed = QUARTIC.iter().copied().chain(needed_rows(to));
+    let Some((i, theirs)) = needed
+        .filter(|&i| values[i].is_none())
+        .find_map(|i| names[i].map(|n| (i, n)))
+    else {
+        return Ok(());
+    };
+    let rows = lacking_rows(input, to, i);
+    let what: Vec<&str> = rows.iter().map(|&j| Notation::REPORT.name_of(j)).collect();
+    let what = match what.as_slice() {
+        [] => "a quantity the file does not give".to_string(),
+        ["c_d"] => "C_D".to_string(),
+        _ => what.join(" and "),
+    };
+    let give = if input.form == DIMENSIONAL {
+        ", which a dimensional set does not carry apart from its other derivatives: convert to report, garner or american instead".to_string()
+    } else {
+        format!(": give {}", lacking_names(input, &rows))
+    };
+    Err(InputError::file(
+        &input.path,
+        format!(
+            "--to {} needs {what}, for its `{theirs}` (the report's {}){give}",
+            to.name(),
+            Notation::REPORT.name_of(i)
+        ),
+    ))
+}
+
+/// The rows, unknown in the input, without which `to` cannot determine
+/// its row `i` (found by giving each a value in turn).
+fn lacking_rows(input: &DerivativeFile, to: Notation, i: usize) -> Vec<usize> {
+    (0..input.report.len())
+        .filter(|&j| input.report[j].is_none())
+        .filter(|&j| {
+            let mut probe = input.report;
+            probe[j] = Some(1.0);
+            to.from_report(&probe, &input.parameters)
+                .is_ok_and(|v| v[i].is_some())
+        })
+        .collect()
+}
+
+/// Where the input's notation takes each of `rows`: `c_d in [flight]`.
+fn lacking_names(input: &DerivativeFile, rows: &[usize]) -> String {
+    let theirs = Notation::named(input.form);
+    let names: Vec<String> = rows
+        .iter()
+        .map(|&j| match theirs.and_then(|n| n.names()[j]) {
+            Some(n) if FLIGHT.contains(&j) => format!("{n} in [flight]"),
+            Some(n) => format!("{n} in [derivatives]"),
+            None => format!("{} in [report]", Notation::REPORT.name_of(j)),
+        })
+        .collect();
+    names.join(" and ")
 }
 
 /// The `convert --json` object: the notations, the values in the target

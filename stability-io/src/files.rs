@@ -6,7 +6,7 @@
 use crate::Failure;
 use crate::diag::{InputError, IoError};
 use std::io::Read;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// The largest input file the program reads (a derivative file, a config,
 /// an AVL `.st` file or a CSV table): 16 MiB.
@@ -69,9 +69,38 @@ fn too_large(path: &Path, len: u64) -> Failure {
     ))
 }
 
+thread_local! {
+    /// The input files read on this thread while [`recording`] runs.
+    static READ: std::cell::RefCell<Option<Vec<PathBuf>>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs `f` and returns, with its result, every input file that
+/// [`read_input`] read for it on this thread, in order: a derivative file
+/// or config, and the files it names (CSV tables, an AVL `.st` file). A
+/// front end that writes files checks its outputs against them (an output
+/// must not overwrite an input).
+pub fn recording<T>(f: impl FnOnce() -> T) -> (T, Vec<PathBuf>) {
+    let outer = READ.with(|r| r.borrow_mut().replace(Vec::new()));
+    let value = f();
+    let read = READ
+        .with(|r| std::mem::replace(&mut *r.borrow_mut(), outer))
+        .unwrap_or_default();
+    READ.with(|r| {
+        if let Some(o) = r.borrow_mut().as_mut() {
+            o.extend(read.iter().cloned());
+        }
+    });
+    (value, read)
+}
+
 /// The text of the input file `path`: a regular file of at most
-/// [`MAX_INPUT_BYTES`], in UTF-8.
+/// [`MAX_INPUT_BYTES`], in UTF-8 (noted for [`recording`]).
 pub fn read_input(path: &Path) -> Result<String, Failure> {
+    READ.with(|r| {
+        if let Some(read) = r.borrow_mut().as_mut() {
+            read.push(path.to_path_buf());
+        }
+    });
     let io = |e: std::io::Error| Failure::Io(IoError::new("cannot read", path, reason(&e)));
     // look before opening: opening a FIFO blocks until a writer appears
     let meta = std::fs::metadata(path).map_err(io)?;
@@ -136,6 +165,23 @@ pub fn write_error(path: &Path, e: &std::io::Error) -> IoError {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_inputs_read_are_recorded_while_asked_for() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a.toml"), dir.path().join("b.csv"));
+        std::fs::write(&a, "x").unwrap();
+        std::fs::write(&b, "y").unwrap();
+        let _ = read_input(&a);
+        let ((inner, _), outer) = recording(|| {
+            let _ = read_input(&a);
+            recording(|| read_input(&b))
+        });
+        assert_eq!(inner.unwrap(), "y");
+        assert_eq!(outer, [a.clone(), b]);
+        // nothing is kept when no one asks
+        assert!(recording(|| ()).1.is_empty());
+    }
 
     #[test]
     fn a_directory_is_not_an_input() {

@@ -10,6 +10,7 @@
 //! | reading input files safely (regular files, bounded size, UTF-8) | [`files`] |
 //! | the `[control]` table (control derivatives) | [`control`] |
 //! | the state-space export: JSON, python-control and MATLAB scripts | [`state_space`] |
+//! | the guard every writer of results passes: no value that is not finite | [`finite`] |
 //!
 //! Every reader checks what it reads: each value finite and within its
 //! range, every name known (a misspelt one gets the nearest valid name),
@@ -23,6 +24,7 @@ pub mod csv;
 pub mod design_point;
 pub mod diag;
 pub mod files;
+pub mod finite;
 pub mod input;
 pub mod limits;
 pub mod response;

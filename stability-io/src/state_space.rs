@@ -149,7 +149,20 @@ pub fn matlab_snippet(e: &Export<'_>) -> String {
 
 /// The JSON of an export, with both scripts in it.
 pub fn to_json(e: &Export<'_>) -> String {
-    let j = ExportJson {
+    format!(
+        "{}\n",
+        serde_json::to_string_pretty(&view(e)).unwrap_or_default()
+    )
+}
+
+/// Whether every number the export writes is finite (the guard of
+/// [`crate::finite`]; the error names the field and `e.source`).
+pub fn guard(e: &Export<'_>) -> Result<(), InputError> {
+    crate::finite::guard(e.source, &view(e))
+}
+
+fn view<'a>(e: &'a Export<'a>) -> ExportJson<'a> {
+    ExportJson {
         source: e.source,
         generated_by: format!("delta-stability {}", crate::VERSION),
         states: STATES,
@@ -166,8 +179,7 @@ pub fn to_json(e: &Export<'_>) -> String {
             .collect(),
         python_control: python_snippet(e),
         matlab: matlab_snippet(e),
-    };
-    format!("{}\n", serde_json::to_string_pretty(&j).unwrap_or_default())
+    }
 }
 
 /// The three paths an export writes: `FILE.json`, `FILE.py`, `FILE.m`.

@@ -10,7 +10,7 @@
 use crate::config::physical::Physical;
 use crate::limits::{self, Limit};
 use stability_core::case::Case;
-use stability_core::display::Num;
+use stability_core::display::{Num, sig};
 use stability_core::grid;
 use stability_core::sweep::{
     Axes, ERROR_COLUMN, PointError, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Seconds, Sweep,
@@ -52,7 +52,18 @@ pub fn parse_values(text: &str) -> Result<Vec<f64>, String> {
             }
             let n = ((b - a) / step).floor() + 1.0;
             if n.is_nan() || n > MAX_RANGE_VALUES as f64 {
-                return Err("too many values: a range has at most 1e7".into());
+                // never the count's 301 digits, nor `inf`
+                let many = if n.is_finite() {
+                    format!("about {} values", sig(n, 3))
+                } else {
+                    "more values than can be counted".to_string()
+                };
+                return Err(format!(
+                    "too many values: {}:{}:{} gives {many}, and a range has at most 1e7; take a larger step",
+                    Num(a),
+                    Num(b),
+                    Num(step)
+                ));
             }
             Ok(grid::grid(a, b, step))
         }
@@ -159,6 +170,9 @@ impl Grid {
     /// The grid of `axes` about `base`, at its physical flight condition
     /// when it has one.
     pub fn new(base: Case, axes: Axes, physical: Option<&Physical>) -> Result<Grid, SweepError> {
+        // the library checks the grid's size before the values are written
+        let sweep = Sweep::new(base, axes)?;
+        let axes = sweep.axes();
         let mut num = zmij::Buffer::new();
         let mut text =
             |v: &[f64]| -> Vec<Box<str>> { v.iter().map(|&x| num.format(x).into()).collect() };
@@ -169,7 +183,6 @@ impl Grid {
             text(&axes.mu1),
             text(&axes.i_b),
         ];
-        let sweep = Sweep::new(base, axes)?;
         let sweep = match physical {
             Some(p) => sweep.with_flight(&p.condition)?,
             None => sweep,

@@ -54,11 +54,16 @@ impl Args {
 
 pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, options) = (args.config.as_str(), &args.engineering);
-    let cfg = overridden(path, &args.overrides())?;
+    let (cfg, read) = stability_io::files::recording(|| overridden(path, &args.overrides()));
+    let cfg = cfg?;
+    let outputs = crate::overwrite::state_space(options.state_space.as_deref())?;
+    crate::overwrite::refuse("CONFIG", path, &read, &outputs)?;
     let res = results(&cfg, options.class.0)?;
     for w in &res.result.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
+    let view = AnalyzeJson::new(&cfg, &res);
+    crate::output::finite(path, &view)?;
     if let Some(out) = &options.state_space {
         let tau = res.tau();
         let roots = res.result.analysis.roots;
@@ -74,14 +79,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         )?;
     }
     if args.json {
-        print(&format!(
-            "{}\n",
-            serde_json::to_string_pretty(&AnalyzeJson::new(&cfg, &res)).unwrap_or_default()
-        ))?;
+        crate::output::print_json(path, &view)
     } else {
-        print(&page(&cfg, &res))?;
+        print(&page(&cfg, &res))
     }
-    Ok(())
 }
 
 pub fn page(cfg: &config::Config, res: &Results) -> String {
@@ -98,9 +99,7 @@ pub fn page(cfg: &config::Config, res: &Results) -> String {
         &r.analysis,
         res.flight.map(|(_, p)| p.tau),
     ));
-    if let Some(f) = &res.engineering.short_period_frequency {
-        let _ = writeln!(s, "{}", crate::engineering::frequency_line(f));
-    }
+    s.push_str(&super::quartic::frequency_line(&res.engineering));
     let lift_slope = r.coefficients.lift_slope.value;
     let m = Margins::of(&r.analysis.quartic, &r.derivatives, lift_slope);
     let _ = writeln!(

@@ -47,8 +47,8 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let conversion = convert(&any, from.name(), target)?;
     crate::output::warn_all(conversion.warnings());
     if args.json {
-        crate::output::print_json(&conversion.json())
+        crate::output::print_json(file, &conversion.json())
     } else {
-        print(&conversion.toml())
+        print(&conversion.toml()?)
     }
 }

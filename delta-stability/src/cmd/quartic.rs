@@ -13,6 +13,7 @@ use crate::output::print;
 use crate::page::analysis_page;
 use stability_core::analysis::Analysis;
 use stability_core::engineering::Engineering;
+use stability_core::linear::Control;
 use stability_io::input::dimensional_notation::{self, DimensionalFile, is_dimensional};
 use stability_io::input::{self, DerivativeFile};
 use stability_io::views::{DimensionalJson, QuarticJson};
@@ -41,17 +42,39 @@ pub struct EngineeringArgs {
     pub class: ClassArg,
 }
 
-pub fn run(a: &Args) -> Result<(), Failure> {
-    let (file, o) = (a.file.as_str(), &a.engineering);
+/// A derivative file as `quartic` reads it: a dimensional set as it is,
+/// any other in the report's notation with its `[control]` table.
+enum Read {
+    Dimensional(Box<DimensionalFile>),
+    Report(Box<DerivativeFile>, Option<Control>),
+}
+
+fn read(file: &str) -> Result<Read, Failure> {
     let text = stability_io::files::read_input(Path::new(file))?;
     if is_dimensional(&text) {
-        return run_dimensional(&dimensional_notation::parse(file, &text)?, a);
+        let d = dimensional_notation::parse(file, &text)?;
+        return Ok(Read::Dimensional(Box::new(d)));
     }
     let input = input::parse(file, &text)?;
     let control = stability_io::control::read_control(file, &text)?;
+    Ok(Read::Report(Box::new(input), control))
+}
+
+pub fn run(a: &Args) -> Result<(), Failure> {
+    let (file, o) = (a.file.as_str(), &a.engineering);
+    let (read, files) = stability_io::files::recording(|| read(file));
+    let read = read?;
+    let outputs = crate::overwrite::state_space(o.state_space.as_deref())?;
+    crate::overwrite::refuse("FILE", file, &files, &outputs)?;
+    let (input, control) = match read {
+        Read::Dimensional(d) => return run_dimensional(&d, a),
+        Read::Report(input, control) => (input, control),
+    };
     crate::output::warn_all(&input.warnings);
     let (analysis, engineering) = input.evaluated(control.as_ref(), o.class.0)?;
     let tau = input.tau();
+    let view = QuarticJson::new(&input, &analysis, &engineering);
+    crate::output::finite(file, &view)?;
     if let Some(out) = &o.state_space {
         let roots = tau.map_or(analysis.roots, |t| analysis.roots.map(|z| z / t));
         crate::state_space::write(
@@ -66,7 +89,7 @@ pub fn run(a: &Args) -> Result<(), Failure> {
         )?;
     }
     if a.json {
-        crate::output::print_json(&QuarticJson::new(&input, &analysis, &engineering))
+        crate::output::print_json(file, &view)
     } else {
         print(&table(&input, &analysis, &engineering))
     }
@@ -81,12 +104,25 @@ pub fn table(input: &DerivativeFile, a: &Analysis, engineering: &Engineering) ->
         a,
         input.tau(),
     );
-    if let Some(f) = &engineering.short_period_frequency {
-        s.push_str(&crate::engineering::frequency_line(f));
-        s.push('\n');
-    }
+    s.push_str(&frequency_line(engineering));
     s.push_str(&crate::engineering::tables(engineering));
     s
+}
+
+/// The MIL-F-8785C short-period frequency requirement's line: the levels,
+/// or why it is not assessed (CAP undefined); empty when it does not
+/// apply (no oscillatory short period, or no times in seconds).
+pub fn frequency_line(e: &Engineering) -> String {
+    match (
+        &e.short_period_frequency,
+        &e.short_period_frequency_not_assessed,
+    ) {
+        (Some(f), _) => format!("{}\n", crate::engineering::frequency_line(f)),
+        (None, Some(why)) => {
+            format!("MIL-F-8785C short-period frequency (§3.2.2.1.1): not assessed: {why}\n")
+        }
+        (None, None) => String::new(),
+    }
 }
 
 /// `quartic` of a `notation = "dimensional"` set: the general model
@@ -96,6 +132,8 @@ pub fn table(input: &DerivativeFile, a: &Analysis, engineering: &Engineering) ->
 fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> {
     crate::output::warn_all(&input.warnings);
     let (a, engineering) = input.evaluated(args.engineering.class.0)?;
+    let view = DimensionalJson::new(input, &a, &engineering);
+    crate::output::finite(&input.path, &view)?;
     if let Some(out) = &args.engineering.state_space {
         crate::state_space::write(
             out,
@@ -109,17 +147,14 @@ fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> 
         )?;
     }
     if args.json {
-        return crate::output::print_json(&DimensionalJson::new(input, &a, &engineering));
+        return crate::output::print_json(&input.path, &view);
     }
     let title = format!(
         "Stability quartic of {} (notation \"dimensional\": the general longitudinal model, eqs D1–D2)",
         input.path
     );
     let mut page = crate::page::dimensional_page(&title, &a);
-    if let Some(f) = &engineering.short_period_frequency {
-        page.push_str(&crate::engineering::frequency_line(f));
-        page.push('\n');
-    }
+    page.push_str(&frequency_line(&engineering));
     page.push_str(&crate::engineering::tables(&engineering));
     print(&page)
 }

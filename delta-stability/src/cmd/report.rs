@@ -5,11 +5,14 @@
 //! The files are written into a temporary directory beside DIR, which
 //! replaces DIR only when complete: a killed run leaves the previous report
 //! whole (and its temporary directory, which a later run removes). DIR, if
-//! it exists, must be a report (or empty): nothing else is replaced.
+//! it exists, must be a report (or empty): everything in it a file the
+//! report's manifest lists, unchanged ([`manifest`]), checked when the run
+//! starts and again when DIR is replaced; nothing else is replaced.
 
 use crate::Failure;
-use crate::output::AtomicDir;
+use crate::output::{AtomicDir, Refused};
 use crate::report::conclusions::{self, Judged};
+use crate::report::manifest::{self, MANIFEST, Manifest};
 use crate::report::summary::{self, Findings};
 use crate::report::{SECTIONS, Study, html};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -17,17 +20,8 @@ use stability_io::diag::IoError;
 use stability_io::files::write_error;
 use std::path::Path;
 
-/// Whether `name` is a file or directory a report writes.
-fn is_report_entry(name: &str) -> bool {
-    let fig = name
-        .strip_prefix("fig")
-        .and_then(|r| r.strip_suffix(".svg").or_else(|| r.strip_suffix(".csv")))
-        .is_some_and(|n| n.len() == 2 && n.bytes().all(|b| b.is_ascii_digit()));
-    fig || matches!(name, "summary.json" | "index.html" | "docs")
-}
-
 /// DIR may be replaced: it does not exist, or it is a directory holding
-/// only what a report writes.
+/// only what a report wrote there, unchanged ([`manifest::foreign`]).
 fn check_target(out: &Path) -> Result<(), Failure> {
     let Ok(meta) = out.symlink_metadata() else {
         return Ok(());
@@ -41,17 +35,20 @@ fn check_target(out: &Path) -> Result<(), Failure> {
     if !meta.is_dir() {
         return Err(refuse("it is not a directory".into()));
     }
-    let entries = std::fs::read_dir(out).map_err(|e| write_error(out, &e))?;
-    for e in entries.flatten() {
-        let name = e.file_name().to_string_lossy().into_owned();
-        if !is_report_entry(&name) {
-            return Err(refuse(format!(
-                "it holds `{}`, which a report does not write, and a report replaces the whole directory; choose another --out, or move that away",
-                stability_io::diag::quote(&name)
-            )));
-        }
+    may_replace(out).map_err(refuse)
+}
+
+/// Whether the directory `dir` holds only what a report wrote: else what
+/// replacing it would lose, in words.
+fn may_replace(dir: &Path) -> Result<(), String> {
+    let foreign = manifest::foreign(dir).map_err(|e| stability_io::files::reason(&e))?;
+    if foreign.is_empty() {
+        return Ok(());
     }
-    Ok(())
+    Err(format!(
+        "a report replaces the whole directory, and it holds what a report did not write, which would be lost: {}; choose another --out, or move those away (nothing was removed)",
+        manifest::describe(&foreign)
+    ))
 }
 
 fn progress_bar(steps: usize) -> ProgressBar {
@@ -76,7 +73,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let out = Path::new(&args.out);
     check_target(out)?;
     let dir = AtomicDir::create(out).map_err(|e| write_error(out, &e))?;
+    let written = std::cell::RefCell::new(Manifest::default());
     let write = |name: &str, bytes: &[u8]| -> Result<(), Failure> {
+        written.borrow_mut().add(name, bytes);
         dir.write(name, bytes)
             .map_err(|e| Failure::Io(write_error(&dir.path().join(name), &e)))
     };
@@ -106,8 +105,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     bar.inc(1);
     bar.set_message("conclusions, swept over i_B and C_L·M²");
     let judged = conclusions::judge_all(&findings);
-    let json = serde_json::to_string_pretty(&summary::summary_json(&findings, &judged))
-        .unwrap_or_default();
+    let summary = summary::summary_json(&findings, &judged);
+    crate::output::finite("summary.json", &summary)?;
+    let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
     write("summary.json", json.as_bytes())?;
     write(
         "index.html",
@@ -116,7 +116,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     for (name, text) in html::DOCS {
         write(name, text.as_bytes())?;
     }
-    dir.commit().map_err(|e| write_error(out, &e))?;
+    let list = written.borrow().to_json();
+    dir.write(MANIFEST, list.as_bytes())
+        .map_err(|e| write_error(&dir.path().join(MANIFEST), &e))?;
+    dir.commit_if(may_replace).map_err(|e| match e {
+        Refused::Not(why) => Failure::Io(IoError::new("will not replace", out, why)),
+        Refused::Io(e) => Failure::Io(write_error(out, &e)),
+    })?;
     bar.finish_and_clear();
     let figures: usize = sections.iter().map(|(_, p)| p.len()).sum();
     let text = format!(

@@ -4,7 +4,8 @@
 
 use crate::Failure;
 use crate::args::ResponseInput;
-use crate::output::{atomic_write, print};
+use crate::output::{print, write_set};
+use crate::overwrite::Named;
 use crate::plot::{Figure, Series};
 use stability_core::display::sig;
 use stability_core::response::{Computed, Sample};
@@ -12,7 +13,7 @@ use stability_io::diag::InputError;
 use stability_io::files::write_error;
 use stability_io::input;
 use stability_io::response::{Disturbance, Spec, csv, respond};
-use std::path::Path;
+use std::path::PathBuf;
 
 /// The command's options (validated by clap: `until` positive and finite,
 /// `steps` from 1 to the library's `MAX_STEPS`, `m0` and `w0` finite).
@@ -68,11 +69,18 @@ impl Args {
 }
 
 pub fn run(o: &Args) -> Result<(), Failure> {
-    let file = input::read(&o.file)?;
+    let (file, read) = stability_io::files::recording(|| input::read(&o.file));
+    let file = file?;
+    let outputs: Vec<Named> = [("--csv", &o.csv), ("--svg", &o.svg)]
+        .into_iter()
+        .filter_map(|(what, p)| p.as_ref().map(|p| Named::new(what, p)))
+        .collect();
+    crate::overwrite::refuse("FILE", &o.file, &read, &outputs)?;
     crate::output::warn_all(&file.warnings);
     let r = respond(&file, &o.spec())?;
     let tau = file.tau();
     let csv = csv(&r, tau);
+    let mut files = Vec::new();
     for (path, text) in [(&o.csv, Some(&csv)), (&o.svg, None)] {
         let Some(path) = path else { continue };
         let bytes = match text {
@@ -81,9 +89,10 @@ pub fn run(o: &Args) -> Result<(), Failure> {
                 .to_svg()
                 .map_err(|m| InputError::file(&o.file, m))?,
         };
-        atomic_write(Path::new(path), bytes.as_bytes())
-            .map_err(|e| write_error(Path::new(path), &e))?;
+        files.push((PathBuf::from(path), bytes.into_bytes()));
     }
+    // the CSV and the plot as a set: both or neither
+    write_set(&files).map_err(|(path, e)| write_error(&path, &e))?;
     if o.csv.is_none() && o.svg.is_none() {
         print(&csv)?;
     } else if let Some(last) = r.samples.last() {

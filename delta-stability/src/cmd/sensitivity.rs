@@ -36,7 +36,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         return Err(input.error_at(input.most_extreme_input(), m).into());
     }
     if args.json {
-        crate::output::print_json(&out)
+        crate::output::print_json(&args.file, &out)
     } else {
         print(&page(&out))
     }

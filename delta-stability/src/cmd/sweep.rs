@@ -13,9 +13,10 @@ use crate::args::ModelArgs;
 use crate::output::AtomicFile;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
+use stability_core::display::sig;
 use stability_core::sweep::{Axes, SweepError};
 use stability_io::config::{Config, overridden};
-use stability_io::diag::InputError;
+use stability_io::diag::{InputError, IoError};
 use stability_io::files::write_error;
 use stability_io::sweep::{Format, Given, Grid, axes, parse_range};
 use std::io::Write as _;
@@ -69,10 +70,6 @@ pub fn grid(o: &Args, cfg: &Config) -> Result<Grid, String> {
         .map_err(|e| format!("--{}: {}", FLAGS[e.axis], e.message))?;
     Grid::new(cfg.case.clone(), axes, cfg.physical.as_ref()).map_err(|e| match e {
         SweepError::Planform { sweep_deg, error } => format!("--sweep {sweep_deg}: {error}"),
-        SweepError::TooLarge { points: Some(n) } => {
-            format!("the grid has {n} points; the limit is 2e8")
-        }
-        SweepError::TooLarge { points: None } => "the grid is too large".into(),
         e => e.to_string(),
     })
 }
@@ -102,9 +99,13 @@ fn progress_bar(total: usize) -> ProgressBar {
 }
 
 pub fn run(o: &Args) -> Result<(), Failure> {
-    let cfg = overridden(&o.config, &o.model.overrides())?;
+    let (cfg, read) =
+        stability_io::files::recording(|| overridden(&o.config, &o.model.overrides()));
+    let cfg = cfg?;
     let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
     let json = is_json(o).map_err(&bad)?;
+    let outputs = [crate::overwrite::Named::new("-o", &o.output)];
+    crate::overwrite::refuse("CONFIG", &o.config, &read, &outputs)?;
     let grid = grid(o, &cfg).map_err(&bad)?;
     let out = Path::new(&o.output);
     let write_err = |e: std::io::Error| Failure::Io(write_error(out, &e));
@@ -122,8 +123,10 @@ pub fn run(o: &Args) -> Result<(), Failure> {
     } else {
         format!("{}\n", grid.columns(o.derivatives).join(","))
     };
+    let first = chunk(&grid, format, 0);
+    fits(out, head.len(), &first, total)?;
     file.write_all(head.as_bytes()).map_err(write_err)?;
-    write_points(&mut file, &grid, format, &bar).map_err(write_err)?;
+    write_points(&mut file, &grid, format, &bar, first).map_err(write_err)?;
     if json {
         file.write_all(b"\n]\n").map_err(write_err)?;
     }
@@ -132,27 +135,64 @@ pub fn run(o: &Args) -> Result<(), Failure> {
     crate::output::print(&format!("wrote {total} design points to {}\n", o.output))
 }
 
-/// Evaluates the grid in chunks, writing chunk k while chunk k + 1 is
-/// computed.
+/// The points of a chunk.
+const CHUNK: usize = 1 << 16;
+
+/// The rows of the chunk from point `start`: blocks of points evaluated
+/// and formatted in parallel, each into its own buffer.
+fn chunk(grid: &Grid, format: Format, start: usize) -> Vec<Vec<u8>> {
+    const BLOCK: usize = 1 << 10;
+    let end = (start + CHUNK).min(grid.points());
+    (start..end)
+        .step_by(BLOCK)
+        .collect::<Vec<_>>()
+        .into_par_iter()
+        .map(|b| grid.rows(b..(b + BLOCK).min(end), format))
+        .collect()
+}
+
+/// Refuses a grid whose file would not fit where it is written: its size
+/// estimated from the first chunk's rows (bytes per row × rows), against
+/// the room the file system (and the file-size limit) leaves this process.
+fn fits(out: &Path, head: usize, first: &[Vec<u8>], total: usize) -> Result<(), Failure> {
+    let rows = total.min(CHUNK);
+    let bytes: usize = first.iter().map(Vec::len).sum();
+    let per_row = bytes as f64 / rows.max(1) as f64;
+    let estimate = head as f64 + per_row * total as f64 + 3.0;
+    let dir = match out.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let Some(room) = crate::output::room(dir) else {
+        return Ok(());
+    };
+    if estimate <= room.bytes as f64 {
+        return Ok(());
+    }
+    Err(Failure::Io(IoError::new(
+        "cannot write",
+        out,
+        format!(
+            "the grid's {total} rows need about {} ({} bytes a row, measured on the first {rows}), more than the {} {}; sweep a smaller grid, or write where there is room",
+            crate::output::bytes(estimate),
+            sig(per_row, 3),
+            crate::output::bytes(room.bytes as f64),
+            room.limited_by
+        ),
+    )))
+}
+
+/// Writes the grid's rows, chunk by chunk from `first` (the first chunk's),
+/// writing chunk k while chunk k + 1 is computed.
 fn write_points(
     file: &mut AtomicFile,
     grid: &Grid,
     format: Format,
     bar: &ProgressBar,
+    first: Vec<Vec<u8>>,
 ) -> std::io::Result<()> {
-    const CHUNK: usize = 1 << 16;
-    const BLOCK: usize = 1 << 10;
     let total = grid.points();
-    let compute = |start: usize| -> Vec<Vec<u8>> {
-        let end = (start + CHUNK).min(total);
-        (start..end)
-            .step_by(BLOCK)
-            .collect::<Vec<_>>()
-            .into_par_iter()
-            .map(|b| grid.rows(b..(b + BLOCK).min(end), format))
-            .collect()
-    };
-    let mut pending = compute(0);
+    let mut pending = first;
     let mut start = CHUNK;
     loop {
         let (written, next) = rayon::join(
@@ -162,7 +202,7 @@ fn write_points(
                 }
                 Ok(())
             },
-            || (start < total).then(|| compute(start)),
+            || (start < total).then(|| chunk(grid, format, start)),
         );
         written?;
         bar.set_position(start.min(total) as u64);

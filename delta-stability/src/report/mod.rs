@@ -17,6 +17,7 @@ pub mod conclusions;
 pub mod damping;
 pub mod html;
 pub mod lifting_surface;
+pub mod manifest;
 pub mod quartic;
 pub mod readme;
 pub mod regimes;

@@ -1,7 +1,8 @@
 //! The user's aerodynamic tables (`[model.tables]`): inline
 //! (`mach = [...]`, `value = [...]`) or a two-column CSV file (Mach,
-//! value). A CSV file's first line is a header when it is not two numbers;
-//! a file without a header is used whole.
+//! value). A CSV file's first line is a header when none of its cells is
+//! a number; a file without a header is used whole, and a cell of a row
+//! that is not a number is an error at its line and column.
 
 use super::raw::RawTable;
 use crate::Failure;
@@ -43,49 +44,78 @@ pub fn table_from(
     }
 }
 
-/// A line's two columns, or `None` when it has not two.
-fn columns(line: &str) -> Option<[&str; 2]> {
-    let cols: Vec<&str> = line.split(',').map(str::trim).collect();
-    <[&str; 2]>::try_from(cols).ok()
+/// A line's cells: each one's text (trimmed) and the byte offset in the
+/// line where that text begins.
+fn cells(line: &str) -> Vec<(&str, usize)> {
+    let mut out = Vec::new();
+    let mut start = 0;
+    for raw in line.split(',') {
+        let lead = raw.len() - raw.trim_start().len();
+        out.push((raw.trim(), start + lead));
+        start += raw.len() + 1;
+    }
+    out
 }
 
-fn both_numbers(cols: [&str; 2]) -> bool {
-    cols.iter().all(|c| c.parse::<f64>().is_ok())
+fn is_number(cell: &str) -> bool {
+    cell.parse::<f64>().is_ok()
 }
 
-/// A two-column CSV table (Mach, value), with a header line or without;
-/// errors name the file and line.
+/// A two-column CSV table (Mach, value). The first line that is not blank
+/// or a comment is a header when none of its cells is a number; any other
+/// line is a row, and each cell of it that is not a number is an error at
+/// its file, line and column (a row is never taken for a header).
 pub fn read_csv_table(path: &str, csv: &str) -> Result<Table, InputError> {
-    let mut mach = Vec::new();
-    let mut value = Vec::new();
+    const NAMES: [&str; 2] = ["Mach", "value"];
+    let mut columns: [Vec<f64>; 2] = Default::default();
     let mut lines_of_rows = Vec::new();
     let mut seen_first = false;
-    for (i, line) in csv.lines().enumerate() {
-        let line_no = i + 1;
+    let mut offset = 0;
+    for (i, line) in csv.split_inclusive('\n').enumerate() {
+        let (line_no, line_start) = (i + 1, offset);
+        offset += line.len();
+        let line = line.trim_end_matches(['\n', '\r']);
         let l = line.trim();
         if l.is_empty() || l.starts_with('#') {
             continue;
         }
-        let bad = |m: String| InputError::at_line(path, csv, line_no, m);
-        let cols = columns(l).ok_or_else(|| {
-            bad(format!(
-                "expected two columns (Mach, value), found {}",
-                l.split(',').count()
-            ))
-        })?;
-        let header = !seen_first && !both_numbers(cols);
+        let cells = cells(line);
+        if cells.len() != 2 {
+            return Err(InputError::at_line(
+                path,
+                csv,
+                line_no,
+                format!("expected two columns (Mach, value), found {}", cells.len()),
+            ));
+        }
+        let header = !seen_first && !cells.iter().any(|(c, _)| is_number(c));
         seen_first = true;
         if header {
             continue;
         }
-        let number = |c: &str| {
-            c.parse::<f64>()
-                .map_err(|_| bad(format!("`{}` is not a number", quote(c))))
-        };
-        mach.push(number(cols[0])?);
-        value.push(number(cols[1])?);
+        for (k, (cell, at)) in cells.into_iter().enumerate() {
+            let start = line_start + at;
+            let x = cell.parse::<f64>().map_err(|_| {
+                let what = if cell.is_empty() {
+                    "is empty".to_string()
+                } else {
+                    format!("`{}` is not a number", quote(cell))
+                };
+                InputError::at(
+                    path,
+                    csv,
+                    start..start + cell.len(),
+                    format!("column {} ({})", k + 1, NAMES[k]),
+                    format!(
+                        "{what}; every row is two numbers, Mach and value (only a first line with no number in it is a header)"
+                    ),
+                )
+            })?;
+            columns[k].push(x);
+        }
         lines_of_rows.push(line_no);
     }
+    let [mach, value] = columns;
     Table::new(mach, value).map_err(|e| {
         let line = match &e {
             AeroError::NotIncreasing { row, .. } | AeroError::NonFinite { row, .. } => {
@@ -113,7 +143,8 @@ mod tests {
     fn a_bad_row_is_located() {
         let e = read_csv_table("t.csv", "mach,cd0\n0.5,0.01\n1.2,x\n").unwrap_err();
         assert!(
-            e.to_string().starts_with("t.csv:3:1: `x` is not a number"),
+            e.to_string()
+                .starts_with("t.csv:3:5: column 2 (value): `x` is not a number"),
             "{e}"
         );
         let e = read_csv_table("t.csv", "mach,cd0,extra\n0.5,0.01\n").unwrap_err();
@@ -121,5 +152,23 @@ mod tests {
             e.to_string().starts_with("t.csv:1:1: expected two columns"),
             "{e}"
         );
+    }
+
+    #[test]
+    fn a_first_line_with_a_number_in_it_is_a_row_not_a_header() {
+        for (text, at) in [
+            (
+                "0.5,2.6x\n1.2,0.02\n",
+                "t.csv:1:5: column 2 (value): `2.6x`",
+            ),
+            ("O.5,2.6\n1.2,0.02\n", "t.csv:1:1: column 1 (Mach): `O.5`"),
+            (
+                "# c\r\n 0.5 , \r\n1.2,0.02\r\n",
+                "t.csv:2:8: column 2 (value): is empty",
+            ),
+        ] {
+            let e = read_csv_table("t.csv", text).unwrap_err();
+            assert!(e.to_string().starts_with(at), "{text:?}: {e}");
+        }
     }
 }

@@ -31,6 +31,7 @@ use super::DerivativeFile;
 use super::raw::{Ctx, Entries, Table, toml_error};
 use super::suggest::{did_you_mean, nearest};
 use crate::diag::{InputError, quote};
+use num_complex::Complex64;
 use serde::Deserialize;
 use stability_core::analysis::Analysis;
 use stability_core::dimensional::report::GAMMA0_NEGLIGIBLE;
@@ -675,18 +676,26 @@ impl DimensionalFile {
         eq: &stability_core::dimensional::ReportEquivalent,
     ) -> Result<String, InputError> {
         let exact = self.analysis()?;
-        let shift = Analysis::of(&eq.derivatives).ok().map(|a| {
+        // each root's move against the larger of the two roots' sizes: 0
+        // for a zero root that stays, at most 200 % (never inf or NaN)
+        let relative = |z: Complex64, w: Complex64| match z.norm().max(w.norm()) {
+            0.0 => 0.0,
+            size => (z - w).norm() / size,
+        };
+        let shift = Analysis::of(&eq.derivatives).ok().and_then(|a| {
             let worst = exact
                 .roots
                 .iter()
-                .map(|z| {
+                .map(|&z| {
                     a.roots
                         .iter()
-                        .map(|w| (z - w / eq.tau).norm() / z.norm())
+                        .map(|&w| relative(z, w / eq.tau))
                         .fold(f64::INFINITY, f64::min)
                 })
                 .fold(0.0, f64::max);
-            format!(" (the modes move by up to {:.2} % of |λ|)", 100.0 * worst)
+            worst
+                .is_finite()
+                .then(|| format!(" (the modes move by up to {:.2} % of |λ|)", 100.0 * worst))
         });
         let dropped = &eq.dropped;
         let mut left = Vec::new();

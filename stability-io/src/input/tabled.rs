@@ -38,6 +38,15 @@ const NEEDED: &[(&str, usize, &str)] = &[(
     "the C_L/C_D form needs the trim drag coefficient: X_u = −½ρVS(C_Du + 2C_D), Z_w = −½ρVS(C_Lα + C_D)",
 )];
 
+/// The rows notation `to` needs beyond the quartic's (the C_L/C_D form's
+/// C_D).
+pub fn needed_rows(to: Notation) -> impl Iterator<Item = usize> {
+    NEEDED
+        .iter()
+        .filter(move |(n, _, _)| *n == to.name())
+        .map(|&(_, row, _)| row)
+}
+
 /// The C_L/C_D form of American notation
 /// (`stability-core/specs/notation.toml`), which a file with
 /// `notation = "american"` may be written in.
