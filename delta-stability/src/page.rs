@@ -7,11 +7,12 @@
 //! axes and its report-notation equivalent. One set of helpers serves both.
 
 use stability_core::analysis::{Analysis, Characteristic, Timebase};
-use stability_core::criteria::{DampingStandard, FlyingQualities};
+use stability_core::criteria::{DampingStandard, FlyingQualities, Verdict};
 use stability_core::dimensional::analysis::InReportNotation;
 use stability_core::dimensional::{Axes, DimensionalAnalysis, DimensionalModel, Units};
 use stability_core::display::sig;
 use stability_core::modes::Mode;
+use stability_core::verdict::Overall;
 use std::fmt::Write;
 
 /// A value to 4 significant digits, or "—" where it does not exist.
@@ -56,6 +57,7 @@ pub fn analysis_page(title: &str, a: &Analysis, tau: Option<f64>) -> String {
     let _ = writeln!(s, "{title}");
     characteristic(&mut s, a, time);
     modes(&mut s, a, time);
+    overall(&mut s, a, time);
     classical(&mut s, a);
     approximation(&mut s, a);
     verdict(&mut s, a);
@@ -75,6 +77,7 @@ pub fn dimensional_page(title: &str, a: &DimensionalAnalysis) -> String {
         stability_axes(&mut s, &a.stability);
     }
     modes(&mut s, a, time);
+    overall(&mut s, a, time);
     s.push('\n');
     verdict(&mut s, a);
     levels(&mut s, &a.flying_qualities);
@@ -224,13 +227,21 @@ fn classical(s: &mut String, a: &Analysis) {
     );
 }
 
-/// The §8 verdict in words, with the cycles to half amplitude behind it
-/// (dimensionless: the same in τ or in seconds).
+/// The §8 standard in words, with the cycles to half amplitude behind it
+/// (dimensionless: the same in τ or in seconds). Met only where no mode
+/// grows: a growing mode other than the short period is named instead.
 pub fn verdict_text(c: &Characteristic) -> String {
-    use stability_core::criteria::Verdict;
     let sp = c.modes.short_period();
     let cycles = sp.and_then(|m| m.cycles_to_half);
+    let overall = stability_core::verdict::overall(c);
     match (c.verdict, sp, cycles) {
+        (Verdict::Meets, _, Some(n)) if overall == Verdict::Divergent => format!(
+            "NOT MET: the aircraft diverges (the verdict above), though the short period alone halves in {} cycles",
+            sig(n, 3)
+        ),
+        (Verdict::Meets, _, _) if overall != Verdict::Meets => {
+            "NOT MET: another mode grows or is neutral (the verdict above)".into()
+        }
         (Verdict::Meets, Some(_), Some(c)) => {
             format!("met: {} cycles to half amplitude", sig(c, 3))
         }
@@ -250,8 +261,23 @@ pub fn verdict_text(c: &Characteristic) -> String {
 fn verdict(s: &mut String, c: &Characteristic) {
     let _ = writeln!(
         s,
-        "Damping standard (§8: half amplitude within one cycle): {}",
+        "Damping standard (§8: the short period halves within one cycle, no mode grows): {}",
         verdict_text(c)
+    );
+}
+
+/// The overall verdict, every root judged, and why.
+fn overall(s: &mut String, c: &Characteristic, time: Timebase) {
+    let o = Overall::of(c, time);
+    let word = match o.overall {
+        Verdict::Meets => "meets the standard",
+        Verdict::Fails => "FAILS the standard",
+        Verdict::Divergent => "DIVERGENT",
+    };
+    let _ = writeln!(
+        s,
+        "\nVerdict (every root): {word} — {}",
+        o.reasons.join("; ")
     );
 }
 

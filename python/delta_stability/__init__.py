@@ -83,17 +83,23 @@ class SweepResult(dict):
     """The columns of a sweep, one numpy array each (a ``dict``), named and
     ordered as ``delta-stability sweep``'s CSV: the grid values ``mach``,
     ``sweep_deg``, ``cg``, ``mu1``, ``i_b``; ``stable`` (Routh, §4);
-    ``verdict`` (the §8 one-cycle standard: ``meets``, ``fails``,
-    ``divergent``, or ``""`` where the point has no result); the short
-    period's root ``sp_re``, ``sp_im`` (1/τ), ``sp_cycles_to_half`` (eq 8),
+    ``verdict`` (the overall verdict, every root judged: ``meets``,
+    ``fails``, ``divergent`` — never ``meets`` where any mode grows — or
+    ``""`` where the point has no result); the short period's root
+    ``sp_re``, ``sp_im`` (1/τ), ``sp_cycles_to_half`` (eq 8),
     ``sp_damping_ratio``, ``sp_omega_bar`` (ω̄ = s/μ₁, §9); the phugoid's
     ``ph_re``, ``ph_im``; ``m_thetadot`` and ``delta_m_thetadot`` (its margin
-    over eq 41's m_θ̇max); at a physical flight condition, the modes in
-    seconds (``v_m_s``, ``c_l``, ``tau_s``, ``sp_re_s``, ``sp_im_s``,
-    ``sp_natural_frequency_rad_s``, ``sp_period_s``, ``ph_re_s``,
-    ``ph_im_s``: V = M·a, C_L and τ at each Mach number, eq 24); with
-    ``derivatives=True`` the fifteen quartic inputs; and ``error`` (``""`` or
-    why the point has no result, e.g. outside a theory's validity). Numbers
+    over eq 41's m_θ̇max); ``ph_damping_ratio``, ``ph_period`` (τ); the
+    MIL-F-8785C levels ``sp_level_a``, ``sp_level_b``, ``sp_level_c``,
+    ``ph_level`` (1, 2, 3, or 4 for worse than Level 3); the four roots
+    ``root1_re`` … ``root4_im`` (1/τ); at a physical flight condition, the
+    modes in seconds (``v_m_s``, ``c_l``, ``tau_s``, ``sp_re_s``,
+    ``sp_im_s``, ``sp_natural_frequency_rad_s``, ``sp_period_s``,
+    ``ph_re_s``, ``ph_im_s``, ``ph_period_s``, ``root1_re_s`` …
+    ``root4_im_s``: V = M·a, C_L and τ at each Mach number, eq 24); with
+    ``derivatives=True`` the twelve derivatives and ``c_l``; and ``error``
+    (``""`` or why the point has no result, e.g. outside a theory's
+    validity). Numbers
     that are undefined (a short period that does not oscillate) are NaN.
 
     ``shape`` is the grid's shape (mach, sweep, cg, mu1, i_b):

@@ -118,6 +118,7 @@ class Quartic:
     short_period: Optional[Mode]
     phugoid: Optional[Mode]
     verdict: str
+    verdict_reasons: list[str]
     criteria: dict[str, Any]
     classical: Optional[dict[str, Any]]
     warnings: list[str]
@@ -143,6 +144,7 @@ class Analysis:
     short_period: Optional[Mode]
     phugoid: Optional[Mode]
     verdict: str
+    verdict_reasons: list[str]
     criteria: dict[str, Any]
     classical: Optional[dict[str, Any]]
     aerodynamics: dict[str, Any]

@@ -357,7 +357,8 @@ fn coefficients<'py>(
 const ANALYSIS_ATTRS: &[Attr] = &[
     ("stable", &["stable"]),
     ("tau_s", &["tau_s"]),
-    ("verdict", &["criteria", "verdict"]),
+    ("verdict", &["verdict", "overall"]),
+    ("verdict_reasons", &["verdict", "reasons"]),
     ("criteria", &["criteria"]),
     ("classical", &["classical_eq7"]),
 ];
@@ -369,6 +370,7 @@ const QUARTIC_ATTRS: &[Attr] = &[
     ANALYSIS_ATTRS[2],
     ANALYSIS_ATTRS[3],
     ANALYSIS_ATTRS[4],
+    ANALYSIS_ATTRS[5],
     ("warnings", &["warnings"]),
     ("notation", &["notation"]),
 ];
@@ -380,6 +382,7 @@ const DESIGN_POINT_ATTRS: &[Attr] = &[
     ANALYSIS_ATTRS[2],
     ANALYSIS_ATTRS[3],
     ANALYSIS_ATTRS[4],
+    ANALYSIS_ATTRS[5],
     ("flight", &["flight"]),
     ("mode_shapes", &["mode_shapes"]),
     ("damp", &["damp"]),
@@ -412,9 +415,11 @@ const OWN: [&str; 10] = [
 ///   (stable when A…E and R have one sign); `stable`;
 /// - `roots`: the four roots (1/τ), conjugates adjacent, fastest first;
 /// - `modes`, `short_period`, `phugoid`: eq (8)'s quantities;
-/// - `verdict` (`meets`, `fails` or `divergent`) and `criteria`: the §8
-///   one-cycle standard, eq (41)'s m_θ̇max, the short-period approximation
-///   of §8–9 and the MIL-F-8785C levels;
+/// - `verdict` (`meets`, `fails` or `divergent`: every root judged, never
+///   `meets` where a mode grows) and `verdict_reasons`; `criteria`: the §8
+///   one-cycle standard on the short period alone (`criteria["verdict"]`),
+///   eq (41)'s m_θ̇max, the short-period approximation of §8–9 and the
+///   MIL-F-8785C levels;
 /// - `classical`: the report's own eq (7) against the exact roots;
 /// - `warnings`, `derivatives`, `tau_s`, `notation`, and `to_dict()` (the
 ///   `--json`, whose keys the attributes read).

@@ -22,7 +22,9 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use stability_core::Derivatives;
 use stability_core::criteria::Verdict;
-use stability_core::sweep::{Points, SECONDS_COLUMNS, Sweep, SweepError, columns};
+use stability_core::sweep::{
+    Cell, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Sweep, SweepError, columns,
+};
 use stability_io::config::Config;
 use stability_io::diag;
 use stability_io::sweep::{Given, axes, parse_values};
@@ -117,20 +119,55 @@ pub fn sweep_of(a: &AxisArgs<'_, '_>, cfg: &Config) -> PyResult<Sweep> {
     }
 }
 
+/// A column of results, as numpy takes it.
+enum Column {
+    Bool(Vec<bool>),
+    /// An index into [`VERDICTS`], or 3 (no result).
+    Code(Vec<u8>),
+    /// NaN where the command line leaves the cell empty.
+    Float(Vec<f64>),
+}
+
+impl Column {
+    fn push(&mut self, cell: Cell) {
+        match (self, cell) {
+            (Column::Bool(v), Cell::Bool(b)) => v.push(b),
+            (Column::Code(v), Cell::Word(w)) => v.push(verdict_code(w)),
+            (Column::Float(v), Cell::Number(x)) => v.push(x.unwrap_or(f64::NAN)),
+            _ => unreachable!("a column's cells are of one kind"),
+        }
+    }
+
+    fn of(cell: Cell, n: usize) -> Column {
+        match cell {
+            Cell::Bool(_) => Column::Bool(Vec::with_capacity(n)),
+            Cell::Word(_) => Column::Code(Vec::with_capacity(n)),
+            Cell::Number(_) => Column::Float(Vec::with_capacity(n)),
+        }
+    }
+
+    fn into_py<'py>(self, py: Python<'py>) -> Bound<'py, PyAny> {
+        match self {
+            Column::Bool(v) => v.into_pyarray(py).into_any(),
+            Column::Code(v) => v.into_pyarray(py).into_any(),
+            Column::Float(v) => v.into_pyarray(py).into_any(),
+        }
+    }
+}
+
 /// A sweep's results as columns, ready for numpy.
 pub struct Columns {
     points: Points,
     /// The sweep axis's values as given (the library's `sweep_deg` is the
     /// planform's, converted back from radians).
     sweep_deg: Vec<f64>,
-    stable: Vec<bool>,
-    /// An index into [`VERDICTS`], or 3 (no result).
-    verdict: Vec<u8>,
+    /// [`RESULT_COLUMNS`], then at a physical flight condition
+    /// [`SECONDS_COLUMNS`], by name.
+    results: Vec<(&'static str, Column)>,
     /// An index into `messages`, or −1.
     error: Vec<i32>,
     messages: Vec<String>,
-    /// At a physical flight condition, [`SECONDS_COLUMNS`].
-    seconds: Option<Vec<Vec<f64>>>,
+    physical: bool,
 }
 
 /// Evaluates every point (in parallel: [`Sweep::run`]) into columns.
@@ -139,8 +176,6 @@ pub fn evaluate(sweep: &Sweep, derivatives: bool) -> Columns {
     let n = points.len();
     let axis = &sweep.axes().sweep_deg;
     let sweep_deg = sweep.indices(0..n).map(|idx| axis[idx[1]]).collect();
-    let stable = points.stable.iter().map(|s| *s == Some(true)).collect();
-    let verdict = points.verdict.iter().map(|v| verdict_code(*v)).collect();
     let mut error = vec![-1; n];
     let mut messages: Vec<String> = Vec::new();
     let mut seen: HashMap<String, i32> = HashMap::new();
@@ -151,58 +186,55 @@ pub fn evaluate(sweep: &Sweep, derivatives: bool) -> Columns {
             messages.len() as i32 - 1
         });
     }
-    let seconds = sweep.flights().map(|_| seconds(sweep, &points, &error));
+    let physical = sweep.flights().is_some();
+    let results = results(sweep, &points, &error);
     Columns {
         points,
         sweep_deg,
-        stable,
-        verdict,
+        results,
         error,
         messages,
-        seconds,
+        physical,
     }
 }
 
-/// The index of `v` in [`VERDICTS`]; 3 for no result.
-fn verdict_code(v: Option<Verdict>) -> u8 {
-    let at = v.and_then(|v| VERDICTS.iter().position(|x| *x == v));
+/// Every point's [`Points::results`] (and at a physical flight condition
+/// its [`Points::seconds`]), as the command line writes them, by column.
+fn results(sweep: &Sweep, points: &Points, error: &[i32]) -> Vec<(&'static str, Column)> {
+    let n = points.len();
+    let mut columns: Vec<(&'static str, Column)> = Vec::new();
+    for (k, e) in error.iter().enumerate() {
+        let point = (*e < 0).then(|| sweep.flight_point(k)).flatten();
+        let cells = points.results(k, point.map(|p| p.tau));
+        let seconds = sweep
+            .flights()
+            .map(|_| points.seconds(k, point).map(Cell::Number));
+        let names = RESULT_COLUMNS.iter().chain(SECONDS_COLUMNS.iter());
+        let row = cells.into_iter().chain(seconds.into_iter().flatten());
+        for (j, (name, cell)) in names.zip(row).enumerate() {
+            if k == 0 {
+                columns.push((name, Column::of(cell, n)));
+            }
+            columns[j].1.push(cell);
+        }
+    }
+    columns
+}
+
+/// The index of the verdict `word` in [`VERDICTS`]; 3 for none.
+fn verdict_code(word: &str) -> u8 {
+    let at = VERDICTS.iter().position(|v| v.as_str() == word);
     at.map_or(3, |k| k as u8)
 }
 
-/// The modes in seconds of each point, as the command line writes them
-/// (NaN where it leaves the cell empty).
-fn seconds(sweep: &Sweep, points: &Points, error: &[i32]) -> Vec<Vec<f64>> {
-    let n = points.len();
-    let mut out: Vec<Vec<f64>> = (0..SECONDS_COLUMNS.len())
-        .map(|_| Vec::with_capacity(n))
-        .collect();
-    for (k, e) in error.iter().enumerate() {
-        let point = (*e < 0).then(|| sweep.flight_point(k)).flatten();
-        let row = points.seconds(k, point);
-        for (c, v) in out.iter_mut().zip(row) {
-            c.push(v.unwrap_or(f64::NAN));
-        }
-    }
-    out
-}
-
-/// The float column `name` of the library's points (moved out), if it is
-/// one of them.
-fn result_column(p: &mut Points, name: &str) -> Option<Vec<f64>> {
+/// The grid's float column `name` of the library's points (moved out), if
+/// it is one of them.
+fn grid_column(p: &mut Points, name: &str) -> Option<Vec<f64>> {
     let c = match name {
         "mach" => &mut p.mach,
         "cg" => &mut p.cg,
         "mu1" => &mut p.mu1,
         "i_b" => &mut p.i_b,
-        "sp_re" => &mut p.sp_re,
-        "sp_im" => &mut p.sp_im,
-        "sp_cycles_to_half" => &mut p.sp_cycles_to_half,
-        "sp_damping_ratio" => &mut p.sp_damping_ratio,
-        "sp_omega_bar" => &mut p.sp_omega_bar,
-        "ph_re" => &mut p.ph_re,
-        "ph_im" => &mut p.ph_im,
-        "m_thetadot" => &mut p.m_thetadot,
-        "delta_m_thetadot" => &mut p.delta_m_thetadot,
         _ => return None,
     };
     Some(std::mem::take(c))
@@ -224,36 +256,31 @@ fn derivative_columns(p: &Points) -> Vec<Vec<f64>> {
 }
 
 /// The columns as a dict: each of `columns` (the CSV's names, in its
-/// order; a name it repeats — μ₁, i_B and C_L are also quartic inputs —
-/// once, its first column) as an array, `verdict` and `error` as codes
-/// into `verdicts` and `messages`; and the grid's `shape`.
+/// order) as an array, `verdict`, `standard` and `error` as codes into
+/// `verdicts` and `messages`; and the grid's `shape`.
 fn to_dict<'py>(py: Python<'py>, c: Columns, shape: Vec<usize>) -> PyResult<Bound<'py, PyDict>> {
     let Columns {
         mut points,
         sweep_deg,
-        stable,
-        verdict,
+        results,
         error,
         messages,
-        seconds,
+        physical,
     } = c;
-    let names = columns(points.derivatives.is_some(), seconds.is_some());
+    let names = columns(points.derivatives.is_some(), physical);
     let mut arrays: HashMap<&str, Bound<'py, PyAny>> = HashMap::new();
     let mut put = |name: &'static str, a: Bound<'py, PyAny>| {
         arrays.entry(name).or_insert(a);
     };
     put("sweep_deg", sweep_deg.into_pyarray(py).into_any());
-    put("stable", stable.into_pyarray(py).into_any());
-    put("verdict", verdict.into_pyarray(py).into_any());
     put("error", error.into_pyarray(py).into_any());
     for name in &names {
-        if let Some(v) = result_column(&mut points, name) {
+        if let Some(v) = grid_column(&mut points, name) {
             put(name, v.into_pyarray(py).into_any());
         }
     }
-    let seconds = seconds.unwrap_or_default();
-    for (name, v) in SECONDS_COLUMNS.into_iter().zip(seconds) {
-        put(name, v.into_pyarray(py).into_any());
+    for (name, column) in results {
+        put(name, column.into_py(py));
     }
     let inputs = Derivatives::QUARTIC_INPUTS;
     for (name, v) in inputs.into_iter().zip(derivative_columns(&points)) {

@@ -340,6 +340,16 @@ pub enum Level {
 }
 
 impl Level {
+    /// 1, 2, 3, or 4 for worse than Level 3 (a sweep's column).
+    pub fn number(self) -> u8 {
+        match self {
+            Level::One => 1,
+            Level::Two => 2,
+            Level::Three => 3,
+            Level::WorseThanThree => 4,
+        }
+    }
+
     pub fn as_str(self) -> &'static str {
         match self {
             Level::One => "Level 1",

@@ -20,6 +20,7 @@ use crate::criteria::{
     DampingStandard, FlyingQualities, Margins, ShortPeriodApproximation, Verdict,
 };
 use crate::modes::{Mode, ModeName, ModeTimes, Origin};
+use crate::verdict::Overall;
 use crate::{Derivatives, Quartic};
 use num_complex::Complex64;
 use serde::{Serialize, Serializer};
@@ -87,7 +88,7 @@ impl<'a> AnalysisJson<'a> {
 
 /// A characteristic's keys, whatever the notation: the coefficients,
 /// Routh's discriminant and verdict, the roots and modes in their unit and
-/// in the other where τ converts them, and τ.
+/// in the other where τ converts them, τ, and the overall verdict.
 #[derive(Serialize)]
 pub(crate) struct CharacteristicJson<'a> {
     coefficients: &'a Quartic,
@@ -96,6 +97,9 @@ pub(crate) struct CharacteristicJson<'a> {
     roots: [RootJson; 4],
     modes: Vec<TimedMode>,
     tau_s: Option<f64>,
+    /// Every root judged ([`Overall`]): never "meets" with a mode that
+    /// grows.
+    verdict: Overall,
 }
 
 impl<'a> CharacteristicJson<'a> {
@@ -107,6 +111,7 @@ impl<'a> CharacteristicJson<'a> {
             roots: c.roots.map(|z| RootJson::new(z, time)),
             modes: c.modes.iter().map(|m| m.in_timebase(time)).collect(),
             tau_s: time.tau(),
+            verdict: Overall::of(c, time),
         }
     }
 }
@@ -220,9 +225,12 @@ pub(crate) struct CriteriaJson<'a> {
 impl<'a> CriteriaJson<'a> {
     /// The criteria of `c` in `time`, without the report's quantities.
     pub(crate) fn new(c: &Characteristic, time: Timebase) -> Self {
+        // the standard is met only where no mode grows: the overall
+        // verdict, not the short period's alone
+        let verdict = crate::verdict::overall(c);
         CriteriaJson {
-            one_cycle_standard_met: c.verdict.is_met(),
-            verdict: c.verdict,
+            one_cycle_standard_met: verdict.is_met(),
+            verdict,
             short_period_approximation: None,
             damping_standard: None,
             mil_f_8785c: c.flying_qualities(time),

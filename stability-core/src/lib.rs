@@ -16,6 +16,7 @@
 //! | §3–4, eqs (4)–(6) the stability quartic; its roots | [`quartic`], [`roots`] |
 //! | §4, eqs (7)–(8) the modes; the report's own method | [`modes`], [`classical`] |
 //! | §4 Routh, §8 the damping standard, §9 margins | [`criteria`] |
+//! | the overall verdict: every root judged, never "meets" with a growing mode | [`verdict`] |
 //! | a derivative set's analysis; a design point; a grid of them; the study | [`analysis`], [`case`], [`sweep`], [`study`] |
 //! | §10 which derivative drives the damping | [`sensitivity`] |
 //! | §11 responses | [`response`] |
@@ -69,6 +70,7 @@ pub mod supersonic;
 pub mod sweep;
 pub mod theory;
 pub mod units;
+pub mod verdict;
 pub mod warnings;
 
 pub use derivatives::Derivatives;

@@ -45,6 +45,7 @@ use crate::criteria::Verdict;
 use crate::flight::{FlightCondition, FlightError, FlightPoint, PhysicalFlight};
 use crate::geometry::{GeometryError, Planform, Size};
 use crate::lifting_surface::Harmonic;
+use num_complex::Complex64;
 use rayon::prelude::*;
 use std::ops::Range;
 
@@ -441,7 +442,8 @@ pub struct Points {
     pub i_b: Vec<f64>,
     /// Routh's test (§4).
     pub stable: Vec<Option<bool>>,
-    /// The one-cycle standard (§8).
+    /// The overall verdict, every root judged ([`crate::verdict`]): never
+    /// `Meets` with a mode that grows.
     pub verdict: Vec<Option<Verdict>>,
     /// The short period's root (units of 1/τ), cycles to half amplitude
     /// (eq 8), damping ratio and frequency parameter ω̄ = s/μ₁.
@@ -450,9 +452,13 @@ pub struct Points {
     pub sp_cycles_to_half: Vec<f64>,
     pub sp_damping_ratio: Vec<f64>,
     pub sp_omega_bar: Vec<f64>,
-    /// The phugoid's root.
+    /// The phugoid's root, damping ratio and period (τ).
     pub ph_re: Vec<f64>,
     pub ph_im: Vec<f64>,
+    pub ph_damping_ratio: Vec<f64>,
+    pub ph_period: Vec<f64>,
+    /// The four roots (1/τ), conjugates adjacent, fastest first.
+    pub roots: Vec<[Complex64; 4]>,
     /// m_θ̇ and its margin Δm_θ̇ over eq (41)'s requirement.
     pub m_thetadot: Vec<f64>,
     pub delta_m_thetadot: Vec<f64>,
@@ -482,6 +488,9 @@ impl Points {
             sp_omega_bar: v(),
             ph_re: v(),
             ph_im: v(),
+            ph_damping_ratio: v(),
+            ph_period: v(),
+            roots: Vec::with_capacity(n),
             m_thetadot: v(),
             delta_m_thetadot: v(),
             derivatives: derivatives.then(|| Vec::with_capacity(n)),
@@ -523,7 +532,7 @@ impl Points {
         let ph = a.modes.phugoid();
         let or_nan = |v: Option<f64>| v.unwrap_or(f64::NAN);
         self.stable.push(Some(a.routh.stable));
-        self.verdict.push(Some(a.verdict));
+        self.verdict.push(Some(crate::verdict::overall(a)));
         self.sp_re.push(or_nan(sp.map(|m| m.re)));
         self.sp_im.push(or_nan(sp.map(|m| m.im)));
         self.sp_cycles_to_half
@@ -534,6 +543,10 @@ impl Points {
             .push(or_nan(sp.and_then(|m| m.frequency_parameter)));
         self.ph_re.push(or_nan(ph.map(|m| m.re)));
         self.ph_im.push(or_nan(ph.map(|m| m.im)));
+        self.ph_damping_ratio
+            .push(or_nan(ph.and_then(|m| m.damping_ratio)));
+        self.ph_period.push(or_nan(ph.and_then(|m| m.period)));
+        self.roots.push(a.roots);
         self.m_thetadot.push(a.damping_standard.m_thetadot);
         self.delta_m_thetadot
             .push(or_nan(a.damping_standard.margin));
@@ -545,6 +558,7 @@ impl Points {
     fn push_nothing(&mut self) {
         self.stable.push(None);
         self.verdict.push(None);
+        self.roots.push([Complex64::new(f64::NAN, f64::NAN); 4]);
         for c in [
             &mut self.sp_re,
             &mut self.sp_im,
@@ -553,6 +567,8 @@ impl Points {
             &mut self.sp_omega_bar,
             &mut self.ph_re,
             &mut self.ph_im,
+            &mut self.ph_damping_ratio,
+            &mut self.ph_period,
             &mut self.m_thetadot,
             &mut self.delta_m_thetadot,
         ] {
@@ -586,6 +602,9 @@ impl Points {
             sp_omega_bar,
             ph_re,
             ph_im,
+            ph_damping_ratio,
+            ph_period,
+            roots,
             m_thetadot,
             delta_m_thetadot
         );
@@ -614,10 +633,14 @@ pub fn columns(derivatives: bool, physical: bool) -> Vec<&'static str> {
     c
 }
 
-/// A point's results, after the grid's values: Routh's test, the §8
-/// verdict, the short period's root, cycles to half amplitude, damping
-/// ratio and ω̄, the phugoid's root, m_θ̇ and Δm_θ̇ (eq 41).
-pub const RESULT_COLUMNS: [&str; 11] = [
+/// A point's results, after the grid's values ([`Points::results`]):
+/// Routh's test; the overall verdict (every root judged:
+/// [`crate::verdict`]); the short period's root, cycles to half amplitude,
+/// damping ratio and ω̄; the phugoid's root; m_θ̇ and Δm_θ̇ (eq 41); then
+/// the phugoid's damping ratio and period (τ), the MIL-F-8785C levels (1, 2, 3, or 4 for worse than
+/// Level 3: the short period's in Categories A, B, C, the phugoid's), and
+/// the four roots (1/τ).
+pub const RESULT_COLUMNS: [&str; 25] = [
     "stable",
     "verdict",
     "sp_re",
@@ -629,14 +652,91 @@ pub const RESULT_COLUMNS: [&str; 11] = [
     "ph_im",
     "m_thetadot",
     "delta_m_thetadot",
+    "ph_damping_ratio",
+    "ph_period",
+    "sp_level_a",
+    "sp_level_b",
+    "sp_level_c",
+    "ph_level",
+    "root1_re",
+    "root1_im",
+    "root2_re",
+    "root2_im",
+    "root3_re",
+    "root3_im",
+    "root4_re",
+    "root4_im",
 ];
+
+/// One cell of a point's results.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Cell {
+    Bool(bool),
+    /// A verdict's word (`meets`, `fails`, `divergent`), empty for none.
+    Word(&'static str),
+    /// A number, `None` where undefined.
+    Number(Option<f64>),
+}
+
+impl Points {
+    /// Point `k`'s [`RESULT_COLUMNS`], with τ (s) where the flight
+    /// condition is physical (the phugoid's MIL-F-8785C level when it
+    /// diverges needs its time to double in seconds).
+    pub fn results(&self, k: usize, tau: Option<f64>) -> [Cell; RESULT_COLUMNS.len()] {
+        use crate::criteria::{Category, phugoid_level, short_period_level};
+        let n = |v: f64| Cell::Number(v.is_finite().then_some(v));
+        let word = |v: Option<Verdict>| Cell::Word(v.map_or("", Verdict::as_str));
+        let level = |l: crate::criteria::Level| Cell::Number(Some(f64::from(l.number())));
+        let sp_zeta = self.sp_damping_ratio[k];
+        let sp_level = |c| match sp_zeta.is_finite() {
+            true => level(short_period_level(sp_zeta, c)),
+            false => Cell::Number(None),
+        };
+        let ph_zeta = self.ph_damping_ratio[k];
+        let t2 = tau.map(|t| std::f64::consts::LN_2 / self.ph_re[k] * t);
+        let ph_level = match (ph_zeta.is_finite(), ph_zeta >= 0.0 || t2.is_some()) {
+            (true, true) => level(phugoid_level(ph_zeta, t2)),
+            _ => Cell::Number(None),
+        };
+        let r = self.roots[k];
+        [
+            Cell::Bool(self.stable[k] == Some(true)),
+            word(self.verdict[k]),
+            n(self.sp_re[k]),
+            n(self.sp_im[k]),
+            n(self.sp_cycles_to_half[k]),
+            n(sp_zeta),
+            n(self.sp_omega_bar[k]),
+            n(self.ph_re[k]),
+            n(self.ph_im[k]),
+            n(self.m_thetadot[k]),
+            n(self.delta_m_thetadot[k]),
+            n(ph_zeta),
+            n(self.ph_period[k]),
+            sp_level(Category::A),
+            sp_level(Category::B),
+            sp_level(Category::C),
+            ph_level,
+            n(r[0].re),
+            n(r[0].im),
+            n(r[1].re),
+            n(r[1].im),
+            n(r[2].re),
+            n(r[2].im),
+            n(r[3].re),
+            n(r[3].im),
+        ]
+    }
+}
 
 /// The last column: why the point has no result (empty where it has one).
 pub const ERROR_COLUMN: &str = "error";
 
 /// The columns a physical flight condition adds after the results
-/// ([`Points::seconds`]).
-pub const SECONDS_COLUMNS: [&str; 9] = [
+/// ([`Points::seconds`]): V, C_L and τ, the short period's root (1/s),
+/// ωₙ (rad/s) and period (s), the phugoid's root (1/s) and period (s), and
+/// the four roots (1/s).
+pub const SECONDS_COLUMNS: [&str; 18] = [
     "v_m_s",
     "c_l",
     "tau_s",
@@ -646,6 +746,15 @@ pub const SECONDS_COLUMNS: [&str; 9] = [
     "sp_period_s",
     "ph_re_s",
     "ph_im_s",
+    "ph_period_s",
+    "root1_re_s",
+    "root1_im_s",
+    "root2_re_s",
+    "root2_im_s",
+    "root3_re_s",
+    "root3_im_s",
+    "root4_re_s",
+    "root4_im_s",
 ];
 
 /// The quartic inputs a row carries when the derivatives are asked for:
@@ -662,7 +771,7 @@ pub type Seconds = [Option<f64>; SECONDS_COLUMNS.len()];
 
 impl Points {
     /// Point `k`'s [`SECONDS_COLUMNS`] at its flight point `p` (all `None`
-    /// without one): V, C_L, τ, and the modes in 1/s and s.
+    /// without one).
     pub fn seconds(&self, k: usize, p: Option<FlightPoint>) -> Seconds {
         let Some(p) = p else {
             return [None; SECONDS_COLUMNS.len()];
@@ -670,6 +779,7 @@ impl Points {
         let t = p.tau;
         let some = |v: f64| v.is_finite().then_some(v);
         let (sp_re, sp_im) = (self.sp_re[k], self.sp_im[k]);
+        let r = self.roots[k];
         [
             Some(p.speed),
             Some(p.c_l),
@@ -680,6 +790,15 @@ impl Points {
             some(2.0 * std::f64::consts::PI / sp_im * t),
             some(self.ph_re[k] / t),
             some(self.ph_im[k] / t),
+            some(self.ph_period[k] * t),
+            some(r[0].re / t),
+            some(r[0].im / t),
+            some(r[1].re / t),
+            some(r[1].im / t),
+            some(r[2].re / t),
+            some(r[2].im / t),
+            some(r[3].re / t),
+            some(r[3].im / t),
         ]
     }
 }

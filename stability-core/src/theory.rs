@@ -3,7 +3,7 @@
 //! line, the report's equations, what it is, where it is valid and what it
 //! supplies) is read by the command line's `--help`, the Python package's
 //! `theories(details=True)`, the error messages and the docs' table. A new
-//! theory is a variant here with its row in [`THEORIES`], and its
+//! theory is a variant here with its row in the registry's table, and its
 //! derivatives in `damping` (the match there fails to compile until it has
 //! them). Its own module so that `damping` and `warnings`, which both name
 //! theories, need not import each other.

@@ -13,7 +13,7 @@ use stability_core::case::Case;
 use stability_core::display::{Num, sig};
 use stability_core::grid;
 use stability_core::sweep::{
-    Axes, ERROR_COLUMN, PointError, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Seconds, Sweep,
+    Axes, Cell, ERROR_COLUMN, PointError, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Seconds, Sweep,
     SweepError, columns, derivative_columns,
 };
 
@@ -378,8 +378,8 @@ fn write_point(
     }
 }
 
-/// Point `k`'s results: Routh, the verdict, the modes, eq (41), the modes
-/// in seconds and the derivatives when asked for.
+/// Point `k`'s results ([`Points::results`]), the modes in seconds and the
+/// derivatives when asked for.
 fn results(
     row: &mut Row<'_>,
     p: &Points,
@@ -387,18 +387,14 @@ fn results(
     with_derivatives: bool,
     seconds: Option<Seconds>,
 ) {
-    let some = |v: f64| Some(v);
-    row.boolean("stable", p.stable[k] == Some(true));
-    row.word("verdict", p.verdict[k].map_or("", |v| v.as_str()));
-    row.number("sp_re", some(p.sp_re[k]));
-    row.number("sp_im", some(p.sp_im[k]));
-    row.number("sp_cycles_to_half", some(p.sp_cycles_to_half[k]));
-    row.number("sp_damping_ratio", some(p.sp_damping_ratio[k]));
-    row.number("sp_omega_bar", some(p.sp_omega_bar[k]));
-    row.number("ph_re", some(p.ph_re[k]));
-    row.number("ph_im", some(p.ph_im[k]));
-    row.number("m_thetadot", some(p.m_thetadot[k]));
-    row.number("delta_m_thetadot", some(p.delta_m_thetadot[k]));
+    let tau = seconds.and_then(|s| s[2]);
+    for (name, cell) in RESULT_COLUMNS.iter().zip(p.results(k, tau)) {
+        match cell {
+            Cell::Bool(b) => row.boolean(name, b),
+            Cell::Word(w) => row.word(name, w),
+            Cell::Number(v) => row.number(name, v),
+        }
+    }
     if let Some(values) = seconds {
         for (name, v) in SECONDS_COLUMNS.iter().zip(values) {
             row.number(name, v);

@@ -7,7 +7,7 @@
 //! 1946): with r = √(x²cot²Λ − y²), the upper-surface potentials of a unit
 //! downwash and of the downwash w = x are (root chord 1, V = 1, Φz = w)
 //!
-//! Φ₀[1] = −r/E,  Φ₀[x] = −G x r,
+//! Φ₀\[1\] = −r/E,  Φ₀\[x\] = −G x r,
 //!
 //! E, G Fig 18's functions of k² = 1 − β²cot²Λ ([`Fig18`]). They give eq (36)
 //! exactly (`docs/damping-theories.md`), and at the sonic edge (k = 0,
@@ -17,7 +17,7 @@
 //! by the source solution of density Φ). To first order in frequency the
 //! unsteady problem is the steady one with the downwash w(1 + iκξ) and
 //! Φ = (1 − iκx)Ψ (κ = ωM²/(Vβ²)), so the kernel term of [`PotentialIntegrals`]
-//! is Φ₁ = Φ₀[x] − xΦ₀[1], exactly as on a supersonic edge.
+//! is Φ₁ = Φ₀\[x\] − xΦ₀\[1\], exactly as on a supersonic edge.
 //!
 //! **The tips.** Cropping changes the flow only in the aft Mach cone of the
 //! cut-off part, i.e. behind the Mach line from each tip's leading corner;
@@ -225,7 +225,7 @@ impl Setup {
     }
 }
 
-/// The upper-surface potentials [Φ₀[1], Φ₀[x]] of the cropped delta with
+/// The upper-surface potentials \[Φ₀\[1\], Φ₀\[x\]\] of the cropped delta with
 /// subsonic leading edges at the point (x, y) of the wing (c₀ = 1; zero
 /// off it, ahead of the trailing edge): the true delta's, −r/E and −G x r,
 /// plus each tip's correction where the point lies behind its corner's
@@ -259,7 +259,7 @@ pub fn integrals(wing: &Wing, mach: f64) -> Result<PotentialIntegrals, Supersoni
     let [te, ar, arx] = w.delta_part();
     let [te_r, te_xr] = w.trailing_edge_correction();
     let [ar_r, ar_xr, ar_x_r] = w.area_correction();
-    // Φ₀[1] = −r/E, Φ₀[x] = −G x r; both tips alike
+    // Φ₀\[1\] = −r/E, Φ₀\[x\] = −G x r; both tips alike
     let (e, g) = (f.e, f.g);
     let te0 = -(te + 2.0 * te_r) / e;
     let te1 = -g * (te + 2.0 * te_xr);
