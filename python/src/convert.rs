@@ -9,6 +9,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use stability_core::notation::Notation;
 use stability_io::convert::{ConvertJson, converted};
+use stability_io::input::suggest::did_you_mean;
 
 /// A derivative set converted into the notation `to` by the factors
 /// derived from each author's definitions
@@ -36,7 +37,8 @@ pub fn convert<'py>(
             argument(
                 "to",
                 format!(
-                    "unknown notation `{to}`; the notations are: {}",
+                    "unknown notation `{to}`{}; the notations are: {}",
+                    did_you_mean(to, names.iter().copied()),
                     names.join(", ")
                 ),
             )

@@ -8,6 +8,7 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use stability_core::response::MAX_STEPS;
+use stability_io::input::suggest::did_you_mean;
 use stability_io::response::{Disturbance, Spec, respond};
 
 /// The longitudinal response (§11) of a derivative set to an elevon step
@@ -43,9 +44,10 @@ pub fn response<'py>(
     guard(|| {
         let file = derivative_file(source, notation, kwargs)?;
         let input = Disturbance::parse(input).ok_or_else(|| {
+            let hint = did_you_mean(input, ["step", "initial"]);
             argument(
                 "input",
-                format!("`{input}` is neither `step` nor `initial`"),
+                format!("`{input}` is neither `step` nor `initial`{hint}"),
             )
         })?;
         if !(until > 0.0 && until.is_finite()) {

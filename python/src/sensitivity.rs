@@ -8,6 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use stability_core::modes::ModeName;
 use stability_core::sensitivity::mode_sensitivities;
+use stability_io::input::suggest::did_you_mean;
 
 /// The sensitivity of a mode's root λ = r + is to each of the fifteen
 /// quartic inputs p (Derivatives.NAMES): the question of §10, which
@@ -40,9 +41,10 @@ pub fn sensitivity<'py>(
             "short_period" => ModeName::ShortPeriod,
             "phugoid" => ModeName::Phugoid,
             other => {
+                let hint = did_you_mean(other, ["short_period", "phugoid"]);
                 return Err(argument(
                     "mode",
-                    format!("`{other}` is neither `short_period` nor `phugoid`"),
+                    format!("`{other}` is neither `short_period` nor `phugoid`{hint}"),
                 ));
             }
         };

@@ -111,6 +111,15 @@ def test_the_new_options_raise_as_the_cli(cli):
     assert e.value.field == "aero" and "default, lifting-surface" in e.value.message
 
 
+def test_every_named_option_suggests_the_nearest():
+    with pytest.raises(ds.InputError, match="did you mean `phugoid`"):
+        ds.sensitivity(ROOT / "examples/tailless-delta-45.toml", mode="phugiod")
+    with pytest.raises(ds.InputError, match="did you mean `initial`"):
+        ds.response(ROOT / "examples/tailless-delta-45.toml", until=1.0, input="inital")
+    with pytest.raises(ds.InputError, match="did you mean `garner`"):
+        ds.convert(ROOT / "examples/tailless-delta-45.toml", to="garnr")
+
+
 def test_a_misspelt_model_name_suggests_the_nearest():
     with pytest.raises(ds.InputError, match="did you mean `lifting-surface`"):
         ds.analyze(ROOT / "examples/delta-45.toml", damping="liftingsurface")

@@ -484,6 +484,18 @@ pub enum Origin {
     LiftingSurface,
 }
 
+impl Origin {
+    /// Where the coefficient came from, in words (a page's).
+    pub fn describe(self) -> String {
+        match self {
+            Origin::Table => "your table".to_string(),
+            Origin::Method => "the default method (docs/models.md)".to_string(),
+            Origin::DampingModel(name) => format!("the damping model `{name}`'s own theory"),
+            Origin::LiftingSurface => "the doublet lattice (--aero lifting-surface)".to_string(),
+        }
+    }
+}
+
 impl Serialize for Origin {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         s.serialize_str(match self {

@@ -8,6 +8,7 @@ use crate::Failure;
 use crate::output::print;
 use crate::page::analysis_page;
 use stability_core::Derivatives;
+use stability_core::aero::{Coefficients, Origin};
 use stability_core::case::{CaseResult, DampingModel, FrequencyIteration};
 use stability_core::criteria::Margins;
 use stability_core::damping::Theory;
@@ -190,16 +191,7 @@ fn design_point(s: &mut String, cfg: &config::Config, r: &CaseResult) {
         sig(c.cl_m2, 3),
         sig(r.c_l, 4)
     );
-    let a = &r.coefficients;
-    let _ = writeln!(
-        s,
-        "  aerodynamics (§6): ∂C_L/∂α = {} (d/dM {}), C_D0 = {}, K = {}, H₀ = {}",
-        sig(a.lift_slope.value, 4),
-        sig(a.lift_slope.d_mach, 3),
-        sig(a.zero_lift_drag.value, 3),
-        sig(a.drag_due_to_lift.value, 3),
-        sig(a.aerodynamic_centre.value, 3)
-    );
+    aerodynamics(s, &r.coefficients, c.damping);
     let _ = writeln!(
         s,
         "  damping: {} {}; z_θ̇ = {}, m_θ̇ = {}",
@@ -219,6 +211,47 @@ fn design_point(s: &mut String, cfg: &config::Config, r: &CaseResult) {
                     "ω̄ = {}",
                     sig(w, 4)
                 ))
+        );
+    }
+}
+
+/// The coefficients of §6, each with where it came from; a damping model
+/// that supplies the lift slope and aerodynamic centre too says so.
+fn aerodynamics(s: &mut String, a: &Coefficients, damping: DampingModel) {
+    let o = &a.origin;
+    let _ = writeln!(
+        s,
+        "  aerodynamics (§6): ∂C_L/∂α = {} (d/dM {}), C_D0 = {}, K = {}, H₀ = {}",
+        sig(a.lift_slope.value, 4),
+        sig(a.lift_slope.d_mach, 3),
+        sig(a.zero_lift_drag.value, 3),
+        sig(a.drag_due_to_lift.value, 3),
+        sig(a.aerodynamic_centre.value, 3)
+    );
+    // the coefficients grouped by where they came from
+    let named = [
+        ("∂C_L/∂α", o.lift_slope),
+        ("H₀", o.aerodynamic_centre),
+        ("C_D0", o.zero_lift_drag),
+        ("K", o.drag_due_to_lift),
+    ];
+    let mut groups: Vec<(Origin, Vec<&str>)> = Vec::new();
+    for (name, origin) in named {
+        match groups.iter_mut().find(|(o, _)| *o == origin) {
+            Some((_, names)) => names.push(name),
+            None => groups.push((origin, vec![name])),
+        }
+    }
+    let from: Vec<String> = groups
+        .iter()
+        .map(|(o, names)| format!("{}: {}", names.join(", "), o.describe()))
+        .collect();
+    let _ = writeln!(s, "    from — {}", from.join("; "));
+    if matches!(o.lift_slope, Origin::DampingModel(_)) {
+        let _ = writeln!(
+            s,
+            "    (the damping model `{}` supplies the lift slope and aerodynamic centre as well as the damping derivatives; --aero lifting-surface, or lift_slope and aerodynamic_centre in [model.tables], take them from elsewhere)",
+            damping.name()
         );
     }
 }

@@ -45,7 +45,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
 /// The tables, one per mode.
 fn page(out: &SensitivityJson<'_>) -> String {
     let mut s = format!(
-        "Sensitivity of each root to the quartic's inputs, {} (report notation, §3; dλ/dp = −(∂P/∂p)/P′(λ), exact)\n",
+        "Sensitivity of each root to the quartic's inputs, {} (report notation, §3; dλ/dp = −(∂P/∂p)/P′(λ), exact)\n\
+         Each root is λ = r + is: r its real part (the damping: the mode decays where r < 0), s its imaginary part (the\n\
+         frequency); ∂r/∂p and ∂s/∂p are their rates of change with the input p, ∂ζ/∂p that of the damping ratio\n\
+         ζ = −r/|λ|, and p·∂r/∂p the change of r if p doubled, by which the inputs are ranked.\n",
         out.file
     );
     let unit = if out.tau_s.is_some() {
