@@ -31,6 +31,11 @@ pub enum DimensionalError {
         Num(*a), Num(LEADING_COEFFICIENT_MIN)
     )]
     Singular { a: f64 },
+    #[error(
+        "A = det E = (1 − X_u̇)(1 − Z_ẇ) − X_ẇ·Z_u̇ = {} is negative (Z_ẇ = {}): A is the mass the heave and surge motion carries in units of the aircraft's ((m − ∂Z/∂ẇ)/m with X_u̇ = X_ẇ = Z_u̇ = 0), so A ≤ 0 says the aerodynamic added mass cancels or exceeds the aircraft's own, which no aircraft has; a table per force (Z_ẇ in kg or slug) typed as per unit mass gives this: divide X and Z by m and M by I_y, or check the sign of Z_ẇ",
+        Num(*a), Num(*z_wdot)
+    )]
+    MassNotPositive { a: f64, z_wdot: f64 },
     #[error(transparent)]
     Analysis(#[from] AnalysisError),
 }
@@ -117,6 +122,10 @@ impl DimensionalAnalysis {
         let quartic = model.quartic();
         if quartic.a.abs() <= LEADING_COEFFICIENT_MIN {
             return Err(DimensionalError::Singular { a: quartic.a });
+        }
+        if quartic.a < 0.0 {
+            let z_wdot = model.derivatives.z_wdot;
+            return Err(DimensionalError::MassNotPositive { a: quartic.a, z_wdot });
         }
         let stability = model.in_stability_axes();
         // ω̄ = s·c̄/V: Modes divides s by its "μ₁", here V/c̄.

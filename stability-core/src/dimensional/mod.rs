@@ -58,11 +58,13 @@
 //! ```
 
 pub mod analysis;
+pub mod form;
 pub mod json;
 pub mod report;
 pub mod system;
 
 pub use analysis::{DimensionalAnalysis, DimensionalError};
+pub use form::{Form, Inertia, Printed};
 pub use report::{Dropped, Reference, ReportEquivalent};
 pub use system::DescriptorSystem;
 

@@ -27,6 +27,9 @@
 //! of another notation (`C_Lalpha`, `x_u`, `mu1` …) is an error that says
 //! which notation it belongs to; a misspelt one suggests the nearest.
 
+mod forms;
+mod plausible;
+
 use super::DerivativeFile;
 use super::raw::{Ctx, Entries, Table, toml_error};
 use super::suggest::{did_you_mean, nearest};
@@ -36,7 +39,7 @@ use serde::Deserialize;
 use stability_core::analysis::Analysis;
 use stability_core::dimensional::report::GAMMA0_NEGLIGIBLE;
 use stability_core::dimensional::{
-    Axes, DimensionalAnalysis, DimensionalDerivatives, DimensionalError, DimensionalModel,
+    Axes, DimensionalAnalysis, DimensionalDerivatives, DimensionalError, DimensionalModel, Form,
     Reference, Trim, Units,
 };
 use stability_core::display::Num;
@@ -60,6 +63,8 @@ const REFERENCE: [&str; 8] = ["chord", "rho", "S", "mass", "weight", "I_y", "mu1
 #[serde(deny_unknown_fields)]
 struct RawFile {
     notation: Spanned<String>,
+    /// The table's form: "per_unit_mass" (the default), "per_force", "alpha".
+    form: Option<Spanned<String>>,
     axes: Option<Spanned<String>>,
     units: Option<Spanned<String>>,
     derivatives: Option<Table>,
@@ -76,6 +81,9 @@ struct RawFile {
 #[derive(Debug, Clone)]
 pub struct DimensionalFile {
     pub path: String,
+    /// The form the `[derivatives]` table was printed in (converted into
+    /// the model's, per unit mass and inertia).
+    pub form: Form,
     pub model: DimensionalModel,
     /// The `[reference]` quantities, when given.
     pub reference: Option<Reference>,
@@ -106,7 +114,12 @@ impl DimensionalFile {
                 "notation" => self.most_extreme(),
                 name => name,
             };
-            self.error_at(at, e.to_string())
+            let mut message = e.to_string();
+            if matches!(e, DimensionalError::MassNotPositive { .. }) && self.form != Form::PerForce
+            {
+                message.push_str(" (or set form = \"per_force\" with [reference] mass and I_y)");
+            }
+            self.error_at(at, message)
         })
     }
 
@@ -137,7 +150,7 @@ fn blame(e: &DimensionalError) -> &'static str {
         DimensionalError::Invalid(e) => e.quantity(),
         DimensionalError::Attitude { .. } => "theta0",
         DimensionalError::StabilityW0 { .. } => "W0",
-        DimensionalError::Singular { .. } => "Z_wdot",
+        DimensionalError::Singular { .. } | DimensionalError::MassNotPositive { .. } => "Z_wdot",
         _ => "notation",
     }
 }
@@ -163,13 +176,18 @@ pub fn parse(path: &str, text: &str) -> Result<DimensionalFile, InputError> {
         warnings: Vec::new(),
         at_notation: cx.err(raw.notation.span(), "notation", ""),
     };
+    r.unknown_fields(&raw)?;
     let axes = r.axes(&raw)?;
     let units = r.units(&raw)?;
-    let derivatives = r.derivatives(&raw)?;
+    let form = r.form(&raw, axes)?;
     let trim = r.flight(&raw, axes, units)?;
-    let reference = r.reference(&raw, units, trim.g)?;
-    let file = DimensionalFile {
+    let given = r.given("reference", &raw.reference, &REFERENCE)?;
+    let inertia = r.inertia(form, &given, units, trim.g)?;
+    let derivatives = r.derivatives(&raw, form, &trim, inertia)?;
+    let reference = r.reference(&raw, &given, form, units, trim.g)?;
+    let mut file = DimensionalFile {
         path: path.to_string(),
+        form,
         model: DimensionalModel {
             axes,
             units,
@@ -189,6 +207,8 @@ pub fn parse(path: &str, text: &str) -> Result<DimensionalFile, InputError> {
             .check()
             .map_err(|e| file.error_at(blame(&e), e.to_string()))?;
     }
+    let warnings = file.implausible();
+    file.warnings.extend(warnings);
     Ok(file)
 }
 
@@ -330,8 +350,9 @@ fn units_hint(word: &str) -> String {
 /// The message for a name that is not one of a table's in this notation:
 /// where it belongs, or the nearest valid name.
 fn unknown_name(key: &str, table: &str, valid: &[&str]) -> String {
+    let derivatives = forms::derivative_names();
     let other_tables = [
-        ("derivatives", &DimensionalDerivatives::NAMES[..]),
+        ("derivatives", &derivatives[..]),
         ("flight", &FLIGHT[..]),
         ("reference", &REFERENCE[..]),
     ];
@@ -371,46 +392,6 @@ impl Reader<'_> {
         self.cx.entries(name, t)
     }
 
-    fn derivatives(&mut self, raw: &RawFile) -> Result<DimensionalDerivatives, InputError> {
-        let Some(table) = &raw.derivatives else {
-            return Err(self.at_notation(
-                "[derivatives]",
-                format!(
-                    "missing table [derivatives]: the derivatives per unit mass and inertia, {} (and optionally {})",
-                    REQUIRED.join(", "),
-                    DimensionalDerivatives::OPTIONAL.join(", ")
-                ),
-            ));
-        };
-        let names = DimensionalDerivatives::NAMES;
-        let mut values = [None; 15];
-        for (k, v) in self.entries("derivatives", &raw.derivatives)? {
-            let field = format!("[derivatives] {}", quote(k.get_ref()));
-            let Some(i) = names.iter().position(|n| *n == k.get_ref()) else {
-                let m = unknown_name(k.get_ref(), "derivatives", &names);
-                return Err(self.err(k.span(), field, m));
-            };
-            values[i] = Some(*v.get_ref());
-            self.origin(names[i], v.span(), field);
-        }
-        if let Some(missing) = REQUIRED
-            .iter()
-            .find(|n| values[names.iter().position(|x| x == *n).unwrap_or(0)].is_none())
-        {
-            return Err(self.err(
-                table.span(),
-                format!("[derivatives] {missing}"),
-                format!(
-                    "missing field `{missing}` (notation \"dimensional\" needs {}; {} are optional, 0 if not given)",
-                    REQUIRED.join(", "),
-                    DimensionalDerivatives::OPTIONAL.join(", ")
-                ),
-            ));
-        }
-        Ok(DimensionalDerivatives::from_values(
-            values.map(|v| v.unwrap_or(0.0)),
-        ))
-    }
 }
 
 /// A `[flight]` or `[reference]` table's values by name, with their spans.
@@ -554,16 +535,22 @@ impl Reader<'_> {
 impl Reader<'_> {
     /// The `[reference]` table: c̄ and μ₁ (from mu1, or rho, S and mass
     /// or weight) and i_B (from i_b, or I_y and the mass).
+    /// A table per force may give only the mass and I_y it is divided by.
     fn reference(
-        &mut self,
+        &self,
         raw: &RawFile,
+        r: &Given,
+        form: Form,
         units: Units,
         g: f64,
     ) -> Result<Option<Reference>, InputError> {
         let Some(table) = &raw.reference else {
             return Ok(None);
         };
-        let r = self.given("reference", &raw.reference, &REFERENCE)?;
+        let inertia_only = ["mass", "weight", "I_y"];
+        if form == Form::PerForce && r.keys().all(|k| inertia_only.contains(k)) {
+            return Ok(None);
+        }
         let need = |k: &str, why: &str| {
             r.get(k).map(|(v, _)| *v).ok_or_else(|| {
                 self.err(
@@ -623,7 +610,7 @@ impl Reader<'_> {
                 iy / (m * chord * chord)
             }
         };
-        Ok(Some(reference_of(&r, chord, mu1, i_b, mass)))
+        Ok(Some(reference_of(r, chord, mu1, i_b, mass)))
     }
 }
 
