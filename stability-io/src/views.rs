@@ -48,6 +48,8 @@ impl<'a> QuarticJson<'a> {
 pub struct DimensionalJson<'a> {
     file: &'a str,
     notation: &'a str,
+    /// The form the `[derivatives]` table was printed in.
+    form: &'static str,
     #[serde(flatten)]
     analysis: &'a DimensionalAnalysis,
     warnings: &'a [String],
@@ -64,6 +66,7 @@ impl<'a> DimensionalJson<'a> {
         DimensionalJson {
             file: &input.path,
             notation: DIMENSIONAL,
+            form: input.form.as_str(),
             analysis,
             warnings: &input.warnings,
             engineering,

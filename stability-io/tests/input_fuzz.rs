@@ -304,7 +304,7 @@ proptest! {
 
     #[test]
     fn damaged_dimensional_sets_give_finite_modes_or_a_located_error(
-        base in 0usize..5,
+        base in 0usize..16,
         first in damages(),
         second in proptest::option::of(damages()),
     ) {

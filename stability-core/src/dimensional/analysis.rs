@@ -125,7 +125,10 @@ impl DimensionalAnalysis {
         }
         if quartic.a < 0.0 {
             let z_wdot = model.derivatives.z_wdot;
-            return Err(DimensionalError::MassNotPositive { a: quartic.a, z_wdot });
+            return Err(DimensionalError::MassNotPositive {
+                a: quartic.a,
+                z_wdot,
+            });
         }
         let stability = model.in_stability_axes();
         // ω̄ = s·c̄/V: Modes divides s by its "μ₁", here V/c̄.

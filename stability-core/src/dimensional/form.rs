@@ -266,7 +266,9 @@ mod tests {
             },
         };
         let names: Vec<&str> = implausible(&model).iter().map(|x| x.name).collect();
-        for n in ["X_u", "X_w", "Z_u", "Z_w", "Z_wdot", "Z_q", "M_w", "M_wdot", "M_q"] {
+        for n in [
+            "X_u", "X_w", "Z_u", "Z_w", "Z_wdot", "Z_q", "M_w", "M_wdot", "M_q",
+        ] {
             assert!(names.contains(&n), "{n}: {names:?}");
         }
         // divided by m and I_y, nothing is

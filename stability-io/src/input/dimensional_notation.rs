@@ -391,7 +391,6 @@ impl Reader<'_> {
     fn entries<'t>(&self, name: &str, t: &'t Option<Table>) -> Result<Entries<'t>, InputError> {
         self.cx.entries(name, t)
     }
-
 }
 
 /// A `[flight]` or `[reference]` table's values by name, with their spans.

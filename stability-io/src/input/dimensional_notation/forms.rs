@@ -118,7 +118,11 @@ impl Reader<'_> {
             .as_ref()
             .map(|t| t.get_ref().keys().collect())
             .unwrap_or_default();
-        let alpha = keys.iter().find(|k| w_name_of(k.get_ref()).is_some());
+        // the first α name in the file's order
+        let alpha = keys
+            .iter()
+            .filter(|k| w_name_of(k.get_ref()).is_some())
+            .min_by_key(|k| k.span().start);
         let form = match &raw.form {
             None if alpha.is_some() => Form::Alpha,
             None => Form::PerUnitMass,
