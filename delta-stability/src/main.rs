@@ -85,7 +85,10 @@ enum Command {
     /// docs/errata.md). Examples: examples/*.toml.
     ///
     /// Handbook data (NASA CR-2144, Etkin & Reid, Nelson) go in as printed,
-    /// per unit mass and inertia, with notation = "dimensional"; the general
+    /// with notation = "dimensional": per unit mass and inertia (the
+    /// default), per force and moment (form = "per_force", with [reference]
+    /// mass and I_y) or with Z_alpha, M_alpha, M_alphadot (form = "alpha",
+    /// inferred from those names: U₀ times Z_w, M_w, M_ẇ); the general
     /// model det(λE − A) (eqs D1–D2, docs/dimensional.md) then gives the roots
     /// in 1/s and the modes in seconds:
     ///
@@ -104,7 +107,8 @@ enum Command {
     ///   [reference]       # optional: the report's τ, μ₁, i_B and eq (41)
     ///   chord = 27.3      # c̄; rho, S, mass (or weight), I_y; or mu1, i_b
     ///
-    /// See examples/aircraft/*.toml (five published sets, with their sources).
+    /// See examples/aircraft/*.toml (five published sets, with their sources,
+    /// and two of them in the other forms).
     #[command(verbatim_doc_comment)]
     Quartic(cmd::quartic::Args),
     /// The longitudinal response (§11) to an elevon step or an initial disturbance.
