@@ -258,6 +258,33 @@ fn a_table_per_force_typed_as_per_unit_mass_is_refused_with_its_cause() {
     assert!(stderr(&out).contains("warning:"), "the terminal too");
 }
 
+/// No published set, in any form, has a magnitude an aircraft has not:
+/// the warnings are for mistakes only.
+#[test]
+fn no_published_set_is_warned() {
+    let dir = root().join("examples/aircraft");
+    let mut n = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let p = entry.unwrap().path();
+        let v = quartic(p.to_str().unwrap());
+        assert_eq!(v["warnings"], serde_json::json!([]), "{}", p.display());
+        let fastest = v["roots"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| {
+                r["re_s"]
+                    .as_f64()
+                    .unwrap()
+                    .hypot(r["im_s"].as_f64().unwrap())
+            })
+            .fold(0.0, f64::max);
+        assert!(fastest < 4.0, "{}: {fastest}", p.display());
+        n += 1;
+    }
+    assert!(n >= 7, "{n} files");
+}
+
 /// Every unknown field of the file in one error, each at its file:line with
 /// the nearest valid name.
 #[test]

@@ -117,8 +117,9 @@ impl Printed {
 /// The fastest rate of a physical aircraft's longitudinal motion, s⁻¹: no
 /// root of a real aircraft's quartic, and no rate derivative (X_u, X_w,
 /// Z_u, Z_w, M_q, U₀M_ẇ) is faster; a table per force typed as per unit
-/// mass gives thousands. The 747's fastest is 0.34 s⁻¹, the Navion's 2.05,
-/// a fighter's a few.
+/// mass gives thousands. The 747's fastest rate derivative is
+/// |M_q| = 0.34 s⁻¹ and the Navion's 2.05 s⁻¹; their fastest roots 0.96
+/// and 3.6 s⁻¹.
 pub const RATE_MAX: f64 = 100.0;
 
 /// The largest plausible ratio of an added mass (X_ẇ, X_u̇, Z_ẇ, Z_u̇) to
