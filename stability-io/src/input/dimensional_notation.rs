@@ -567,7 +567,7 @@ impl Reader<'_> {
         ] {
             if r.contains_key(a) && r.contains_key(b) {
                 return Err(self.at_given(
-                    &r,
+                    r,
                     b,
                     "reference",
                     format!("give `{a}` or `{b}`, not both"),
