@@ -182,7 +182,7 @@ pub fn parse(path: &str, text: &str) -> Result<DimensionalFile, InputError> {
     let form = r.form(&raw, axes)?;
     let trim = r.flight(&raw, axes, units)?;
     let given = r.given("reference", &raw.reference, &REFERENCE)?;
-    let inertia = r.inertia(form, &given, units, trim.g)?;
+    let inertia = r.inertia(&raw, form, &given, units, trim.g)?;
     let derivatives = r.derivatives(&raw, form, &trim, inertia)?;
     let reference = r.reference(&raw, &given, form, units, trim.g)?;
     let mut file = DimensionalFile {

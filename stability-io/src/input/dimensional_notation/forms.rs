@@ -168,6 +168,7 @@ impl Reader<'_> {
     /// weight/g; I_y); `None` in the other forms.
     pub(super) fn inertia(
         &self,
+        raw: &RawFile,
         form: Form,
         r: &super::Given,
         units: Units,
@@ -183,7 +184,9 @@ impl Reader<'_> {
             Units::Ft => ("slug", "slug·ft²"),
         };
         let (Some(mass), Some(i_y)) = (mass, get("I_y")) else {
-            return Err(self.at_notation(
+            let span = raw.form.as_ref().map_or(0..0, |f| f.span());
+            return Err(self.err(
+                span,
                 "form",
                 format!("form = \"per_force\": the table per force and moment is divided by the mass and the pitching inertia, which it needs in [reference]: mass ({mass_unit}) or weight, and I_y ({i_unit})"),
             ));
