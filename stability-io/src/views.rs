@@ -13,14 +13,14 @@ use stability_core::aero::Coefficients;
 use stability_core::analysis::{Analysis, Timebase};
 use stability_core::cap::ShortPeriodFrequency;
 use stability_core::criteria::{DampingStandard, FlyingQualities, Margins};
-use stability_core::json::TimedMode;
-use stability_core::verdict::Overall;
 use stability_core::dimensional::DimensionalAnalysis;
 use stability_core::engineering::Engineering;
 use stability_core::flight::FlightJson;
+use stability_core::json::TimedMode;
 use stability_core::json::{CaseView, Timed};
 use stability_core::modes::{ModeName, Origin};
 use stability_core::sensitivity::{ModeSensitivity, mode_sensitivities};
+use stability_core::verdict::Overall;
 
 /// The `quartic --json` object of a report-notation file: the file and
 /// its notation, the analysis as the library serializes it (with times in

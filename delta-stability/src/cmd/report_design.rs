@@ -9,7 +9,6 @@ use crate::Failure;
 use crate::report::design::{Design, MAX_MACHS, default_machs, figures, page};
 use crate::report::html::DOCS;
 use stability_core::cap::AirplaneClass;
-use stability_core::display::sig;
 use stability_io::config::overridden;
 use stability_io::diag::InputError;
 use stability_io::limits;
@@ -31,7 +30,9 @@ pub fn refuse_design_options(args: &Args) -> Result<(), Failure> {
     match given.iter().find(|g| g.1) {
         Some((flag, _)) => Err(Failure::Input(InputError::file(
             "report",
-            format!("{flag} applies to a design's report: give its CONFIG (report CONFIG {flag} …); without one, report writes the note's own study"),
+            format!(
+                "{flag} applies to a design's report: give its CONFIG (report CONFIG {flag} …); without one, report writes the note's own study"
+            ),
         ))),
         None => Ok(()),
     }
@@ -73,13 +74,20 @@ pub fn run(args: &Args, config: &str) -> Result<(), Failure> {
     let failed: Vec<String> = design
         .points
         .iter()
-        .filter_map(|(m, r)| r.as_ref().err().map(|e| format!("M = {}: {e}", sig(*m, 4))))
+        .filter_map(|(m, r)| {
+            r.as_ref()
+                .err()
+                .map(|e| format!("M = {}: {e}", crate::plot::short(*m)))
+        })
         .collect();
     if failed.len() == design.points.len() {
         bar.finish_and_clear();
         return Err(Failure::Input(InputError::file(
             config,
-            format!("no Mach number has a result, so there is nothing to report; the first: {}", failed[0]),
+            format!(
+                "no Mach number has a result, so there is nothing to report; the first: {}",
+                failed[0]
+            ),
         )));
     }
     let mut figures_written = 0;
@@ -98,7 +106,10 @@ pub fn run(args: &Args, config: &str) -> Result<(), Failure> {
         let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
         write("summary.json", json.as_bytes())?;
         write("sources.csv", page::sources_csv(&design).as_bytes())?;
-        write("index.html", page::index_html(&design, &sections).as_bytes())?;
+        write(
+            "index.html",
+            page::index_html(&design, &sections).as_bytes(),
+        )?;
         for (name, text) in DOCS {
             write(name, text.as_bytes())?;
         }

@@ -71,7 +71,9 @@ pub(crate) fn damping_joins(sweeps: &[f64]) -> Vec<(f64, f64)> {
 }
 
 /// The coefficients' joins, as the results had them.
-pub(crate) fn coefficient_joins<'a>(results: impl Iterator<Item = &'a CaseResult>) -> Vec<(f64, f64)> {
+pub(crate) fn coefficient_joins<'a>(
+    results: impl Iterator<Item = &'a CaseResult>,
+) -> Vec<(f64, f64)> {
     let methods = (defaults::SUBSONIC_LIMIT, defaults::SUPERSONIC_LIMIT);
     let mut out = Vec::new();
     for r in results {

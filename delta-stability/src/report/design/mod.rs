@@ -137,8 +137,7 @@ impl Design {
     /// number named along the top, and where the leading edge turns sonic.
     pub fn figure(&self, title: &str, y: &str) -> Figure {
         let mut fig = Figure::new("design", title, "Mach number M", y);
-        let mut joins =
-            super::regimes::coefficient_joins(self.results().map(|(_, r)| &r.result));
+        let mut joins = super::regimes::coefficient_joins(self.results().map(|(_, r)| &r.result));
         if self.cfg.case.damping == DampingModel::Faired {
             let deg = self.cfg.case.planform.sweep_le.to_degrees();
             joins.extend(super::regimes::damping_joins(&[deg]));

@@ -6,7 +6,7 @@
 //! link is relative to the page.
 
 use super::{Design, phugoid, short_period, times};
-use crate::plot::{csv_field, num};
+use crate::plot::{csv_field, num, short};
 use crate::report::Plate;
 use stability_core::analysis::Timebase;
 use stability_core::display::sig;
@@ -21,11 +21,12 @@ fn esc(t: &str) -> String {
         .replace('>', "&gt;")
 }
 
-const STYLE: &str = "<style>body{font-family:sans-serif;max-width:72em;margin:2em auto;line-height:1.45}figure{margin:2em 0}img{max-width:100%;border:1px solid #ddd}table{border-collapse:collapse;font-size:.85em}td,th{padding:.15em .45em;border-bottom:1px solid #eee;text-align:right;vertical-align:top}th{background:#f4f4f4}td:first-child,th:first-child{text-align:left}.meets{color:#060}.fails{color:#850}.divergent{color:#a00}.scroll{overflow-x:auto}</style>";
+const STYLE: &str = "<style>body{font-family:sans-serif;max-width:72em;margin:2em auto;line-height:1.45}figure{margin:2em 0}img{max-width:100%;border:1px solid #ddd}table{border-collapse:collapse;font-size:.85em}td,th{padding:.15em .45em;white-space:nowrap;border-bottom:1px solid #eee;text-align:right;vertical-align:top}th{background:#f4f4f4}td:first-child,th:first-child{text-align:left}.meets{color:#060}.fails{color:#850}.divergent{color:#a00}.scroll{overflow-x:auto}</style>";
 
 /// A number to three significant figures, or a dash.
 fn n(v: Option<f64>) -> String {
-    v.filter(|x| x.is_finite()).map_or("—".into(), |x| sig(x, 3))
+    v.filter(|x| x.is_finite())
+        .map_or("—".into(), |x| sig(x, 3))
 }
 
 /// The design, in words: planform, c.g., models, flight condition.
@@ -75,15 +76,19 @@ fn verdicts(d: &Design) -> String {
     );
     for (what, a, b) in runs {
         let range = match a == b {
-            true => format!("M = {}", sig(a, 4)),
-            false => format!("M = {} to {}", sig(a, 4), sig(b, 4)),
+            true => format!("M = {}", short(a)),
+            false => format!("M = {} to {}", short(a), short(b)),
         };
         let _ = write!(s, "<li>{range}: <span class=\"{what}\">{what}</span></li>");
     }
     let failed: Vec<String> = d
         .points
         .iter()
-        .filter_map(|(m, r)| r.as_ref().err().map(|e| format!("<li>M = {}: {}</li>", sig(*m, 4), esc(e))))
+        .filter_map(|(m, r)| {
+            r.as_ref()
+                .err()
+                .map(|e| format!("<li>M = {}: {}</li>", short(*m), esc(e)))
+        })
         .collect();
     if !failed.is_empty() {
         let _ = write!(s, "<li>no result:<ul>{}</ul></li>", failed.join(""));
@@ -101,7 +106,7 @@ pub fn verdict_lines(d: &Design) -> String {
     });
     let mut s = String::new();
     for (what, a, b) in runs {
-        let _ = writeln!(s, "  M = {} to {}: {what}", sig(a, 4), sig(b, 4));
+        let _ = writeln!(s, "  M = {} to {}: {what}", short(a), short(b));
     }
     s
 }
@@ -138,16 +143,24 @@ fn row(m: f64, r: &Results) -> String {
     let v = Overall::of(a, Timebase::Tau(tau));
     let fq = a.flying_qualities(Timebase::Tau(tau));
     let lv = |l: stability_core::criteria::Level| l.number().to_string();
-    let sp_levels = fq.short_period.map_or("—".into(), |s| format!("{}/{}/{}", lv(s.a), lv(s.b), lv(s.c)));
+    let sp_levels = fq.short_period.map_or("—".into(), |s| {
+        format!("{}/{}/{}", lv(s.a), lv(s.b), lv(s.c))
+    });
     let ph_level = fq.phugoid.map_or("—".into(), |p| lv(p.level));
     let spf = r.engineering.short_period_frequency;
-    let cap = spf.map_or("—".into(), |s| format!("{} ({}/{}/{})", sig(s.cap, 3), lv(s.a), lv(s.b), lv(s.c)));
+    let cap = spf.map_or("—".into(), |s| {
+        format!("{} ({}/{}/{})", sig(s.cap, 3), lv(s.a), lv(s.b), lv(s.c))
+    });
     let res = &r.result;
-    let mg = stability_core::criteria::Margins::of(&a.quartic, &res.derivatives, res.coefficients.lift_slope.value);
+    let mg = stability_core::criteria::Margins::of(
+        &a.quartic,
+        &res.derivatives,
+        res.coefficients.lift_slope.value,
+    );
     let word = v.overall.as_str();
     format!(
         "<tr><td>{}</td><td class=\"{word}\" title=\"{}\">{word}</td>{}{}<td>{}</td><td>{sp_levels}</td><td>{ph_level}</td><td>{cap}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
-        sig(m, 4),
+        short(m),
         esc(&v.reasons.join("; ")),
         mode_cells(r, short_period(r)),
         mode_cells(r, phugoid(r)),
@@ -161,7 +174,9 @@ fn row(m: f64, r: &Results) -> String {
 /// The table of every Mach number.
 fn table(d: &Design) -> String {
     let (t, w) = (d.time_unit(), d.rate_unit());
-    let mode = |name: &str| format!("<th colspan=\"5\">{name}: ζ, ωₙ ({w}), period ({t}), t½ ({t}), cycles to ½</th>");
+    let mode = |name: &str| {
+        format!("<th colspan=\"5\">{name}: ζ, ωₙ ({w}), period ({t}), t½ ({t}), cycles to ½</th>")
+    };
     let mut s = format!(
         "<h2 id=\"table\">Every Mach number</h2><p>×2: the mode grows, and doubles in that time or those cycles. Levels: MIL-F-8785C, Categories A/B/C (4: worse than Level 3). CAP with its levels A/B/C (physical flight conditions only). Hover over a verdict for its reasons.</p><div class=\"scroll\"><table><tr><th>M</th><th>verdict</th>{}{}<th>Δm_θ̇ (eq 41)</th><th>short-period ζ levels</th><th>phugoid level</th><th>CAP (levels)</th><th>K_n (eq 42)</th><th>H_m</th><th>H₀</th></tr>\n",
         mode("short period"),
@@ -171,7 +186,12 @@ fn table(d: &Design) -> String {
         match r {
             Ok(r) => s.push_str(&row(*m, r)),
             Err(e) => {
-                let _ = write!(s, "<tr><td>{}</td><td colspan=\"20\">no result: {}</td></tr>", sig(*m, 4), esc(e));
+                let _ = write!(
+                    s,
+                    "<tr><td>{}</td><td colspan=\"20\">no result: {}</td></tr>",
+                    short(*m),
+                    esc(e)
+                );
             }
         }
         s.push('\n');
@@ -190,8 +210,8 @@ fn sources(d: &Design) -> String {
         let [theory, a, h0, cd0, k, warn] = source_cells(r);
         let _ = writeln!(
             s,
-            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td style=\"text-align:left\">{}</td></tr>",
-            sig(m, 4),
+            "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td style=\"text-align:left;white-space:normal;min-width:30em\">{}</td></tr>",
+            short(m),
             esc(&theory),
             esc(&a),
             esc(&h0),
@@ -222,7 +242,9 @@ fn source_cells(r: &Results) -> [String; 6] {
 
 /// `sources.csv`: each Mach number's sources (the page's table).
 pub fn sources_csv(d: &Design) -> String {
-    let mut s = String::from("mach,damping_theory,lift_slope,aerodynamic_centre,zero_lift_drag,drag_due_to_lift,warnings,error\n");
+    let mut s = String::from(
+        "mach,damping_theory,lift_slope,aerodynamic_centre,zero_lift_drag,drag_due_to_lift,warnings,error\n",
+    );
     for (m, r) in &d.points {
         let cells = match r {
             Ok(r) => {
@@ -265,13 +287,24 @@ pub fn index_html(d: &Design, sections: &[(&str, Vec<Plate>)]) -> String {
             .iter()
             .map(|p| format!("<a href=\"#{}\">{}</a>", p.name(), p.name()))
             .collect();
-        let _ = write!(s, "<li><a href=\"#section-{}\">{}</a>: {}</li>", k + 1, esc(title), figs.join(", "));
+        let _ = write!(
+            s,
+            "<li><a href=\"#section-{}\">{}</a>: {}</li>",
+            k + 1,
+            esc(title),
+            figs.join(", ")
+        );
     }
     s.push_str("<li><a href=\"#sources\">Sources and regimes</a></li></ol></nav>\n");
     s.push_str(&verdicts(d));
     s.push_str(&table(d));
     for (k, (title, plates)) in sections.iter().enumerate() {
-        let _ = writeln!(s, "<section id=\"section-{}\"><h2>{}</h2>", k + 1, esc(title));
+        let _ = writeln!(
+            s,
+            "<section id=\"section-{}\"><h2>{}</h2>",
+            k + 1,
+            esc(title)
+        );
         for p in plates {
             s.push_str(&figure(p));
             s.push('\n');
