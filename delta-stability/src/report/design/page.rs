@@ -21,12 +21,17 @@ fn esc(t: &str) -> String {
         .replace('>', "&gt;")
 }
 
-const STYLE: &str = "<style>body{font-family:sans-serif;max-width:72em;margin:2em auto;line-height:1.45}figure{margin:2em 0}img{max-width:100%;border:1px solid #ddd}table{border-collapse:collapse;font-size:.85em}td,th{padding:.15em .45em;white-space:nowrap;border-bottom:1px solid #eee;text-align:right;vertical-align:top}th{background:#f4f4f4}td:first-child,th:first-child{text-align:left}.meets{color:#060}.fails{color:#850}.divergent{color:#a00}.scroll{overflow-x:auto}</style>";
+const STYLE: &str = "<style>body{font-family:sans-serif;max-width:72em;margin:2em auto;line-height:1.45}figure{margin:2em 0}img{max-width:100%;border:1px solid #ddd}table{border-collapse:collapse;font-size:.8em}td,th{padding:.15em .4em;white-space:nowrap;border-bottom:1px solid #eee;text-align:right;vertical-align:top}th{background:#f4f4f4}td:first-child,th:first-child{text-align:left}.meets{color:#060}.fails{color:#850}.divergent{color:#a00}.scroll{overflow-x:auto}th{white-space:normal}</style>";
 
 /// A number to three significant figures, or a dash.
 fn n(v: Option<f64>) -> String {
     v.filter(|x| x.is_finite())
         .map_or("—".into(), |x| sig(x, 3))
+}
+
+/// A number in prose: `digits` significant figures, shortest form.
+fn g(x: f64, digits: usize) -> String {
+    stability_core::display::round_to(x, digits).to_string()
 }
 
 /// The design, in words: planform, c.g., models, flight condition.
@@ -36,28 +41,28 @@ fn design(d: &Design) -> String {
     let flight = match d.results().next().and_then(|(_, r)| r.flight) {
         Some((f, _)) => format!(
             "a physical flight condition: ρ = {} kg/m³, a = {} m/s, m = {} kg, I_y = {} kg·m², giving μ₁ = {}, i_B = {}, C_L·M² = {} (eq 24) at every Mach number, and V, C_L and τ = m/(½ρSV) at each; times are in seconds",
-            sig(f.density, 4),
-            sig(f.speed_of_sound, 4),
-            sig(f.mass, 5),
-            sig(f.pitch_inertia, 5),
-            sig(f.mu1(), 4),
-            sig(f.i_b(), 3),
-            sig(f.cl_m2(), 3)
+            g(f.density, 4),
+            g(f.speed_of_sound, 4),
+            g(f.mass, 5),
+            g(f.pitch_inertia, 5),
+            g(f.mu1(), 4),
+            g(f.i_b(), 3),
+            g(f.cl_m2(), 3)
         ),
         None => format!(
             "a non-dimensional flight condition: μ₁ = {}, i_B = {}, C_L·M² = {} (eq 24); times are in units of τ = m/(½ρSV)",
-            sig(c.mu1, 4),
-            sig(c.i_b, 3),
-            sig(c.cl_m2, 3)
+            g(c.mu1, 4),
+            g(c.i_b, 3),
+            g(c.cl_m2, 3)
         ),
     };
     format!(
         "<p>The design of <code>{}</code>: leading-edge sweep Λ = {}°, taper {}, aspect ratio {}, c.g. at h = {} of the M.A.C., damping model <code>{}</code> (<a href=\"docs/models.md\">docs/models.md</a>, <a href=\"docs/damping-theories.md\">docs/damping-theories.md</a>), {flight}. Each Mach number is evaluated as <code>delta-stability analyze {} --mach M</code> evaluates it. MIL-F-8785C class {} for Category C. Numbers: <a href=\"summary.json\">summary.json</a>; sources: <a href=\"sources.csv\">sources.csv</a>.</p>",
         esc(&d.cfg.path),
-        sig(p.sweep_le.to_degrees(), 4),
-        sig(p.taper, 3),
-        sig(p.aspect_ratio(), 3),
-        sig(c.h, 3),
+        g(p.sweep_le.to_degrees(), 4),
+        g(p.taper, 3),
+        g(p.aspect_ratio(), 3),
+        g(c.h, 3),
         c.damping.name(),
         esc(&d.cfg.path),
         d.class.name()
@@ -136,6 +141,32 @@ fn mode_cells(r: &Results, m: Option<&Mode>) -> String {
     )
 }
 
+/// The aperiodic roots (a pair split): each one's time to half or to
+/// double (×2).
+fn aperiodic(r: &Results) -> String {
+    use stability_core::modes::ModeName;
+    let cells: Vec<String> = r
+        .result
+        .analysis
+        .modes
+        .iter()
+        .filter(|m| m.name == ModeName::Aperiodic)
+        .map(|m| {
+            let t = times(r, m);
+            match (t.time_to_half, t.time_to_double) {
+                (Some(h), _) => format!("½ in {}", sig(h, 3)),
+                (None, Some(x)) => format!("×2 in {}", sig(x, 3)),
+                _ => "neutral".into(),
+            }
+        })
+        .collect();
+    if cells.is_empty() {
+        "—".into()
+    } else {
+        cells.join(", ")
+    }
+}
+
 /// One Mach number's row of the table.
 fn row(m: f64, r: &Results) -> String {
     let a = &r.result.analysis;
@@ -159,11 +190,12 @@ fn row(m: f64, r: &Results) -> String {
     );
     let word = v.overall.as_str();
     format!(
-        "<tr><td>{}</td><td class=\"{word}\" title=\"{}\">{word}</td>{}{}<td>{}</td><td>{sp_levels}</td><td>{ph_level}</td><td>{cap}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+        "<tr><td>{}</td><td class=\"{word}\" title=\"{}\">{word}</td>{}{}<td>{}</td><td>{}</td><td>{sp_levels}</td><td>{ph_level}</td><td>{cap}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
         short(m),
         esc(&v.reasons.join("; ")),
         mode_cells(r, short_period(r)),
         mode_cells(r, phugoid(r)),
+        aperiodic(r),
         n(a.damping_standard.margin),
         n(mg.static_margin),
         n(mg.manoeuvre_margin),
@@ -178,7 +210,7 @@ fn table(d: &Design) -> String {
         format!("<th colspan=\"5\">{name}: ζ, ωₙ ({w}), period ({t}), t½ ({t}), cycles to ½</th>")
     };
     let mut s = format!(
-        "<h2 id=\"table\">Every Mach number</h2><p>×2: the mode grows, and doubles in that time or those cycles. Levels: MIL-F-8785C, Categories A/B/C (4: worse than Level 3). CAP with its levels A/B/C (physical flight conditions only). Hover over a verdict for its reasons.</p><div class=\"scroll\"><table><tr><th>M</th><th>verdict</th>{}{}<th>Δm_θ̇ (eq 41)</th><th>short-period ζ levels</th><th>phugoid level</th><th>CAP (levels)</th><th>K_n (eq 42)</th><th>H_m</th><th>H₀</th></tr>\n",
+        "<h2 id=\"table\">Every Mach number</h2><p>×2: the mode grows, and doubles in that time or those cycles. Levels: MIL-F-8785C, Categories A/B/C (4: worse than Level 3). CAP with its levels A/B/C (physical flight conditions only). Hover over a verdict for its reasons.</p><div class=\"scroll\"><table><tr><th>M</th><th>verdict</th>{}{}<th>aperiodic roots ({t})</th><th>Δm_θ̇ (eq 41)</th><th>short-period ζ levels</th><th>phugoid level</th><th>CAP (levels)</th><th>K_n (eq 42)</th><th>H_m</th><th>H₀</th></tr>\n",
         mode("short period"),
         mode("phugoid")
     );
