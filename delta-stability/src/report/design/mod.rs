@@ -32,7 +32,7 @@ pub fn default_machs(own: f64) -> Vec<f64> {
     const STEP: f64 = 0.05;
     let from = (own / STEP).floor() * STEP;
     let to = (own / STEP).ceil() * STEP;
-    grid(from.min(0.5).max(STEP), to.max(2.0), STEP)
+    grid(from.clamp(STEP, 0.5), to.max(2.0), STEP)
 }
 
 /// The most Mach numbers one report takes (each is a full design point:
