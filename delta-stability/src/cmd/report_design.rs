@@ -1,7 +1,7 @@
 //! `delta-stability report CONFIG [--mach A:B:STEP|LIST] [--out DIR]`: a
 //! design's own report ([`crate::report::design`]) — its figures (SVG and
 //! CSV), `summary.json`, `sources.csv` and `index.html` — written as the
-//! note's study is ([`super::report::write_report`]: atomically, with the
+//! note's study is (`cmd::report`'s `write_report`: atomically, with the
 //! manifest, replacing only an earlier report).
 
 use super::report::{Args, progress_bar, write_plate, write_report};
