@@ -185,7 +185,7 @@ enum Command {
     /// appendix; the appendix's misprints are listed in docs/errata.md.
     #[command(verbatim_doc_comment)]
     Convert(cmd::convert::Args),
-    /// Run the note's whole study and write its figures, data and conclusions.
+    /// Run the note's whole study (or, with CONFIG, your design's across Mach) and write its figures, data and conclusions.
     ///
     /// The built-in cases are the note's: tailless true deltas of 45° and 60°
     /// leading-edge sweep, c.g. at h = 0.25, μ₁ = 50, Mach 0.5 to 2.0, with
@@ -207,6 +207,31 @@ enum Command {
     /// it a file the report's manifest (.report-manifest.json) lists,
     /// unchanged, checked when the run starts and again when DIR is
     /// replaced (else exit status 3, naming what would be lost).
+    ///
+    /// With CONFIG (a design-point config, as for `analyze`): that design's
+    /// own report across Mach number instead — each Mach number of --mach
+    /// (A:B:STEP or a list A,B,…; default 0.5:2:0.05, widened in steps of
+    /// 0.05 to take in the config's own Mach number) evaluated as
+    /// `analyze CONFIG --mach M` evaluates it. DIR gets index.html (the
+    /// verdict across Mach number, every root judged; a table of every Mach
+    /// number; the figures), the figures as SVG and CSV (cycles to half
+    /// amplitude with the one-cycle line, the roots, ζ and ωₙ of both
+    /// modes, their periods and times to half or double — in seconds where
+    /// the flight condition is physical —, Δm_θ̇ of eq (41), the MIL-F-8785C
+    /// levels and CAP, the static and manoeuvre margins and the aerodynamic
+    /// centre, every coefficient and derivative), sources.csv (each
+    /// coefficient's and the damping derivatives' source at each Mach
+    /// number) and summary.json (each Mach number under `analyze --json`'s
+    /// key names; the Mach numbers where the verdict is meets, fails,
+    /// divergent), written and replaced as above. --damping, --aero and
+    /// --omega-bar replace the config's model, --class sets the airplane
+    /// class of the CAP levels. Example:
+    ///
+    ///   delta-stability report examples/delta-60-physical.toml --mach 0.6:1.8:0.05 --out my-report
+    ///
+    /// To see the page as a browser does: scripts/screenshot-design-report.sh
+    /// (headless Chromium: chromium --headless --no-sandbox
+    /// --screenshot=OUT.png --window-size=1200,3000 file://DIR/index.html).
     Report(cmd::report::Args),
     /// Design points over a Cartesian grid of Mach, sweep, c.g., μ₁ and i_B.
     ///

@@ -59,3 +59,17 @@ pub fn results(cfg: &Config, class: AirplaneClass) -> Result<Results, Failure> {
         _ => Err(cfg.error_at("[flight]", OVERFLOW).into()),
     }
 }
+
+/// The design point of `cfg` at Mach number `mach`, as `analyze --mach`
+/// makes it (the Mach number within its range, every other value the
+/// config's; at a physical flight condition V, C_L and τ at that Mach
+/// number): one point of a design's report across Mach.
+pub fn at_mach(cfg: &Config, mach: f64, class: AirplaneClass) -> Result<Results, Failure> {
+    let mut cfg = cfg.clone();
+    let mach = crate::config::Overrides {
+        mach: Some(mach),
+        ..Default::default()
+    };
+    crate::config::apply(&mut cfg, &mach)?;
+    results(&cfg, class)
+}

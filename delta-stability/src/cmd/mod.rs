@@ -4,6 +4,7 @@ pub mod analyze;
 pub mod convert;
 pub mod quartic;
 pub mod report;
+pub mod report_design;
 pub mod response;
 pub mod sensitivity;
 pub mod sweep;

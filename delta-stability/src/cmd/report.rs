@@ -14,7 +14,7 @@ use crate::output::{AtomicDir, Refused};
 use crate::report::conclusions::{self, Judged};
 use crate::report::manifest::{self, MANIFEST, Manifest};
 use crate::report::summary::{self, Findings};
-use crate::report::{SECTIONS, Study, html};
+use crate::report::{Plate, SECTIONS, Study, html};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use stability_io::diag::IoError;
 use stability_io::files::write_error;
@@ -51,7 +51,7 @@ fn may_replace(dir: &Path) -> Result<(), String> {
     ))
 }
 
-fn progress_bar(steps: usize) -> ProgressBar {
+pub(super) fn progress_bar(steps: usize) -> ProgressBar {
     let bar = ProgressBar::with_draw_target(Some(steps as u64), ProgressDrawTarget::stderr());
     bar.set_style(
         ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} {msg}")
@@ -64,13 +64,36 @@ fn progress_bar(steps: usize) -> ProgressBar {
 /// The command's options.
 #[derive(Debug, Clone, clap::Args)]
 pub struct Args {
+    /// A design-point config (TOML, as for `analyze`): report that design
+    /// across Mach number instead of the note's study.
+    pub config: Option<String>,
     /// The output directory.
     #[arg(long, default_value = "report")]
     pub out: String,
+    /// With CONFIG: the Mach numbers, A:B:STEP (inclusive) or a list
+    /// A,B,…; default 0.5:2:0.05, widened in steps of 0.05 to take in the
+    /// config's own Mach number.
+    #[arg(long, value_name = "A:B:STEP|LIST")]
+    pub mach: Option<String>,
+    /// With CONFIG: the MIL-F-8785C airplane class (§1.3) whose Category C
+    /// floors the short-period frequency requirement applies (default IV).
+    #[arg(long = "class", value_enum)]
+    pub class: Option<crate::args::ClassArg>,
+    #[command(flatten)]
+    pub model: crate::args::ModelArgs,
 }
 
-pub fn run(args: &Args) -> Result<(), Failure> {
-    let out = Path::new(&args.out);
+/// A file of the report: its name in DIR and its bytes.
+pub(super) type Write<'a> = dyn Fn(&str, &[u8]) -> Result<(), Failure> + 'a;
+
+/// Writes a report into `out`: `fill` writes its files through the
+/// function it is given (each recorded in the manifest), into a temporary
+/// directory that then replaces `out` — only if `out` holds nothing but an
+/// earlier report's files, unchanged, when the run starts and at the swap.
+pub(super) fn write_report(
+    out: &Path,
+    fill: impl FnOnce(&Write<'_>) -> Result<(), Failure>,
+) -> Result<(), Failure> {
     check_target(out)?;
     let dir = AtomicDir::create(out).map_err(|e| write_error(out, &e))?;
     let written = std::cell::RefCell::new(Manifest::default());
@@ -79,56 +102,76 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         dir.write(name, bytes)
             .map_err(|e| Failure::Io(write_error(&dir.path().join(name), &e)))
     };
-    let bar = progress_bar(SECTIONS.len() + 3);
-    bar.set_message("the 45° and 60° deltas across Mach number");
-    let study = Study::new();
-    bar.inc(1);
-    let mut sections = Vec::new();
-    for section in &SECTIONS {
-        bar.set_message(section.title);
-        let plates = (section.plates)(&study);
-        for p in &plates {
-            for (name, bytes) in p
-                .files()
-                .map_err(|m| IoError::new("cannot draw", &out.join(p.name()), m))?
-            {
-                write(&name, &bytes)?;
-            }
-        }
-        sections.push((section.title, plates));
-        bar.inc(1);
-    }
-    bar.set_message("summary: intervals and the largest μ₁ (bisection)");
-    let findings = Findings::new(study);
-    findings.max_mu1(0);
-    findings.max_mu1(1);
-    bar.inc(1);
-    bar.set_message("conclusions, swept over i_B and C_L·M²");
-    let judged = conclusions::judge_all(&findings);
-    let summary = summary::summary_json(&findings, &judged);
-    crate::output::finite("summary.json", &summary)?;
-    let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
-    write("summary.json", json.as_bytes())?;
-    write(
-        "index.html",
-        html::index_html(&sections, &judged).as_bytes(),
-    )?;
-    for (name, text) in html::DOCS {
-        write(name, text.as_bytes())?;
-    }
+    fill(&write)?;
     let list = written.borrow().to_json();
     dir.write(MANIFEST, list.as_bytes())
         .map_err(|e| write_error(&dir.path().join(MANIFEST), &e))?;
     dir.commit_if(may_replace).map_err(|e| match e {
         Refused::Not(why) => Failure::Io(IoError::new("will not replace", out, why)),
         Refused::Io(e) => Failure::Io(write_error(out, &e)),
+    })
+}
+
+/// A plate's two files, written.
+pub(super) fn write_plate(write: &Write<'_>, out: &Path, p: &Plate) -> Result<(), Failure> {
+    for (name, bytes) in p
+        .files()
+        .map_err(|m| IoError::new("cannot draw", &out.join(p.name()), m))?
+    {
+        write(&name, &bytes)?;
+    }
+    Ok(())
+}
+
+pub fn run(args: &Args) -> Result<(), Failure> {
+    if let Some(config) = &args.config {
+        return super::report_design::run(args, config);
+    }
+    super::report_design::refuse_design_options(args)?;
+    let out = Path::new(&args.out);
+    let bar = progress_bar(SECTIONS.len() + 3);
+    let mut done = None;
+    write_report(out, |write| {
+        bar.set_message("the 45° and 60° deltas across Mach number");
+        let study = Study::new();
+        bar.inc(1);
+        let mut sections = Vec::new();
+        for section in &SECTIONS {
+            bar.set_message(section.title);
+            let plates = (section.plates)(&study);
+            for p in &plates {
+                write_plate(write, out, p)?;
+            }
+            sections.push((section.title, plates));
+            bar.inc(1);
+        }
+        bar.set_message("summary: intervals and the largest μ₁ (bisection)");
+        let findings = Findings::new(study);
+        findings.max_mu1(0);
+        findings.max_mu1(1);
+        bar.inc(1);
+        bar.set_message("conclusions, swept over i_B and C_L·M²");
+        let judged = conclusions::judge_all(&findings);
+        let summary = summary::summary_json(&findings, &judged);
+        crate::output::finite("summary.json", &summary)?;
+        let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
+        write("summary.json", json.as_bytes())?;
+        write(
+            "index.html",
+            html::index_html(&sections, &judged).as_bytes(),
+        )?;
+        for (name, text) in html::DOCS {
+            write(name, text.as_bytes())?;
+        }
+        let figures: usize = sections.iter().map(|(_, p)| p.len()).sum();
+        done = Some((figures, terminal_summary(&findings, &judged)));
+        Ok(())
     })?;
     bar.finish_and_clear();
-    let figures: usize = sections.iter().map(|(_, p)| p.len()).sum();
+    let (figures, summary) = done.unwrap_or_default();
     let text = format!(
-        "wrote {figures} figures (SVG and CSV), summary.json and index.html to {}\n{}",
+        "wrote {figures} figures (SVG and CSV), summary.json and index.html to {}\n{summary}",
         out.display(),
-        terminal_summary(&findings, &judged)
     );
     crate::output::print(&text)
 }

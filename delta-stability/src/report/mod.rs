@@ -15,6 +15,7 @@
 pub mod coefficients;
 pub mod conclusions;
 pub mod damping;
+pub mod design;
 pub mod html;
 pub mod lifting_surface;
 pub mod manifest;
@@ -34,6 +35,8 @@ pub use study::Study;
 pub struct Plate {
     pub figure: Figure,
     pub caption: String,
+    /// The files' name, when not the note's `figNN` ([`Plate::named`]).
+    pub file: Option<String>,
 }
 
 impl Plate {
@@ -41,11 +44,24 @@ impl Plate {
         Plate {
             figure,
             caption: caption.into(),
+            file: None,
         }
     }
 
-    /// The file name without extension: `fig02`, `fig33`.
+    /// A figure written as `file.svg` and `file.csv` (a design report's
+    /// `cycles-to-half`, say).
+    pub fn named(file: &str, figure: Figure, caption: impl Into<String>) -> Plate {
+        Plate {
+            file: Some(file.to_string()),
+            ..Plate::new(figure, caption)
+        }
+    }
+
+    /// The file name without extension: `fig02`, `fig33` (or its own).
     pub fn name(&self) -> String {
+        if let Some(f) = &self.file {
+            return f.clone();
+        }
         format!("fig{:0>2}", self.figure.id)
     }
 

@@ -53,7 +53,7 @@ fn regimes(deg: f64) -> Vec<faired::Regime> {
 }
 
 /// The bands' label, the faired model's own words.
-fn faired_label() -> &'static str {
+pub(crate) fn faired_label() -> &'static str {
     regimes(45.0)
         .iter()
         .find(|r| r.kind == RegimeKind::Faired)
@@ -61,7 +61,7 @@ fn faired_label() -> &'static str {
 }
 
 /// The damping derivatives' joins for the wings of sweeps `sweeps`.
-fn damping_joins(sweeps: &[f64]) -> Vec<(f64, f64)> {
+pub(crate) fn damping_joins(sweeps: &[f64]) -> Vec<(f64, f64)> {
     sweeps
         .iter()
         .flat_map(|&deg| regimes(deg))
@@ -71,7 +71,9 @@ fn damping_joins(sweeps: &[f64]) -> Vec<(f64, f64)> {
 }
 
 /// The coefficients' joins, as the results had them.
-fn coefficient_joins<'a>(results: impl Iterator<Item = &'a CaseResult>) -> Vec<(f64, f64)> {
+pub(crate) fn coefficient_joins<'a>(
+    results: impl Iterator<Item = &'a CaseResult>,
+) -> Vec<(f64, f64)> {
     let methods = (defaults::SUBSONIC_LIMIT, defaults::SUPERSONIC_LIMIT);
     let mut out = Vec::new();
     for r in results {
@@ -94,7 +96,7 @@ fn coefficient_joins<'a>(results: impl Iterator<Item = &'a CaseResult>) -> Vec<(
 
 /// The union of intervals, as disjoint intervals in order (touching ones
 /// joined).
-fn merged(mut joins: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+pub(crate) fn merged(mut joins: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
     joins.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut out: Vec<(f64, f64)> = Vec::new();
     for (a, b) in joins {
@@ -118,15 +120,7 @@ pub fn faired(mut fig: Figure, study: &Study, sweeps: &[f64], basis: Basis) -> F
         joins.extend(damping_joins(sweeps));
     }
     let bands = merged(joins);
-    let label = faired_label();
-    fig.bands = bands
-        .iter()
-        .map(|&(from, to)| Band {
-            from,
-            to,
-            label: label.into(),
-        })
-        .collect();
+    fig = shaded(fig, &bands);
     if let (Some(first), Some(last)) = (bands.first(), bands.last()) {
         let region = |from, to, label: &str| Band {
             from,
@@ -143,6 +137,21 @@ pub fn faired(mut fig: Figure, study: &Study, sweeps: &[f64], basis: Basis) -> F
             .collect();
     }
     sonic_edges(fig, sweeps)
+}
+
+/// `fig` with the bands `bands` shaded, where its curves are faired
+/// between theories.
+pub fn shaded(mut fig: Figure, bands: &[(f64, f64)]) -> Figure {
+    let label = faired_label();
+    fig.bands = bands
+        .iter()
+        .map(|&(from, to)| Band {
+            from,
+            to,
+            label: label.into(),
+        })
+        .collect();
+    fig
 }
 
 /// `fig` with a dashed line where the leading edge of each wing of
