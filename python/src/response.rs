@@ -72,6 +72,8 @@ pub fn response<'py>(
             until,
             steps,
             m0,
+            x0: 0.0,
+            z0: 0.0,
             w0,
             neglect_zq_zwdot,
             neglect_u,

@@ -22,6 +22,25 @@
 //! z₀ = C_Zδ·δ and m₀ = (μ₁/i_B)·C_mδ·δ: the angular acceleration in units
 //! of τ is M·τ²/B = C_m·½ρV²Sc̄·τ²/(i_B·mc̄²) = (μ₁/i_B)·C_m, and the
 //! vertical one Z·τ/(mV) = C_Z.
+//!
+//! # The outputs: γ and n_z at the c.g.
+//! Beside the states the model gives y = C x + D δ ([`LinearModel::outputs`],
+//! [`OUTPUTS`]): the states themselves, the flight-path angle γ = θ − α
+//! (level flight, stability axes: Etkin & Reid, *Dynamics of flight*, 3rd
+//! ed., §4.2–4.3; Stevens & Lewis, *Aircraft control and simulation*, 2nd
+//! ed., §2.5 and §3.8), and the incremental normal load factor at the c.g.
+//! n_z = −a_z/g, positive up. In body (here stability) axes the c.g.'s
+//! acceleration along z is a_z = ẇ − U₀q (U₀ = V; no gravity term changes
+//! to first order in level flight, θ₀ = 0), so with α = w/V
+//!
+//! n_z = (V/g)(q − α̇) = (V/g)·γ̇.
+//!
+//! α̇ is row 2 of the state equation, α̇ = A₂·x + B₂δ, so the n_z row is
+//! C = (V/g)(e_q − A₂), D = −(V/g)B₂ (e_q the unit row of q): the output is
+//! exact, not the short-period approximation n_z ≈ (n/α)·α. In units of τ
+//! (dγ/dt̂ = τγ̇) the factor is V/(gτ) = ½ρV²S/W = 1/C_L (eq 24), so that
+//! n_z = (q̂ − Dŵ)/C_L; in seconds it is V/g = τ/C_L
+//! ([`LinearModel::load_factor`]).
 
 use crate::Derivatives;
 use crate::response::{ResponseError, Simplifications, StateSpace};
@@ -52,6 +71,10 @@ impl TimeUnit {
 /// The states of a [`LinearModel`], in order.
 pub const STATES: [&str; 4] = ["u/V", "alpha", "q", "theta"];
 
+/// The outputs of [`LinearModel::outputs`], in order: the states, γ and
+/// n_z (see the module's documentation).
+pub const OUTPUTS: [&str; 6] = ["u/V", "alpha", "q", "theta", "gamma", "n_z"];
+
 /// The control derivatives of one control δ (rad), coefficients per
 /// radian: C_Xδ and C_Zδ on ½ρV²S, C_mδ on ½ρV²Sc̄ (see the module's
 /// documentation).
@@ -64,6 +87,14 @@ pub struct Control {
     pub c_m: f64,
 }
 
+impl Control {
+    /// The step of eqs (2)'s forcing (x₀, z₀, m₀) per radian of δ:
+    /// (C_Xδ, C_Zδ, (μ₁/i_B)·C_mδ) (see the module's documentation).
+    pub fn forcing(&self, d: &Derivatives) -> [f64; 3] {
+        [self.c_x, self.c_z, d.mu1 / d.i_b * self.c_m]
+    }
+}
+
 /// ẋ = A x + B δ with x = (u/V, α, q, θ) ([`STATES`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LinearModel {
@@ -73,6 +104,22 @@ pub struct LinearModel {
     /// The control's name, when there is one.
     pub input: Option<String>,
     pub time: TimeUnit,
+    /// n_z per unit rate of γ in the model's unit of time: 1/C_L per τ,
+    /// V/g (s) in seconds; `None` where it is not known (C_L ≤ 0, or a
+    /// dimensional set without g). See the module's documentation.
+    pub load_factor: Option<f64>,
+}
+
+/// The output equation y = C x + D δ of [`OUTPUTS`] (n_z's row absent
+/// when [`LinearModel::load_factor`] is not known).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outputs {
+    /// The outputs' names, a prefix of [`OUTPUTS`] (5 or 6).
+    pub names: Vec<&'static str>,
+    /// C's rows.
+    pub c: Vec<[f64; 4]>,
+    /// D's column (zero without a control).
+    pub d: Vec<f64>,
 }
 
 impl LinearModel {
@@ -82,7 +129,7 @@ impl LinearModel {
         let ss = StateSpace::new(d, Simplifications::default())?;
         let a = Matrix4::from_fn(|i, j| ss.a[(i, j)]);
         let b = control.map(|c| {
-            let forcing = [c.c_x, c.c_z, d.mu1 / d.i_b * c.c_m];
+            let forcing = c.forcing(d);
             Vector4::from_fn(|i, _| (0..3).map(|k| ss.b[(i, k)] * forcing[k]).sum())
         });
         let model = LinearModel {
@@ -90,6 +137,7 @@ impl LinearModel {
             b,
             input: control.map(|c| c.name.clone()),
             time: TimeUnit::Tau,
+            load_factor: (d.c_l > 0.0).then(|| 1.0 / d.c_l),
         };
         if model.is_finite() {
             Ok(model)
@@ -100,7 +148,8 @@ impl LinearModel {
 
     /// A model in seconds from the dimensional matrices of states
     /// (u, w, q, θ) — u, w in m/s or ft/s — and the reference speed V in
-    /// the same units (see the module's documentation).
+    /// the same units (see the module's documentation); n_z's factor V/g
+    /// is not known until [`LinearModel::with_gravity`] gives g.
     pub fn of_dimensional(
         a: Matrix4<f64>,
         b: Option<Vector4<f64>>,
@@ -113,6 +162,41 @@ impl LinearModel {
             b: b.map(|b| Vector4::from_fn(|i, _| b[i] / s[i])),
             input,
             time: TimeUnit::Seconds,
+            load_factor: None,
+        }
+    }
+
+    /// A model in seconds with n_z's factor V/g from the trim speed and
+    /// g (same length unit); a model in τ, or a non-positive g, as it is.
+    pub fn with_gravity(mut self, speed: f64, g: f64) -> LinearModel {
+        let k = speed / g;
+        if self.time == TimeUnit::Seconds && g > 0.0 && k.is_finite() {
+            self.load_factor = Some(k);
+        }
+        self
+    }
+
+    /// The output equation y = C x + D δ: the states, γ = θ − α and, when
+    /// the factor is known, n_z = k(q − α̇) with α̇ = A₂x + B₂δ (see the
+    /// module's documentation).
+    pub fn outputs(&self) -> Outputs {
+        let row = |i: usize| [0, 1, 2, 3].map(|j| self.a[(i, j)]);
+        let b_alpha = self.b.map_or(0.0, |b| b[1]);
+        let unit =
+            |k: usize| -> [f64; 4] { std::array::from_fn(|j| if j == k { 1.0 } else { 0.0 }) };
+        let mut c: Vec<[f64; 4]> = (0..4).map(unit).collect();
+        c.push([0.0, -1.0, 0.0, 1.0]);
+        let mut d = vec![0.0; 5];
+        if let Some(k) = self.load_factor {
+            let alpha_dot = row(1);
+            c.push([0, 1, 2, 3].map(|j| k * (unit(2)[j] - alpha_dot[j])));
+            // -(k·B₂) with 0 for no control, never -0
+            d.push(if b_alpha == 0.0 { 0.0 } else { -k * b_alpha });
+        }
+        Outputs {
+            names: OUTPUTS[..c.len()].to_vec(),
+            c,
+            d,
         }
     }
 
@@ -128,6 +212,7 @@ impl LinearModel {
             b: self.b.map(|b| Vector4::from_fn(|i, _| d[i] * b[i] / tau)),
             input: self.input.clone(),
             time: TimeUnit::Seconds,
+            load_factor: self.load_factor.map(|k| k * tau),
         }
     }
 
@@ -140,11 +225,12 @@ impl LinearModel {
         ["1", "rad", q, "rad"]
     }
 
-    /// Whether every entry is finite.
+    /// Whether every entry is finite (n_z's factor too).
     pub fn is_finite(&self) -> bool {
         self.a
             .iter()
             .chain(self.b.iter().flatten())
+            .chain(self.load_factor.iter())
             .all(|v| v.is_finite())
     }
 

@@ -215,3 +215,14 @@ mod tests {
         assert!(e.to_string().contains("bad.toml:2:1: not UTF-8"), "{e}");
     }
 }
+
+/// The FNV-1a 64-bit hash of `bytes` (enough to tell one file's contents
+/// from another's; it guards against mistakes, not against an adversary).
+pub fn fnv1a64(bytes: &[u8]) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
+}

@@ -22,6 +22,7 @@
 //! in the report's stability axes. Without it the file has A only (`B` is
 //! `null`, and the scripts use a zero input column named `none`).
 
+use crate::csv::exact as lit;
 use crate::diag::InputError;
 use num_complex::Complex64;
 use serde::Serialize;
@@ -69,11 +70,6 @@ struct ExportJson<'a> {
 /// A's rows.
 fn rows(m: &LinearModel) -> [[f64; 4]; 4] {
     std::array::from_fn(|i| std::array::from_fn(|j| m.a[(i, j)]))
-}
-
-/// The number as Python and MATLAB read it back exactly.
-fn lit(x: f64) -> String {
-    format!("{x:?}")
 }
 
 fn describe(e: &Export<'_>) -> String {
