@@ -304,4 +304,112 @@ mod tests {
         );
         assert!(((e1 - e2) / e1).abs() < 1e-12);
     }
+
+    /// The step (x₀, z₀, m₀) of δ rad of `c` on `d`, as a response input.
+    fn step(c: &Control, d: &Derivatives, delta: f64) -> crate::response::Input {
+        let [x0, z0, m0] = c.forcing(d).map(|f| f * delta);
+        crate::response::Input::Step { x0, z0, m0 }
+    }
+
+    #[test]
+    fn n_z_is_the_rate_of_gamma_over_c_l_and_the_output_row_gives_it() {
+        use crate::response::{Request, computed};
+        // an independent route: n_z = (V/g)·dγ/dt = (1/C_L)·dγ/dt̂ with
+        // γ = θ − ŵ differenced from the simulated response (central
+        // differences, h = 1e-4 τ: error h²γ‴/6 ≈ 1e-8 here)
+        let d = tailless_delta_45_coupled();
+        let c = Control {
+            name: "elevon".into(),
+            c_x: 0.0,
+            c_z: -0.5,
+            c_m: -0.3,
+        };
+        let delta = 0.01;
+        let h = 1e-4;
+        let request = Request {
+            input: step(&c, &d, delta),
+            until: 4.0,
+            steps: 40_000,
+            simplifications: Default::default(),
+        };
+        let r = computed(&d, &request).unwrap();
+        let n_z = r.n_z.as_ref().expect("C_L > 0");
+        let gamma: Vec<f64> = r.samples.iter().map(|s| s.theta - s.w).collect();
+        let m = LinearModel::of_report(&d, Some(&c)).unwrap();
+        let o = m.outputs();
+        assert_eq!(o.names, OUTPUTS);
+        let peak = n_z.iter().fold(0.0_f64, |a, n| a.max(n.abs()));
+        // (from k = 2: γ̇ jumps at t̂ = 0, where the step is applied)
+        for k in (2..40_000).step_by(997) {
+            let fd = (gamma[k + 1] - gamma[k - 1]) / (2.0 * h) / d.c_l;
+            assert!(
+                (n_z[k] - fd).abs() < 1e-5 * peak,
+                "t̂ = {}: {} vs {fd}",
+                r.samples[k].t,
+                n_z[k]
+            );
+            // y = C x + D δ, row n_z, on the same state
+            let s = &r.samples[k];
+            let x = [s.u, s.w, s.q, s.theta];
+            let y: f64 = (0..4).map(|j| o.c[5][j] * x[j]).sum::<f64>() + o.d[5] * delta;
+            assert!((y - n_z[k]).abs() < 1e-12 * peak, "{y} vs {}", n_z[k]);
+            let g: f64 = (0..4).map(|j| o.c[4][j] * x[j]).sum();
+            assert!((g - gamma[k]).abs() < 1e-15);
+        }
+        // at t̂ = 0⁺ only the control's lift acts: n_z = −C_Zδ·δ/(A·C_L)
+        let a_mass = 1.0 - d.z_wdot / d.mu1;
+        let n0 = -c.c_z * delta / (a_mass * d.c_l);
+        assert!((n_z[0] - n0).abs() < 1e-14, "{} vs {n0}", n_z[0]);
+        // the same in seconds: V/g = τ/C_L and q in rad/s
+        let tau = 2.5;
+        let ms = m.in_seconds(tau);
+        assert_eq!(ms.load_factor, Some(tau / d.c_l));
+        let os = ms.outputs();
+        let s = &r.samples[1234];
+        let y: f64 = os.c[5][0] * s.u + os.c[5][1] * s.w + os.c[5][2] * s.q / tau + os.d[5] * delta;
+        assert!((y - n_z[1234]).abs() < 1e-12 * peak);
+    }
+
+    #[test]
+    fn steady_n_z_per_elevator_is_the_manoeuvre_value() {
+        use crate::response::{Request, Simplifications, computed};
+        // u held (the short period's two degrees of freedom), z_q = 0 and
+        // no control lift: the steady pull-up has Dŵ = Dq̂ = 0, and the two
+        // equations z_w ŵ + q̂ = 0, (μ₁/i_B)m_w ŵ + (m_q/i_B)q̂ + m₀ = 0 give
+        // q̂ = C_mδ·δ/H_m, with a = −z_w and the stick-fixed manoeuvre
+        // margin H_m = −m_w/a − m_q/μ₁ (§9; crate::criteria): so
+        // n_z/δ = q̂/(C_L·δ) = C_mδ/(C_L·H_m).
+        let mut d = tailless_delta_45_coupled();
+        d.z_q = 0.0;
+        let c = Control {
+            name: "elevon".into(),
+            c_x: 0.0,
+            c_z: 0.0,
+            c_m: -0.3,
+        };
+        let delta = 0.02;
+        let a = -d.z_w;
+        let h_m = -d.m_w / a - d.m_q / d.mu1;
+        assert!(h_m > 0.0);
+        let expect = c.c_m * delta / (d.c_l * h_m);
+        let request = Request {
+            input: step(&c, &d, delta),
+            until: 200.0,
+            steps: 2000,
+            simplifications: Simplifications {
+                neglect_u: true,
+                ..Default::default()
+            },
+        };
+        let r = computed(&d, &request).unwrap();
+        let n_z = *r.n_z.unwrap().last().unwrap();
+        assert!(((n_z - expect) / expect).abs() < 1e-9, "{n_z} vs {expect}");
+        // with û free the phugoid settles into level flight again: the
+        // steady state of ẋ = A x + B δ has q = α̇ = 0, so n_z = 0
+        let m = LinearModel::of_report(&d, Some(&c)).unwrap();
+        let x = -m.a.try_inverse().unwrap() * m.b.unwrap() * delta;
+        let o = m.outputs();
+        let n: f64 = (0..4).map(|j| o.c[5][j] * x[j]).sum::<f64>() + o.d[5] * delta;
+        assert!(n.abs() < 1e-12 * expect.abs(), "{n}");
+    }
 }
