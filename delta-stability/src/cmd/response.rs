@@ -32,10 +32,10 @@ pub struct Args {
     #[arg(long, value_enum, default_value = "step")]
     pub input: ResponseInput,
     /// End time, in units of τ (positive).
-    #[arg(long, value_parser = crate::args::positive, required_unless_present = "until_s", conflicts_with = "until_s")]
+    #[arg(long, value_parser = crate::args::positive, allow_negative_numbers = true, required_unless_present = "until_s", conflicts_with = "until_s")]
     pub until: Option<f64>,
     /// End time in seconds (positive): needs τ, from a physical flight condition (a config's, or [dimensional]).
-    #[arg(long = "until-s", value_name = "SECONDS", value_parser = crate::args::positive)]
+    #[arg(long = "until-s", value_name = "SECONDS", value_parser = crate::args::positive, allow_negative_numbers = true)]
     pub until_s: Option<f64>,
     /// A step of the control of the file's [control] table by this many degrees (finite), from rest: its force and moment derivatives, instead of --m0.
     #[arg(long = "elevator-deg", visible_alias = "elevon-deg", value_name = "DEG", value_parser = crate::args::finite, allow_negative_numbers = true, conflicts_with = "m0")]
@@ -44,10 +44,10 @@ pub struct Args {
     #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=stability_core::response::MAX_STEPS as i64))]
     pub steps: u32,
     /// Size of the moment step m₀ (eqs 2 units; finite).
-    #[arg(long, default_value_t = 1.0, value_parser = crate::args::finite)]
+    #[arg(long, default_value_t = 1.0, value_parser = crate::args::finite, allow_negative_numbers = true)]
     pub m0: f64,
     /// Initial ŵ = w/V for `--input initial` (finite).
-    #[arg(long, default_value_t = 0.01, value_parser = crate::args::finite)]
+    #[arg(long, default_value_t = 0.01, value_parser = crate::args::finite, allow_negative_numbers = true)]
     pub w0: f64,
     /// Set z_q = z_ẇ = 0 (the report's Fig 38).
     #[arg(long)]
