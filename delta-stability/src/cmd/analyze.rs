@@ -41,7 +41,7 @@ pub struct Args {
     pub json: bool,
     #[command(flatten)]
     pub engineering: EngineeringArgs,
-    /// Write the design point as a derivative file (report notation, with the physical flight condition as [dimensional] and the config's [control]; every number exact) that quartic, response, sensitivity and convert read.
+    /// Write the design point as a derivative file (report notation, with the physical flight condition as `[dimensional]` and the config's `[control]`; every number exact) that quartic, response, sensitivity and convert read.
     #[arg(long, value_name = "OUT.toml")]
     pub write_derivatives: Option<String>,
 }

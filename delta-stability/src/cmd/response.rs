@@ -34,10 +34,10 @@ pub struct Args {
     /// End time, in units of τ (positive).
     #[arg(long, value_parser = crate::args::positive, allow_negative_numbers = true, required_unless_present = "until_s", conflicts_with = "until_s")]
     pub until: Option<f64>,
-    /// End time in seconds (positive): needs τ, from a physical flight condition (a config's, or [dimensional]).
+    /// End time in seconds (positive): needs τ, from a physical flight condition (a config's, or `[dimensional]`).
     #[arg(long = "until-s", value_name = "SECONDS", value_parser = crate::args::positive, allow_negative_numbers = true)]
     pub until_s: Option<f64>,
-    /// A step of the control of the file's [control] table by this many degrees (finite), from rest: its force and moment derivatives, instead of --m0.
+    /// A step of the control of the file's `[control]` table by this many degrees (finite), from rest: its force and moment derivatives, instead of --m0.
     #[arg(long = "elevator-deg", visible_alias = "elevon-deg", value_name = "DEG", value_parser = crate::args::finite, allow_negative_numbers = true, conflicts_with = "m0")]
     pub elevator_deg: Option<f64>,
     /// Number of intervals (1 to 10⁶).
