@@ -188,7 +188,7 @@ fn response_writes_csv_and_svg() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next(),
-        Some("t_hat,u_hat,w_hat,q_hat,theta,w_hat_eq45")
+        Some("t_hat,u_hat,w_hat,q_hat,theta,w_hat_eq45,gamma,n_z")
     );
     assert_eq!(lines.count(), 101);
     let svg = std::fs::read_to_string(&svg).unwrap();

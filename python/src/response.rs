@@ -22,7 +22,9 @@ use stability_io::response::{Disturbance, Spec, respond};
 /// û = 0 (two degrees of freedom). The derivative set is given as to
 /// `quartic()`. Returns a dict of numpy arrays named as the command line's
 /// CSV columns: t_hat, t_s (when τ is known), u_hat, w_hat (= the incidence
-/// change, rad), q_hat, theta (rad), w_hat_eq45 (step only). Raises
+/// change, rad), q_hat, theta (rad), w_hat_eq45 (step only), gamma
+/// (= θ − ŵ, rad) and n_z (the normal load factor at the c.g.,
+/// (q̂ − dŵ/dt̂)/C_L; where C_L > 0). Raises
 /// InputError with the command line's message (e.g. a response that
 /// overflows before `until`).
 #[pyfunction]
@@ -72,6 +74,8 @@ pub fn response<'py>(
             until,
             steps,
             m0,
+            x0: 0.0,
+            z0: 0.0,
             w0,
             neglect_zq_zwdot,
             neglect_u,
@@ -94,6 +98,10 @@ pub fn response<'py>(
         out.set_item("theta", column(|s| s.theta).into_pyarray(py))?;
         if let Some(w) = r.eq45 {
             out.set_item("w_hat_eq45", w.into_pyarray(py))?;
+        }
+        out.set_item("gamma", column(|s| s.theta - s.w).into_pyarray(py))?;
+        if let Some(n) = r.n_z {
+            out.set_item("n_z", n.into_pyarray(py))?;
         }
         Ok(out)
     })

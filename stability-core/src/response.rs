@@ -471,9 +471,39 @@ pub struct Request {
 pub struct Computed {
     /// The exact response, `steps + 1` samples from 0 to `until`.
     pub samples: Vec<Sample>,
-    /// For a step of m₀: eq (45)'s two-degree-of-freedom ŵ at each sample,
-    /// from eq (44) as printed with the same simplifications applied.
+    /// For a step of m₀ alone (no control force x₀, z₀): eq (45)'s
+    /// two-degree-of-freedom ŵ at each sample, from eq (44) as printed with
+    /// the same simplifications applied.
     pub eq45: Option<Vec<f64>>,
+    /// The incremental normal load factor at the c.g. at each sample,
+    /// n_z = (q̂ − Dŵ)/C_L ([`load_factor`]); `None` where C_L ≤ 0.
+    pub n_z: Option<Vec<f64>>,
+}
+
+/// The incremental normal load factor at the c.g., positive up, from q̂,
+/// Dŵ = dŵ/dt̂ and C_L: n_z = (V/g)(q − α̇) = (q̂ − Dŵ)/C_L, since
+/// V/(gτ) = ½ρV²S/W = 1/C_L in level flight (eq 24; the derivation is in
+/// [`crate::linear`]'s documentation).
+pub fn load_factor(q_hat: f64, w_hat_rate: f64, c_l: f64) -> f64 {
+    (q_hat - w_hat_rate) / c_l
+}
+
+impl StateSpace {
+    /// Dŵ at a sample of the response to `input` (the ŵ row of
+    /// ẋ = A x + B (x₀, z₀, m₀)).
+    pub fn w_rate(&self, input: Input, s: &Sample) -> f64 {
+        let Some(i) = self.index_of(State::W) else {
+            return 0.0;
+        };
+        let v = match input {
+            Input::Step { x0, z0, m0 } => [x0, z0, m0],
+            Input::Initial { .. } => [0.0; 3],
+        };
+        let states: f64 = (0..self.states.len())
+            .map(|j| self.a[(i, j)] * s.get(self.states[j]))
+            .sum();
+        states + (0..3).map(|k| self.b[(i, k)] * v[k]).sum::<f64>()
+    }
 }
 
 /// Why a whole response cannot be had.
@@ -512,10 +542,24 @@ pub fn computed(d: &Derivatives, request: &Request) -> Result<Computed, Computed
             stop,
         });
     }
-    let Input::Step { m0, .. } = request.input else {
+    let rate = |s: &Sample| ss.w_rate(request.input, s);
+    let n_z: Vec<f64> = r
+        .samples
+        .iter()
+        .map(|s| load_factor(s.q, rate(s), d.c_l))
+        .collect();
+    // undefined at C_L ≤ 0, or beyond f64 where C_L is tiny
+    let n_z = (d.c_l > 0.0 && n_z.iter().all(|n| n.is_finite())).then_some(n_z);
+    let Input::Step {
+        x0: 0.0,
+        z0: 0.0,
+        m0,
+    } = request.input
+    else {
         return Ok(Computed {
             samples: r.samples,
             eq45: None,
+            n_z,
         });
     };
     let mut d = *d;
@@ -535,6 +579,7 @@ pub fn computed(d: &Derivatives, request: &Request) -> Result<Computed, Computed
     Ok(Computed {
         samples: r.samples,
         eq45: Some(eq45),
+        n_z,
     })
 }
 

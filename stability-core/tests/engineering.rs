@@ -211,6 +211,7 @@ fn a_mode_without_theta_takes_its_largest_component() {
         b: None,
         input: None,
         time: TimeUnit::Seconds,
+        load_factor: None,
     };
     let v = eigenvector(&a, Complex64::new(-0.5, 0.0)).unwrap();
     assert!(v[1].norm() < 1e-15 && v[3].norm() < 1e-15);
@@ -230,6 +231,7 @@ fn model_roots(a: &Matrix4<f64>) -> [Complex64; 4] {
         b: None,
         input: None,
         time: TimeUnit::Seconds,
+        load_factor: None,
     }
     .eigenvalues()
 }

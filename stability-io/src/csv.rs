@@ -6,6 +6,13 @@ use stability_core::display::round_to;
 /// The significant digits of a CSV number.
 pub const CSV_DIGITS: usize = 12;
 
+/// The number as TOML, Python and MATLAB read it back to the same f64:
+/// Rust's shortest round-trip form (`0.1`, `-3.0`, `1e-7`); for finite
+/// numbers (`NaN` and `inf` are not numbers to TOML or MATLAB).
+pub fn exact(x: f64) -> String {
+    format!("{x:?}")
+}
+
 /// A CSV number: rounded to [`CSV_DIGITS`] significant digits, then written
 /// as the shortest decimal that reads back as that rounded value — plain
 /// (`0.57`, `-123456.789012`) from 1e-5 to 1e16 in magnitude, in exponent

@@ -3,14 +3,28 @@
 //! engineer's outputs — every number finite, or the error at the field it
 //! arises from. What `analyze` prints and the Python package's `analyze()`
 //! returns.
+//!
+//! The design point is also a derivative file ([`derivative_text`]): its
+//! fifteen quartic inputs in the report's notation (§3), the physical
+//! flight condition as `[dimensional]` and the config's `[control]`, every
+//! number in the shortest form that reads back to the same f64, so that
+//! `quartic`, `response`, `sensitivity` and `convert` read the very set
+//! `analyze` analysed ([`derivative_file`] is that reading).
 
 use crate::Failure;
 use crate::config::Config;
+use crate::csv::exact as lit;
 use crate::input::analysis::OVERFLOW;
+use crate::input::rows::{C_L, DERIVATIVE_ROWS, I_B, MU};
+use crate::input::{DerivativeFile, parse};
 use stability_core::cap::AirplaneClass;
 use stability_core::case::{CaseResult, evaluate};
+use stability_core::display::sig;
 use stability_core::engineering::Engineering;
 use stability_core::flight::{FlightPoint, PhysicalFlight};
+use stability_core::linear::Control;
+use stability_core::notation::Notation;
+use std::fmt::Write;
 
 /// A design point's results: the library's, and the engineer's.
 pub struct Results {
@@ -18,6 +32,8 @@ pub struct Results {
     /// The physical flight condition at the point's Mach number.
     pub flight: Option<(PhysicalFlight, FlightPoint)>,
     pub engineering: Engineering,
+    /// The config's `[control]`, when it has one.
+    pub control: Option<Control>,
 }
 
 impl Results {
@@ -55,6 +71,7 @@ pub fn results(cfg: &Config, class: AirplaneClass) -> Result<Results, Failure> {
             result,
             flight,
             engineering,
+            control,
         }),
         _ => Err(cfg.error_at("[flight]", OVERFLOW).into()),
     }
@@ -72,4 +89,118 @@ pub fn at_mach(cfg: &Config, mach: f64, class: AirplaneClass) -> Result<Results,
     };
     crate::config::apply(&mut cfg, &mach)?;
     results(&cfg, class)
+}
+
+/// A line of a comment: control characters (a newline in a path) shown
+/// as spaces, so that the comment cannot end early.
+fn comment(s: &str) -> String {
+    s.chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect()
+}
+
+/// The design point of `cfg` as a derivative file's text (report
+/// notation), with a comment header naming the config (its path, size and
+/// FNV-1a hash), the design point and `made_by` (the command that wrote
+/// it). See the module's documentation.
+pub fn derivative_text(cfg: &Config, res: &Results, made_by: &str) -> String {
+    let (c, r, text) = (&cfg.case, &res.result, cfg.text());
+    let mut s = String::new();
+    let header = [
+        format!(
+            "The design point of {} as a derivative file (report notation, §3).",
+            cfg.path
+        ),
+        format!(
+            "Config: {} bytes, FNV-1a {:016x}; M = {}, h = {}, damping {}, dC_L/dalpha = {}.",
+            text.len(),
+            crate::files::fnv1a64(text.as_bytes()),
+            lit(c.mach),
+            lit(c.h),
+            r.damping.theory.name(),
+            sig(r.coefficients.lift_slope.value, 6),
+        ),
+        format!(
+            "Written by `{}` (delta-stability {}).",
+            made_by,
+            crate::VERSION
+        ),
+        "Every number reads back to the value analyze used: quartic, response, sensitivity and convert read it.".into(),
+    ];
+    for line in header {
+        let _ = writeln!(s, "# {}", comment(&line));
+    }
+    s.push_str("notation = \"report\"\n\n[derivatives]\n");
+    let d = &r.derivatives;
+    let values = [
+        d.x_u, d.x_w, d.x_wdot, d.x_q, d.z_u, d.z_w, d.z_wdot, d.z_q, d.m_u, d.m_w, d.m_wdot, d.m_q,
+    ];
+    for (name, v) in DERIVATIVE_ROWS.iter().zip(values) {
+        let _ = writeln!(s, "{name} = {}", lit(v));
+    }
+    s.push_str("\n[flight]\n");
+    for (row, v) in [(C_L, d.c_l), (MU, d.mu1), (I_B, d.i_b)] {
+        let _ = writeln!(s, "{} = {}", Notation::REPORT.name_of(row), lit(v));
+    }
+    if let Some((f, p)) = &res.flight {
+        let _ = writeln!(
+            s,
+            "\n[dimensional]      # the physical flight condition at M = {} (SI: V = M·a)",
+            lit(c.mach)
+        );
+        for (name, v) in [
+            ("V", p.speed),
+            ("rho", f.density),
+            ("S", f.area),
+            ("chord", f.chord),
+            ("mass", f.mass),
+            ("I_y", f.pitch_inertia),
+        ] {
+            let _ = writeln!(s, "{name} = {}", lit(v));
+        }
+    }
+    if let Some(k) = &res.control {
+        let _ = writeln!(s, "\n[control]          # the config's, per radian");
+        let _ = writeln!(s, "name = \"{}\"", k.name);
+        for (name, v) in [
+            ("C_xdelta", k.c_x),
+            ("C_zdelta", k.c_z),
+            ("C_mdelta", k.c_m),
+        ] {
+            let _ = writeln!(s, "{name} = {}", lit(v));
+        }
+    }
+    s
+}
+
+/// The design point of `cfg` as the derivative file [`derivative_text`]
+/// writes, read back by the derivative files' own reader, under the
+/// config's path (an error about a value names the config as a whole: the
+/// values are computed, not written in it).
+pub fn derivative_file(cfg: &Config, res: &Results) -> Result<DerivativeFile, Failure> {
+    let text = derivative_text(cfg, res, "delta-stability");
+    let mut file = parse(&cfg.path, &text)?;
+    file.origins.iter_mut().for_each(|o| *o = None);
+    Ok(file)
+}
+
+/// What `response` and `sensitivity` read: a derivative file with its
+/// `[control]`, or a config's design point as one ([`derivative_file`],
+/// the config's warnings among the file's).
+pub fn read_set(
+    path: &str,
+    class: AirplaneClass,
+) -> Result<(DerivativeFile, Option<Control>), Failure> {
+    let text = crate::files::read_input(std::path::Path::new(path))?;
+    if !crate::config::is_config(&text) {
+        let file = parse(path, &text)?;
+        let control = crate::control::read_control(path, &text)?;
+        return Ok((file, control));
+    }
+    let cfg = crate::config::parse(path, &text)?;
+    let res = results(&cfg, class)?;
+    let mut file = derivative_file(&cfg, &res)?;
+    file.warnings
+        .splice(0..0, res.result.warnings.iter().map(|w| w.to_string()));
+    Ok((file, res.control))
 }

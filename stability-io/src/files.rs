@@ -162,6 +162,17 @@ pub fn write_error(path: &Path, e: &std::io::Error) -> IoError {
     IoError::new("cannot write", path, reason(e))
 }
 
+/// The FNV-1a 64-bit hash of `bytes` (enough to tell one file's contents
+/// from another's; it guards against mistakes, not against an adversary).
+pub fn fnv1a64(bytes: &[u8]) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -8,6 +8,7 @@ use crate::csv::number;
 use crate::diag::InputError;
 use crate::input::{DerivativeFile, rows};
 use stability_core::display::Num;
+use stability_core::linear::Control;
 use stability_core::response::{
     Computed, ComputedError, Input, Request, ResponseError, Simplifications, computed,
 };
@@ -50,6 +51,10 @@ pub struct Spec {
     pub steps: usize,
     /// The size of the moment step (eqs 2 units).
     pub m0: f64,
+    /// The forces of the step, x₀ and z₀ (eqs 2 units; 0 for the report's
+    /// moment step): a control deflection's ([`control_step`]).
+    pub x0: f64,
+    pub z0: f64,
     /// The initial ŵ of `Initial`.
     pub w0: f64,
     pub neglect_zq_zwdot: bool,
@@ -61,8 +66,8 @@ impl Spec {
     pub fn request(&self) -> Request {
         let input = match self.input {
             Disturbance::Step => Input::Step {
-                x0: 0.0,
-                z0: 0.0,
+                x0: self.x0,
+                z0: self.z0,
                 m0: self.m0,
             },
             Disturbance::Initial => Input::Initial {
@@ -82,6 +87,14 @@ impl Spec {
             },
         }
     }
+}
+
+/// The step (x₀, z₀, m₀) of a deflection of `degrees` of the file's
+/// `[control]` ([`Control::forcing`]).
+pub fn control_step(file: &DerivativeFile, control: &Control, degrees: f64) -> [f64; 3] {
+    control
+        .forcing(&file.derivatives)
+        .map(|f| f * degrees.to_radians())
 }
 
 /// The response of `file`'s set over the whole span asked for, or why it
@@ -108,14 +121,24 @@ pub fn respond(file: &DerivativeFile, spec: &Spec) -> Result<Computed, InputErro
     })
 }
 
-/// The CSV's columns: t̂, t in seconds when τ is known, the states, and
-/// eq (45)'s ŵ (empty for an initial disturbance).
+/// The CSV's columns: t̂, t in seconds when τ is known, the states,
+/// eq (45)'s ŵ (empty but for a step of m₀ alone), the flight-path angle
+/// γ = θ − ŵ (rad) and the normal load factor at the c.g. n_z (empty where
+/// C_L ≤ 0; [`stability_core::response::load_factor`]).
 pub fn columns(tau: Option<f64>) -> Vec<&'static str> {
     let mut c = vec!["t_hat"];
     if tau.is_some() {
         c.push("t_s");
     }
-    c.extend(["u_hat", "w_hat", "q_hat", "theta", "w_hat_eq45"]);
+    c.extend([
+        "u_hat",
+        "w_hat",
+        "q_hat",
+        "theta",
+        "w_hat_eq45",
+        "gamma",
+        "n_z",
+    ]);
     c
 }
 
@@ -123,20 +146,22 @@ pub fn columns(tau: Option<f64>) -> Vec<&'static str> {
 pub fn csv(r: &Computed, tau: Option<f64>) -> String {
     let mut csv = columns(tau).join(",");
     csv.push('\n');
+    let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().map(|v| number(v[k]));
     for (k, s) in r.samples.iter().enumerate() {
         let _ = write!(csv, "{}", number(s.t));
         if let Some(t) = tau {
             let _ = write!(csv, ",{}", number(s.t * t));
         }
-        let eq45 = r.eq45.as_ref().map(|w| number(w[k]));
         let _ = writeln!(
             csv,
-            ",{},{},{},{},{}",
+            ",{},{},{},{},{},{},{}",
             number(s.u),
             number(s.w),
             number(s.q),
             number(s.theta),
-            eq45.unwrap_or_default()
+            at(&r.eq45, k).unwrap_or_default(),
+            number(s.theta - s.w),
+            at(&r.n_z, k).unwrap_or_default(),
         );
     }
     csv

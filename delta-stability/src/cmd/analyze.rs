@@ -1,4 +1,5 @@
-//! `delta-stability analyze CONFIG [--json] [--state-space OUT.json]`: a
+//! `delta-stability analyze CONFIG [--json] [--state-space OUT.json]
+//! [--write-derivatives OUT.toml]`: a
 //! planform at a flight condition → derivatives (§5–7) → quartic (§4) →
 //! modes → criteria (§8–9); with a physical flight condition
 //! ([`stability_io::config::physical`]), μ₁, i_B, C_L and τ from it and the modes
@@ -40,6 +41,9 @@ pub struct Args {
     pub json: bool,
     #[command(flatten)]
     pub engineering: EngineeringArgs,
+    /// Write the design point as a derivative file (report notation, with the physical flight condition as `[dimensional]` and the config's `[control]`; every number exact) that quartic, response, sensitivity and convert read.
+    #[arg(long, value_name = "OUT.toml")]
+    pub write_derivatives: Option<String>,
 }
 
 impl Args {
@@ -57,7 +61,10 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let (path, options) = (args.config.as_str(), &args.engineering);
     let (cfg, read) = stability_io::files::recording(|| overridden(path, &args.overrides()));
     let cfg = cfg?;
-    let outputs = crate::overwrite::state_space(options.state_space.as_deref())?;
+    let mut outputs = crate::overwrite::state_space(options.state_space.as_deref())?;
+    if let Some(out) = &args.write_derivatives {
+        outputs.push(crate::overwrite::Named::new("--write-derivatives", out));
+    }
     crate::overwrite::refuse("CONFIG", path, &read, &outputs)?;
     let res = results(&cfg, options.class.0)?;
     for w in &res.result.warnings {
@@ -79,11 +86,32 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             },
         )?;
     }
+    if let Some(out) = &args.write_derivatives {
+        write_derivatives(out, &cfg, &res)?;
+    }
     if args.json {
         crate::output::print_json(path, &view)
     } else {
         print(&page(&cfg, &res))
     }
+}
+
+/// `--write-derivatives OUT.toml`: the design point as a derivative file
+/// ([`stability_io::design_point::derivative_text`]), read back before it
+/// is written, so that what is written is what the reader takes.
+fn write_derivatives(out: &str, cfg: &config::Config, res: &Results) -> Result<(), Failure> {
+    let made_by: Vec<String> = std::env::args().skip(1).collect();
+    let made_by = format!("delta-stability {}", made_by.join(" "));
+    let text = stability_io::design_point::derivative_text(cfg, res, &made_by);
+    let back = stability_io::input::parse(out, &text)?;
+    if back.derivatives != res.result.derivatives {
+        let m = "--write-derivatives: the derivative file does not read back to the design point's set (a bug: please report it)";
+        return Err(stability_io::diag::InputError::file(out, m).into());
+    }
+    crate::output::atomic_write(std::path::Path::new(out), text.as_bytes())
+        .map_err(|e| stability_io::files::write_error(std::path::Path::new(out), &e))?;
+    crate::output::warn(&format!("wrote the design point's derivatives to {out}"));
+    Ok(())
 }
 
 pub fn page(cfg: &config::Config, res: &Results) -> String {

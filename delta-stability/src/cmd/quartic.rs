@@ -34,7 +34,7 @@ pub struct Args {
 /// The options that write the engineer's outputs (`quartic`, `analyze`).
 #[derive(Debug, Clone, clap::Args)]
 pub struct EngineeringArgs {
-    /// Write the state space ẋ = A x + B δ, x = (u/V, α, q, θ), in seconds when the flight condition is dimensional (else in τ), to OUT.json, with a python-control script OUT.py and a MATLAB script OUT.m beside it. B needs a `[control]` table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; optional name); without one, A only.
+    /// Write the state space ẋ = A x + B δ, x = (u/V, α, q, θ), with the outputs y = C x + D δ (the states, γ = θ − α and the load factor n_z = (V/g)(q − α̇) at the c.g.), in seconds when the flight condition is dimensional (else in τ), to OUT.json, with a python-control script OUT.py and a MATLAB script OUT.m beside it (damp() and the step response). B needs a `[control]` table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; optional name); without one, A only.
     #[arg(long, value_name = "OUT.json")]
     pub state_space: Option<String>,
     /// The MIL-F-8785C airplane class (§1.3) whose Category C floors the short-period frequency requirement applies.

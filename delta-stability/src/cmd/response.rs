@@ -1,6 +1,11 @@
 //! `delta-stability response FILE --input step|initial --until T`: the
 //! longitudinal response (§11), solved exactly. A response that cannot
 //! reach `--until` (it overflows f64) is an error, not a short file.
+//!
+//! FILE is a derivative file or a design-point config (its design point
+//! as `analyze` computes it). With a physical flight condition the span
+//! may be in seconds (`--until-s`), and with a `[control]` table the input
+//! a deflection of the control in degrees (`--elevator-deg`).
 
 use crate::Failure;
 use crate::args::ResponseInput;
@@ -8,33 +13,41 @@ use crate::output::{print, write_set};
 use crate::overwrite::Named;
 use crate::plot::{Figure, Series};
 use stability_core::display::sig;
+use stability_core::linear::Control;
 use stability_core::response::{Computed, Sample};
+use stability_io::design_point::read_set;
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
-use stability_io::input;
-use stability_io::response::{Disturbance, Spec, csv, respond};
+use stability_io::input::DerivativeFile;
+use stability_io::response::{Disturbance, Spec, control_step, csv, respond};
 use std::path::PathBuf;
 
 /// The command's options (validated by clap: `until` positive and finite,
 /// `steps` from 1 to the library's `MAX_STEPS`, `m0` and `w0` finite).
 #[derive(Debug, Clone, clap::Args)]
 pub struct Args {
-    /// The derivative file (TOML), as for `quartic`.
+    /// The derivative file (TOML), as for `quartic`, or a design-point config, as for `analyze`.
     pub file: String,
     /// What disturbs the aircraft.
     #[arg(long, value_enum, default_value = "step")]
     pub input: ResponseInput,
     /// End time, in units of τ (positive).
-    #[arg(long, value_parser = crate::args::positive)]
-    pub until: f64,
+    #[arg(long, value_parser = crate::args::positive, allow_negative_numbers = true, required_unless_present = "until_s", conflicts_with = "until_s")]
+    pub until: Option<f64>,
+    /// End time in seconds (positive): needs τ, from a physical flight condition (a config's, or `[dimensional]`).
+    #[arg(long = "until-s", value_name = "SECONDS", value_parser = crate::args::positive, allow_negative_numbers = true)]
+    pub until_s: Option<f64>,
+    /// A step of the control of the file's `[control]` table by this many degrees (finite), from rest: its force and moment derivatives, instead of --m0.
+    #[arg(long = "elevator-deg", visible_alias = "elevon-deg", value_name = "DEG", value_parser = crate::args::finite, allow_negative_numbers = true, conflicts_with = "m0")]
+    pub elevator_deg: Option<f64>,
     /// Number of intervals (1 to 10⁶).
     #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=stability_core::response::MAX_STEPS as i64))]
     pub steps: u32,
     /// Size of the moment step m₀ (eqs 2 units; finite).
-    #[arg(long, default_value_t = 1.0, value_parser = crate::args::finite)]
+    #[arg(long, default_value_t = 1.0, value_parser = crate::args::finite, allow_negative_numbers = true)]
     pub m0: f64,
     /// Initial ŵ = w/V for `--input initial` (finite).
-    #[arg(long, default_value_t = 0.01, value_parser = crate::args::finite)]
+    #[arg(long, default_value_t = 0.01, value_parser = crate::args::finite, allow_negative_numbers = true)]
     pub w0: f64,
     /// Set z_q = z_ẇ = 0 (the report's Fig 38).
     #[arg(long)]
@@ -51,33 +64,74 @@ pub struct Args {
 }
 
 impl Args {
-    /// The library's response, as asked for.
-    pub fn spec(&self) -> Spec {
-        Spec {
+    /// The library's response, as asked for, of `file` with its
+    /// `[control]`: the span in τ (from seconds by τ), the step from the
+    /// control's deflection; the error names what is missing.
+    pub fn spec(
+        &self,
+        file: &DerivativeFile,
+        control: Option<&Control>,
+    ) -> Result<Spec, InputError> {
+        let until = match (self.until, self.until_s, file.tau()) {
+            (Some(t), ..) => t,
+            (None, Some(s), Some(tau)) => s / tau,
+            (None, Some(s), None) => {
+                return Err(InputError::file(
+                    &file.path,
+                    format!(
+                        "--until-s {s}: times in seconds need τ = m/(½ρSV): give a physical flight condition (a config's [flight] units, altitude, mass, I_y; or a derivative file's [dimensional] V, rho, S, chord, mass), or --until in units of τ"
+                    ),
+                ));
+            }
+            (None, None, _) => {
+                let m = "give the span: --until (units of τ) or --until-s (seconds)";
+                return Err(InputError::file(&file.path, m));
+            }
+        };
+        let [x0, z0, m0] = match (self.elevator_deg, control) {
+            (None, _) => [0.0, 0.0, self.m0],
+            (Some(_), _) if self.input == ResponseInput::Initial => {
+                let m = "--elevator-deg is a step of the control: it needs --input step";
+                return Err(InputError::file(&file.path, m));
+            }
+            (Some(deg), Some(c)) => control_step(file, c, deg),
+            (Some(deg), None) => {
+                let m = format!(
+                    "--elevator-deg {deg}: the file has no [control] table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; see delta-stability quartic --help)"
+                );
+                return Err(InputError::file(&file.path, m));
+            }
+        };
+        Ok(Spec {
             input: match self.input {
                 ResponseInput::Step => Disturbance::Step,
                 ResponseInput::Initial => Disturbance::Initial,
             },
-            until: self.until,
+            until,
             steps: self.steps as usize,
-            m0: self.m0,
+            m0,
+            x0,
+            z0,
             w0: self.w0,
             neglect_zq_zwdot: self.neglect_zq_zwdot,
             neglect_u: self.neglect_u,
-        }
+        })
     }
 }
 
 pub fn run(o: &Args) -> Result<(), Failure> {
-    let (file, read) = stability_io::files::recording(|| input::read(&o.file));
-    let file = file?;
+    let class = stability_core::cap::AirplaneClass::IV;
+    let (read, files) = stability_io::files::recording(|| read_set(&o.file, class));
+    let (file, control) = read?;
+    let read = files;
     let outputs: Vec<Named> = [("--csv", &o.csv), ("--svg", &o.svg)]
         .into_iter()
         .filter_map(|(what, p)| p.as_ref().map(|p| Named::new(what, p)))
         .collect();
     crate::overwrite::refuse("FILE", &o.file, &read, &outputs)?;
     crate::output::warn_all(&file.warnings);
-    let r = respond(&file, &o.spec())?;
+    let spec = o.spec(&file, control.as_ref())?;
+    let r = respond(&file, &spec)?;
     let tau = file.tau();
     let csv = csv(&r, tau);
     let mut files = Vec::new();
@@ -100,7 +154,7 @@ pub fn run(o: &Args) -> Result<(), Failure> {
             "{} samples from t̂ = 0 to {}{}; final ŵ = {}, θ = {}\n",
             r.samples.len(),
             sig(last.t, 4),
-            tau.map(|t| format!(" ({} s)", sig(o.until * t, 4)))
+            tau.map(|t| format!(" ({} s)", sig(spec.until * t, 4)))
                 .unwrap_or_default(),
             sig(last.w, 5),
             sig(last.theta, 5),

@@ -12,14 +12,13 @@ use crate::Failure;
 use crate::output::print;
 use crate::page::{aligned, root};
 use stability_core::display::sig;
-use stability_io::input;
 use stability_io::views::SensitivityJson;
 use std::fmt::Write;
 
 /// The command's options.
 #[derive(Debug, Clone, clap::Args)]
 pub struct Args {
-    /// The derivative file (TOML).
+    /// The derivative file (TOML), or a design-point config (its design point as `analyze` computes it).
     pub file: String,
     /// Print one JSON object (keys file, notation, tau_s, modes[].sensitivities[] with input, value, d_re, d_im, d_damping_ratio, d_cycles_to_half, damping_drive, and d_re_s, d_im_s when τ is known).
     #[arg(long)]
@@ -27,7 +26,8 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Result<(), Failure> {
-    let input = input::read(&args.file)?;
+    let class = stability_core::cap::AirplaneClass::IV;
+    let (input, _) = stability_io::design_point::read_set(&args.file, class)?;
     crate::output::warn_all(&input.warnings);
     let analysis = input.analysis()?;
     let out = SensitivityJson::new(&input, &analysis);

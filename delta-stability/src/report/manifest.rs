@@ -26,14 +26,9 @@ struct Entry {
 
 impl Entry {
     fn of(bytes: &[u8]) -> Entry {
-        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-        for &b in bytes {
-            h ^= u64::from(b);
-            h = h.wrapping_mul(0x0000_0100_0000_01b3);
-        }
         Entry {
             bytes: bytes.len() as u64,
-            fnv1a64: format!("{h:016x}"),
+            fnv1a64: format!("{:016x}", stability_io::files::fnv1a64(bytes)),
         }
     }
 }

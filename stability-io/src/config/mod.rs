@@ -73,6 +73,18 @@ pub struct Config {
     overridden: Vec<(&'static str, String)>,
 }
 
+/// Whether a file's text is a design-point config (it has `[planform]`)
+/// rather than a derivative file.
+pub fn is_config(text: &str) -> bool {
+    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("planform"))
+}
+
+/// What a command that reads derivative files says of a config.
+pub const NOT_A_DERIVATIVE_FILE: &str = "this is a design-point config ([planform]), not a derivative file: `delta-stability analyze` analyses it, and `analyze CONFIG --write-derivatives OUT.toml` writes its design point as a derivative file for quartic and convert (response and sensitivity read a config as it is)";
+
+/// What `analyze`, `sweep` and `report` say of a derivative file.
+pub const NOT_A_CONFIG: &str = "this is a derivative file (`notation = …`), not a design-point config: `delta-stability quartic`, `response` and `sensitivity` read it; a config has [planform] and [flight] (delta-stability analyze --help)";
+
 /// Read a config file (a regular file of at most
 /// [`crate::files::MAX_INPUT_BYTES`]).
 pub fn read(path: &str) -> Result<Config, Failure> {
@@ -121,6 +133,11 @@ impl Reader<'_> {
 /// Parse a config's text (a CSV table it names is read from disk,
 /// relative to `path`).
 pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
+    let derivative_file = toml::from_str::<toml::Table>(text)
+        .is_ok_and(|t| t.contains_key("notation") && !t.contains_key("planform"));
+    if derivative_file {
+        return Err(InputError::file(path, NOT_A_CONFIG).into());
+    }
     let raw: RawConfig = toml::from_str(text).map_err(|e| toml_error(path, text, &e))?;
     let mut r = Reader {
         path,

@@ -102,7 +102,8 @@ impl DimensionalFile {
             .state_matrix()
             .filter(|m| m.iter().all(|v| v.is_finite()))
             .ok_or_else(overflow)?;
-        let model = LinearModel::of_dimensional(matrix, None, None, st.trim.speed());
+        let model = LinearModel::of_dimensional(matrix, None, None, st.trim.speed())
+            .with_gravity(st.trim.speed(), st.trim.g);
         let n_alpha = n_alpha_dimensional(st.derivatives.z_w, st.trim.u0, st.trim.g);
         let engineering = Engineering::of_model(model, &a.roots, Some(n_alpha), class);
         Ok((a, engineering))

@@ -148,6 +148,9 @@ pub fn read_any(path: &str) -> Result<AnyFile, Failure> {
 /// disk, relative to `path`); a `notation = "dimensional"` set in the
 /// report's notation (it needs `[reference]`).
 pub fn parse(path: &str, text: &str) -> Result<DerivativeFile, Failure> {
+    if crate::config::is_config(text) {
+        return Err(InputError::file(path, crate::config::NOT_A_DERIVATIVE_FILE).into());
+    }
     if dimensional_notation::is_dimensional(text) {
         return Ok(dimensional_notation::parse(path, text)?.to_derivative_file()?);
     }
