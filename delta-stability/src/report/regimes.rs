@@ -85,7 +85,7 @@ fn coefficient_joins<'a>(results: impl Iterator<Item = &'a CaseResult>) -> Vec<(
             match origin {
                 Origin::Method => out.push(methods),
                 Origin::DampingModel(_) | Origin::LiftingSurface => out.extend(faired::JOINS),
-                Origin::Table => {}
+                Origin::Table | Origin::Datcom => {}
             }
         }
     }
