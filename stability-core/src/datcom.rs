@@ -20,7 +20,7 @@
 //! (α = 0) become the coefficient tables of §6, from which x_u, z_u, m_u
 //! follow (eqs 9, 10, 13, 27–29).
 
-use crate::aero::{AeroError, Table, TableOrigin};
+use crate::aero::{AeroError, AeroModel, Source, Table, TableOrigin};
 use crate::derivative_tables::{DerivativeTable, DerivativeTables, Mode, Outside};
 use crate::display::Num;
 use crate::geometry::Planform;
@@ -136,6 +136,33 @@ pub struct Tables {
     pub derivatives: DerivativeTables,
 }
 
+impl Tables {
+    /// The aerodynamic model with these tables under the user's
+    /// (`[model.tables]`): a coefficient's table of the user's wins over
+    /// DATCOM's, and the user's derivative tables apply after DATCOM's (a
+    /// value replaces DATCOM's, an increment adds to it).
+    pub fn under(&self, user: &AeroModel) -> AeroModel {
+        let pick = |mine: &Source, theirs: Option<&Table>| match (mine, theirs) {
+            (Source::Table(_), _) | (_, None) => mine.clone(),
+            (_, Some(t)) => Source::Table(t.clone()),
+        };
+        AeroModel {
+            lift_slope: pick(&user.lift_slope, Some(&self.lift_slope)),
+            aerodynamic_centre: pick(&user.aerodynamic_centre, Some(&self.aerodynamic_centre)),
+            zero_lift_drag: pick(&user.zero_lift_drag, self.zero_lift_drag.as_ref()),
+            drag_due_to_lift: user.drag_due_to_lift.clone(),
+            derivatives: DerivativeTables(
+                self.derivatives
+                    .0
+                    .iter()
+                    .chain(&user.derivatives.0)
+                    .cloned()
+                    .collect(),
+            ),
+        }
+    }
+}
+
 /// The moment centre h_r of a DATCOM output whose wing's apex is at
 /// `apex_x` in DATCOM's axes, the wing being `planform` (same unit).
 pub fn reference_cg(planform: &Planform, apex_x: f64, moment_x: f64) -> f64 {
@@ -194,6 +221,7 @@ pub fn tables(points: &[Point], planform: &Planform, apex_x: f64) -> Result<Tabl
     let mut centre = Vec::new();
     let mut drag = Vec::new();
     let mut rows: Vec<Vec<(f64, f64)>> = vec![Vec::new(); DERIVATIVES.len()];
+    let mut missing: Vec<Vec<f64>> = vec![Vec::new(); DERIVATIVES.len()];
     for p in points {
         if let (Some(cla), Some(cma)) = (p.cla, p.cma) {
             lift.push((p.mach, cla * PER_RADIAN));
@@ -207,8 +235,9 @@ pub fn tables(points: &[Point], planform: &Planform, apex_x: f64) -> Result<Tabl
             error,
         })?;
         for (k, (name, _)) in DERIVATIVES.iter().enumerate() {
-            if let Some(v) = values[row(name).expect("a report row")] {
-                rows[k].push((p.mach, v));
+            match values[row(name).expect("a report row")] {
+                Some(v) => rows[k].push((p.mach, v)),
+                None => missing[k].push(p.mach),
             }
         }
     }
@@ -216,7 +245,7 @@ pub fn tables(points: &[Point], planform: &Planform, apex_x: f64) -> Result<Tabl
         return Err(DatcomError::Empty);
     }
     let mut derivatives = Vec::new();
-    for ((name, from), points) in DERIVATIVES.iter().zip(rows) {
+    for (((name, from), points), missing) in DERIVATIVES.iter().zip(rows).zip(missing) {
         if points.len() < 2 {
             continue; // computed everywhere
         }
@@ -226,6 +255,7 @@ pub fn tables(points: &[Point], planform: &Planform, apex_x: f64) -> Result<Tabl
             mode: Mode::Value,
             reference_cg: Some(h_r),
             outside: Outside::Computed,
+            missing,
         });
     }
     Ok(Tables {

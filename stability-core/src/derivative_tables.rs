@@ -100,6 +100,39 @@ pub struct DerivativeTable {
     /// table's values are about; `None`: the case's own.
     pub reference_cg: Option<f64>,
     pub outside: Outside,
+    /// Mach numbers inside the table's range at which its source gave
+    /// nothing (DATCOM's `NDM`): between the two nodes around one of them
+    /// the table says nothing either, and `outside` applies.
+    pub missing: Vec<f64>,
+}
+
+impl DerivativeTable {
+    /// The table's value at `mach`, `None` where it says nothing (outside
+    /// its range or across a missing Mach number) and `outside` is
+    /// [`Outside::Computed`].
+    fn at(&self, mach: f64) -> Result<Option<f64>, AeroError> {
+        let computed = self.outside == Outside::Computed;
+        let v = match self.table.at(mach) {
+            Ok(v) => v.value,
+            Err(AeroError::OutsideTable { .. }) if computed => return Ok(None),
+            Err(AeroError::OutsideTable { mach, lo, hi }) => {
+                return Err(AeroError::OutsideDerivativeTable {
+                    derivative: self.name,
+                    mach,
+                    lo,
+                    hi,
+                });
+            }
+            Err(e) => return Err(e),
+        };
+        let below = self.table.points().map(|p| p.0).filter(|m| *m <= mach).last();
+        let above = self.table.points().map(|p| p.0).find(|m| *m >= mach);
+        let across = match (below, above) {
+            (Some(a), Some(b)) => self.missing.iter().any(|m| a < *m && *m < b),
+            _ => false,
+        };
+        Ok(if across && computed { None } else { Some(v) })
+    }
 }
 
 /// The derivative tables of a case, applied in order.
@@ -201,19 +234,7 @@ impl DerivativeTables {
         for t in &self.0 {
             let r = t.reference_cg.unwrap_or(h);
             let mut there = transfer(&out, r - h);
-            let value = match t.table.at(mach) {
-                Ok(v) => Some(v.value),
-                Err(AeroError::OutsideTable { .. }) if t.outside == Outside::Computed => None,
-                Err(AeroError::OutsideTable { mach, lo, hi }) => {
-                    return Err(AeroError::OutsideDerivativeTable {
-                        derivative: t.name,
-                        mach,
-                        lo,
-                        hi,
-                    });
-                }
-                Err(e) => return Err(e),
-            };
+            let value = t.at(mach)?;
             let x = slot(&mut there, t.name);
             match (value, t.mode) {
                 (Some(v), Mode::Value) => *x = v,
@@ -320,6 +341,7 @@ mod tests {
             mode,
             reference_cg: r,
             outside: Outside::Refuse,
+            missing: Vec::new(),
         }
     }
 
