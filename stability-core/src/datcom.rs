@@ -73,9 +73,7 @@ impl Point {
     pub fn report_values(&self) -> Result<Values, NotationError> {
         let ribner = Notation::named("ribner").expect("the appendix's NACA column");
         let mut values: Values = [None; crate::notation::N_ROWS];
-        let per_radian = [
-            self.cla, self.cma, self.clq, self.cmq, self.clad, self.cmad,
-        ];
+        let per_radian = [self.cla, self.cma, self.clq, self.cmq, self.clad, self.cmad];
         for ((name, _), v) in DERIVATIVES.iter().zip(per_radian) {
             values[row(name).expect("a report row")] = v.map(|x| x * PER_RADIAN);
         }
@@ -297,7 +295,11 @@ mod tests {
         let v = p.report_values().unwrap();
         let get = |n: &str| v[row(n).unwrap()].unwrap();
         // z_w = −(0.04505·57.29578) − 0.006 = −2.587175
-        assert!((get("z_w") - (-2.581175 - 0.006)).abs() < 1e-5, "{}", get("z_w"));
+        assert!(
+            (get("z_w") - (-2.581175 - 0.006)).abs() < 1e-5,
+            "{}",
+            get("z_w")
+        );
         // m_w = −0.01684·57.29578 = −0.964861
         assert!((get("m_w") + 0.964861).abs() < 1e-5);
         // z_q = −½·0.05621·57.29578 = −1.610298

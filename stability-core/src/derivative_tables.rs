@@ -13,7 +13,7 @@
 
 use crate::Derivatives;
 use crate::aero::{AeroError, Table, TableOrigin};
-use crate::display::Num;
+use crate::display::{Num, sig};
 use serde::Serialize;
 
 /// The derivatives a table may give, by their names in the report's
@@ -125,7 +125,12 @@ impl DerivativeTable {
             }
             Err(e) => return Err(e),
         };
-        let below = self.table.points().map(|p| p.0).filter(|m| *m <= mach).last();
+        let below = self
+            .table
+            .points()
+            .map(|p| p.0)
+            .filter(|m| *m <= mach)
+            .last();
         let above = self.table.points().map(|p| p.0).find(|m| *m >= mach);
         let across = match (below, above) {
             (Some(a), Some(b)) => self.missing.iter().any(|m| a < *m && *m < b),
@@ -165,7 +170,7 @@ impl TableUse {
         let (lo, hi) = self.range;
         let about = self
             .reference_cg
-            .map_or(String::new(), |h| format!(" about h = {}", Num(h)));
+            .map_or(String::new(), |h| format!(" about h = {}", sig(h, 3)));
         let what = match (self.table, self.mode) {
             (None, _) => format!(
                 "computed ({} gives none at this Mach number; its table covers M {}–{})",
@@ -174,15 +179,16 @@ impl TableUse {
                 Num(hi)
             ),
             (Some(v), Mode::Value) => {
-                format!("{} {}{about}", self.origin.describe(), Num(v))
+                format!("{} {}{about}", self.origin.describe(), sig(v, 5))
             }
             (Some(v), Mode::Increment) => format!(
-                "computed + {}'s increment {}{about}",
+                "computed {} + {}'s increment {}{about}",
+                sig(self.computed, 5),
                 self.origin.describe(),
-                Num(v)
+                sig(v, 5)
             ),
         };
-        format!("{} = {}: {what}", self.derivative, Num(self.used))
+        format!("{} = {}: {what}", self.derivative, sig(self.used, 5))
     }
 }
 
@@ -222,7 +228,8 @@ impl DerivativeTables {
 
     /// The computed set `d` (about c.g. `h`, at Mach `mach`) with the
     /// tables applied, and what each did. A table about another c.g. is
-    /// applied there (see the module's documentation).
+    /// applied there (see the module's documentation), before those about
+    /// the case's c.g.: a value given at the case's c.g. is the one used.
     pub fn apply(
         &self,
         d: &Derivatives,
@@ -231,7 +238,12 @@ impl DerivativeTables {
     ) -> Result<(Derivatives, Vec<TableUse>), AeroError> {
         let mut out = *d;
         let mut given = Vec::with_capacity(self.0.len());
-        for t in &self.0 {
+        // the tables about another c.g. first: a value at the case's own
+        // is then what is used
+        let order: Vec<&DerivativeTable> = (self.0.iter().filter(|t| t.reference_cg.is_some()))
+            .chain(self.0.iter().filter(|t| t.reference_cg.is_none()))
+            .collect();
+        for t in &order {
             let r = t.reference_cg.unwrap_or(h);
             let mut there = transfer(&out, r - h);
             let value = t.at(mach)?;
@@ -244,8 +256,7 @@ impl DerivativeTables {
             out = transfer(&there, h - r);
             given.push(value);
         }
-        let uses = self
-            .0
+        let uses = order
             .iter()
             .zip(given)
             .map(|(t, table)| TableUse {
@@ -316,7 +327,10 @@ mod tests {
         let there = at(0.4);
         for name in ["z_w", "m_w", "z_q", "m_q", "z_wdot", "m_wdot"] {
             let (x, y) = (get(&moved, name), get(&there, name));
-            assert!((x - y).abs() < 1e-12 * (1.0 + y.abs()), "{name}: {x} vs {y}");
+            assert!(
+                (x - y).abs() < 1e-12 * (1.0 + y.abs()),
+                "{name}: {x} vs {y}"
+            );
         }
     }
 

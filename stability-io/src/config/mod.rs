@@ -53,7 +53,7 @@ use raw::{RawConfig, RawModel, RawPlanform};
 use stability_core::aero::{AeroError, AeroModel, AeroModelName};
 use stability_core::case::{Case, CaseError, DampingModel};
 use stability_core::damping::DampingError;
-use stability_core::display::Num;
+use stability_core::display::{Num, sig};
 use stability_core::geometry::{GeometryError, Planform, Size};
 use stability_core::lifting_surface::LiftingSurfaceError;
 use std::ops::Range;
@@ -342,6 +342,47 @@ fn model(
 }
 
 impl Config {
+    /// Where the model's tables come from, one line each (none without
+    /// tables): the DATCOM output and which quantities it gives, and the
+    /// user's own tables.
+    pub fn tables_summary(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if let Some(d) = &self.datcom {
+            let derivatives: Vec<&str> = d.tables.derivatives.0.iter().map(|t| t.name).collect();
+            out.push(format!(
+                "{}: the lift slope, aerodynamic centre{}, and {} (about h = {}, moved to the c.g.)",
+                d.describe(),
+                if d.tables.zero_lift_drag.is_some() { ", C_D0" } else { "" },
+                derivatives.join(", "),
+                sig(d.tables.reference_cg, 3),
+            ));
+        }
+        let mine: Vec<String> = [
+            ("lift_slope", &self.tables.lift_slope),
+            ("zero_lift_drag", &self.tables.zero_lift_drag),
+            ("drag_due_to_lift", &self.tables.drag_due_to_lift),
+            ("aerodynamic_centre", &self.tables.aerodynamic_centre),
+        ]
+        .into_iter()
+        .filter(|(_, s)| matches!(s, stability_core::aero::Source::Table(_)))
+        .map(|(n, _)| n.to_string())
+        .chain(self.tables.derivatives.0.iter().map(|t| {
+            let mode = match t.mode {
+                stability_core::derivative_tables::Mode::Value => "value",
+                stability_core::derivative_tables::Mode::Increment => "increment",
+            };
+            match t.reference_cg {
+                Some(h) => format!("{} ({mode}, about h = {})", t.name, sig(h, 3)),
+                None => format!("{} ({mode})", t.name),
+            }
+        }))
+        .collect();
+        if !mine.is_empty() {
+            out.push(format!("your [model.tables]: {}", mine.join(", ")));
+        }
+        out
+    }
+
     /// The config's text, as read.
     pub fn text(&self) -> &str {
         &self.text

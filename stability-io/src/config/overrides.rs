@@ -7,8 +7,8 @@
 use super::Config;
 use crate::Failure;
 use crate::diag::InputError;
-use crate::limits;
 use crate::input::datcom::Datcom;
+use crate::limits;
 use stability_core::aero::AeroModelName;
 use stability_core::case::DampingModel;
 use stability_core::display::Num;

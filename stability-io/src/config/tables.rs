@@ -38,7 +38,12 @@ pub fn user_tables(path: &str, text: &str, tables: &RawTables) -> Result<AeroMod
             Failure::from(InputError::at(path, text, span, field.clone(), m))
         };
         if let Some(k) = COEFFICIENTS.iter().position(|c| c == name) {
-            if let Some(s) = raw.mode.as_ref().map(|m| m.span()).or(raw.cg.as_ref().map(|c| c.span())) {
+            if let Some(s) = raw
+                .mode
+                .as_ref()
+                .map(|m| m.span())
+                .or(raw.cg.as_ref().map(|c| c.span()))
+            {
                 return Err(at(s, "`mode` and `cg` belong to a derivative's table; a coefficient's table gives its value".into()));
             }
             let source = Source::Table(table_from(path, text, name, t)?);
@@ -63,20 +68,30 @@ pub fn user_tables(path: &str, text: &str, tables: &RawTables) -> Result<AeroMod
             ));
         };
         if aero.derivatives.0.iter().any(|d| d.name == derivative) {
-            return Err(at(t.span(), format!("{derivative} has two tables (one spelt otherwise); give one")));
+            return Err(at(
+                t.span(),
+                format!("{derivative} has two tables (one spelt otherwise); give one"),
+            ));
         }
         let mode = match &raw.mode {
             None => Mode::Value,
             Some(m) => Mode::parse(m.get_ref()).ok_or_else(|| {
                 at(
                     m.span(),
-                    format!("mode is `value` or `increment`, not `{}`", quote(m.get_ref())),
+                    format!(
+                        "mode is `value` or `increment`, not `{}`",
+                        quote(m.get_ref())
+                    ),
                 )
             })?,
         };
         let reference_cg = match &raw.cg {
             None => None,
-            Some(c) => Some(limits::CG.check(*c.get_ref()).map_err(|m| at(c.span(), m))?),
+            Some(c) => Some(
+                limits::CG
+                    .check(*c.get_ref())
+                    .map_err(|m| at(c.span(), m))?,
+            ),
         };
         aero.derivatives.0.push(DerivativeTable {
             name: derivative,

@@ -16,12 +16,13 @@
 //! several cases (`NEXT CASE`) add their Mach numbers. When the output
 //! holds several configurations (`BUILD`), the last one printed is taken.
 //! The wing's apex x (XW) is read from the echoed `$SYNTHS` cards (0 when
-//! absent, DATCOM's default).
+//! absent, DATCOM's default), and the moment centre XCG too where it
+//! agrees with the tables' rounded one.
 
 use crate::Failure;
 use crate::diag::{InputError, quote};
 use stability_core::datcom::{Point, Reference, Tables};
-use stability_core::display::Num;
+use stability_core::display::{Num, sig};
 use stability_core::geometry::Planform;
 use std::ops::Range;
 use std::path::Path;
@@ -93,7 +94,7 @@ impl Datcom {
             o.points.len(),
             Num(lo),
             Num(hi),
-            Num(self.tables.reference_cg)
+            sig(self.tables.reference_cg, 3)
         )
     }
 }
@@ -196,11 +197,7 @@ impl Reader<'_> {
             return Ok(());
         }
         if toks.first().is_some_and(|(t, _)| *t == "ALPHA") {
-            self.header = Some(
-                toks.iter()
-                    .map(|(t, r)| (t.to_string(), r.end))
-                    .collect(),
-            );
+            self.header = Some(toks.iter().map(|(t, r)| (t.to_string(), r.end)).collect());
             return Ok(());
         }
         if let (Some(header), Some((mach, reference)), true) =
@@ -298,10 +295,7 @@ impl Reader<'_> {
                     start,
                     r.clone(),
                     name,
-                    format!(
-                        "`{}` is not a number (nor NDM, NaN or ******)",
-                        quote(t)
-                    ),
+                    format!("`{}` is not a number (nor NDM, NaN or ******)", quote(t)),
                 )
             })?;
         }
@@ -309,18 +303,27 @@ impl Reader<'_> {
     }
 }
 
-/// XW of the first `$SYNTHS` card echoed (0 when none gives it).
-fn apex_x(text: &str) -> f64 {
-    let Some(at) = text.find("$SYNTHS") else {
-        return 0.0;
-    };
+/// The value of `name` in the first `$SYNTHS` card echoed, if any.
+fn synths(text: &str, name: &str) -> Option<f64> {
+    let at = text.find("$SYNTHS")?;
     let rest = &text[at + "$SYNTHS".len()..];
     let card = &rest[..rest.find('$').unwrap_or(rest.len())];
     card.split(',')
         .filter_map(|kv| kv.split_once('='))
-        .find(|(k, _)| k.trim() == "XW")
+        .find(|(k, _)| k.trim() == name)
         .and_then(|(_, v)| v.trim().parse::<f64>().ok())
-        .unwrap_or(0.0)
+}
+
+/// The moment centre as the `$SYNTHS` card gives it (XCG = 3.333333),
+/// where the tables print it rounded (3.333): the tables' value otherwise.
+fn exact_moment_centre(points: &mut [Point], text: &str) {
+    if let Some(xcg) = synths(text, "XCG") {
+        for p in points {
+            if (p.reference.moment_x - xcg).abs() <= 5e-4 * (1.0 + xcg.abs()) {
+                p.reference.moment_x = xcg;
+            }
+        }
+    }
 }
 
 /// The value of column `name` in a row (`None` where not given).
@@ -355,7 +358,11 @@ pub fn parse(path: &str, text: &str) -> Result<Output, InputError> {
         ));
     };
     let mut points: Vec<Point> = Vec::new();
-    for row in r.rows.iter().filter(|row| row.configuration == configuration) {
+    for row in r
+        .rows
+        .iter()
+        .filter(|row| row.configuration == configuration)
+    {
         let k = match points.iter().position(|p| p.mach == row.mach) {
             Some(k) => k,
             None => {
@@ -384,11 +391,12 @@ pub fn parse(path: &str, text: &str) -> Result<Output, InputError> {
         }
     }
     points.sort_by(|a, b| a.mach.total_cmp(&b.mach));
+    exact_moment_centre(&mut points, text);
     Ok(Output {
         path: path.to_string(),
         configuration,
         points,
-        apex_x: apex_x(text),
+        apex_x: synths(text, "XW").unwrap_or(0.0),
     })
 }
 
@@ -438,41 +446,62 @@ mod tests {
     #[test]
     fn the_values_are_the_printed_ones() {
         let o = output();
-        // line 119: M 0.200, SREF 57.735, CBARR 6.667, XCG 3.333
+        // line 119: M 0.200, SREF 57.735, CBARR 6.667, XCG 3.333 (3.333333
+        // on the $SYNTHS card, line 4)
         let p = at(&o, 0.2);
         assert_eq!(
             p.reference,
             Reference {
                 area: 57.735,
                 length: 6.667,
-                moment_x: 3.333
+                moment_x: 3.333333
             }
         );
         // line 123: CD 0.006, CLA 4.505E-02, CMA -1.684E-02
-        assert_eq!((p.cd, p.cla, p.cma), (Some(0.006), Some(4.505e-2), Some(-1.684e-2)));
+        assert_eq!(
+            (p.cd, p.cla, p.cma),
+            (Some(0.006), Some(4.505e-2), Some(-1.684e-2))
+        );
         // line 138: CLQ 5.621E-02, CMQ -2.687E-02, CLAD 2.049E-02, CMAD -1.148E-02
         assert_eq!(
             (p.clq, p.cmq, p.clad, p.cmad),
-            (Some(5.621e-2), Some(-2.687e-2), Some(2.049e-2), Some(-1.148e-2))
+            (
+                Some(5.621e-2),
+                Some(-2.687e-2),
+                Some(2.049e-2),
+                Some(-1.148e-2)
+            )
         );
         // line 447: M 0.9, CL..CA NDM, CLA 5.067E-02, CMA -2.374E-02
         let p = at(&o, 0.9);
-        assert_eq!((p.cd, p.cla, p.cma), (Some(0.006), Some(5.067e-2), Some(-2.374e-2)));
+        assert_eq!(
+            (p.cd, p.cla, p.cma),
+            (Some(0.006), Some(5.067e-2), Some(-2.374e-2))
+        );
         // line 463: CLQ 7.281E-02, CMQ -3.461E-02, CLAD 9.249E-03, CMAD -1.153E-02
         assert_eq!((p.clad, p.cmad), (Some(9.249e-3), Some(-1.153e-2)));
         // line 700: M 1.05, CLQ 8.253E-02, CMQ -3.350E-02, CLAD and CMAD NDM
         let p = at(&o, 1.05);
-        assert_eq!((p.clq, p.cmq, p.clad, p.cmad), (Some(8.253e-2), Some(-3.350e-2), None, None));
+        assert_eq!(
+            (p.clq, p.cmq, p.clad, p.cmad),
+            (Some(8.253e-2), Some(-3.350e-2), None, None)
+        );
         // line 963: M 1.2, CD 0.008, CLA 4.479E-02, CMA -2.248E-02
         let p = at(&o, 1.2);
-        assert_eq!((p.cd, p.cla, p.cma), (Some(0.008), Some(4.479e-2), Some(-2.248e-2)));
+        assert_eq!(
+            (p.cd, p.cla, p.cma),
+            (Some(0.008), Some(4.479e-2), Some(-2.248e-2))
+        );
     }
 
     #[test]
     fn a_bad_cell_and_a_file_without_tables_are_named() {
         let bad = FILE.replacen("4.505E-02", "4.505X-02", 1);
         let e = parse("d.out", &bad).unwrap_err().to_string();
-        assert!(e.starts_with("d.out:123:") && e.contains("CLA") && e.contains("4.505X-02"), "{e}");
+        assert!(
+            e.starts_with("d.out:123:") && e.contains("CLA") && e.contains("4.505X-02"),
+            "{e}"
+        );
         let e = parse("d.out", "hello\n").unwrap_err().to_string();
         assert!(e.contains("no static or dynamic derivative table"), "{e}");
         // a row whose values do not line up with the header
@@ -490,14 +519,17 @@ mod tests {
         let p = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(10.0)).unwrap();
         let o = output();
         let t = stability_core::datcom::tables(&o.points, &p, o.apex_x).unwrap();
-        // XCG 3.333 printed, x̄ = 10/3: h_r = (3.333 − 3.3333)/6.6667 = −5e-5
-        assert!((t.reference_cg + 0.000_05).abs() < 1e-6, "{}", t.reference_cg);
+        // XCG 3.333333, x̄ = 10/3: h_r = (3.333333 − 3.3333…)/6.6667 = −5e-8
+        assert!((t.reference_cg + 5e-8).abs() < 1e-9, "{}", t.reference_cg);
         // a = 0.04505 per degree = 2.581175 per radian at M 0.2
         let a = t.lift_slope.at(0.2).unwrap().value;
         assert!((a - 2.581_174_867).abs() < 1e-8, "{a}");
         // H₀ = h_r − CMA/CLA = −5e-5 + 0.01684/0.04505 = 0.373758 at M 0.2
         let h0 = t.aerodynamic_centre.at(0.2).unwrap().value;
-        assert!((h0 - (t.reference_cg + 0.01684 / 0.04505)).abs() < 1e-12, "{h0}");
+        assert!(
+            (h0 - (t.reference_cg + 0.01684 / 0.04505)).abs() < 1e-12,
+            "{h0}"
+        );
         // z_ẇ (CLAD) is NDM at M 1.05–1.3 (lines 700–1058): there the
         // computed value is kept; at M 1.0 and 1.4 it is DATCOM's
         let z_wdot = t.derivatives.0.iter().find(|d| d.name == "z_wdot").unwrap();
