@@ -173,7 +173,7 @@ impl TableUse {
             .map_or(String::new(), |h| format!(" about h = {}", sig(h, 3)));
         let what = match (self.table, self.mode) {
             (None, _) => format!(
-                "computed ({} gives none at this Mach number; its table covers M {}–{})",
+                "computed ({} gives none at this Mach number: NDM here, or outside M {}–{})",
                 self.origin.describe(),
                 Num(lo),
                 Num(hi)
