@@ -263,3 +263,54 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod derivative_table_tests {
+    const BASE: &str = "[planform]\nsweep = 60.0\nroot_chord = 10.0\n[flight]\nmach = 0.9\ncg = 0.25\nmu1 = 50.0\ni_b = 0.08\ncl_m2 = 0.05\n[model.tables]\n";
+
+    fn error(tables: &str) -> String {
+        crate::config::parse("c.toml", &format!("{BASE}{tables}"))
+            .unwrap_err()
+            .to_string()
+    }
+
+    #[test]
+    fn mode_and_cg_are_checked_and_located() {
+        let e = error("m_q = { mach = [0.5, 1.0], value = [1.0, 1.0], mode = \"add\" }\n");
+        assert!(
+            e.starts_with("c.toml:11:") && e.contains("`value` or `increment`, not `add`"),
+            "{e}"
+        );
+        let e = error("lift_slope = { mach = [0.5, 1.0], value = [3.0, 3.0], cg = 0.1 }\n");
+        assert!(e.contains("belong to a derivative's table"), "{e}");
+        let e = error("m_q = { mach = [0.5, 1.0], value = [1.0, 1.0], cg = 900.0 }\n");
+        assert!(e.contains("[model.tables] m_q"), "{e}");
+        let e = error(
+            "z_wdot = { mach = [0.5, 1.0], value = [1.0, 1.0] }\n\"z_ẇ\" = { mach = [0.5, 1.0], value = [1.0, 1.0] }\n",
+        );
+        assert!(e.contains("two tables"), "{e}");
+    }
+
+    #[test]
+    fn the_old_tables_and_the_new_are_read() {
+        let c = crate::config::parse(
+            "c.toml",
+            &format!(
+                "{BASE}lift_slope = {{ mach = [0.5, 1.0], value = [3.0, 3.2] }}\n\"m_ẇ\" = {{ mach = [0.5, 1.0], values = [-0.1, -0.1], mode = \"increment\", cg = 0.0 }}\n"
+            ),
+        )
+        .unwrap();
+        let d = &c.case.aero.derivatives.0;
+        assert_eq!(d.len(), 1);
+        assert_eq!(d[0].name, "m_wdot");
+        assert_eq!(
+            d[0].mode,
+            stability_core::derivative_tables::Mode::Increment
+        );
+        assert_eq!(d[0].reference_cg, Some(0.0));
+        assert!(matches!(
+            c.case.aero.lift_slope,
+            stability_core::aero::Source::Table(_)
+        ));
+    }
+}
