@@ -21,7 +21,7 @@
 
 use crate::Failure;
 use crate::diag::{InputError, quote};
-use stability_core::datcom::{Point, Reference, Tables};
+use stability_core::datcom::{DatcomError, Point, Reference, Tables};
 use stability_core::display::{Num, sig};
 use stability_core::geometry::Planform;
 use std::ops::Range;
@@ -77,9 +77,10 @@ impl Datcom {
     /// the DATCOM file (its line and column where the printout is at
     /// fault).
     pub fn load(path: &Path, planform: &Planform) -> Result<Datcom, Failure> {
-        let output = read(path)?;
+        let text = crate::files::read_input(path)?;
+        let output = parse(&path.display().to_string(), &text)?;
         let tables = stability_core::datcom::tables(&output.points, planform, output.apex_x)
-            .map_err(|e| InputError::file(&output.path, e.to_string()))?;
+            .map_err(|e| located(&output.path, &text, &e))?;
         Ok(Datcom { output, tables })
     }
 
@@ -300,6 +301,28 @@ impl Reader<'_> {
             })?;
         }
         Ok(out)
+    }
+}
+
+/// An error of the tables at the flight-condition row of the Mach number
+/// it concerns (the file's, when it concerns none).
+fn located(path: &str, text: &str, e: &DatcomError) -> InputError {
+    let (mach, field) = match e {
+        DatcomError::Reference { mach, what, .. } => (*mach, format!("reference {what}")),
+        DatcomError::MomentCentres { mach, .. } => (*mach, "XCG".to_string()),
+        DatcomError::Notation { mach, .. } => (*mach, "MACH".to_string()),
+        _ => return InputError::file(path, e.to_string()),
+    };
+    let line = text
+        .lines()
+        .position(|l| {
+            let t: Vec<&str> = l.get(1..).unwrap_or("").split_whitespace().collect();
+            l.starts_with('0') && t.len() >= 6 && t[0].parse::<f64>() == Ok(mach)
+        })
+        .map_or(0, |i| i + 1);
+    InputError {
+        field,
+        ..InputError::at_line(path, text, line, e.to_string())
     }
 }
 
@@ -546,5 +569,8 @@ mod tests {
         let big = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(12.0)).unwrap();
         let e = stability_core::datcom::tables(&o.points, &big, o.apex_x).unwrap_err();
         assert!(e.to_string().contains("reference area"), "{e}");
+        // located at the flight-condition row of M 0.2 (line 119)
+        let e = located("d.out", FILE, &e).to_string();
+        assert!(e.starts_with("d.out:119:1: reference area"), "{e}");
     }
 }
