@@ -132,6 +132,23 @@ fn sweep_takes_the_datcom_output_and_says_so() {
         path(&out),
     ]);
     assert!(common::stdout(&run).contains("tables: DATCOM output"));
+    // a DATCOM output is of one planform: --sweep may not change it
+    let err = stderr(&run_err(
+        &[
+            "sweep",
+            &cfg,
+            "--datcom",
+            DATCOM,
+            "--mach",
+            "0.9",
+            "--sweep",
+            "55,60",
+            "-o",
+            path(&out),
+        ],
+        2,
+    ));
+    assert!(err.contains("--sweep") && err.contains("DATCOM"), "{err}");
     let rows: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
     let first = &rows[0];

@@ -153,9 +153,9 @@ def sweep(
     ``damping``, ``aero``, ``omega_bar`` and ``datcom`` override the config's
     model as the command line's ``--damping``, ``--aero``, ``--omega-bar`` and
     ``--datcom`` do (see :func:`analyze`). The aerodynamics are shared by the
-    points that differ only in μ₁ and i_B unless the damping theory iterates ω̄ (eqs 39–40, the
-    lattice's), the doublet lattice is solved once per planform and Mach
-    number, and a point's frequency iteration interpolates in that wing's
+    points that differ only in μ₁ and i_B unless the damping theory iterates
+    ω̄ (eqs 39–40, the lattice's), the doublet lattice is solved once per
+    planform and Mach number, and a point's frequency iteration interpolates in that wing's
     table of solved frequencies (stability-core's tests hold the short
     period's roots within 2·10⁻⁴ of ``analyze``'s, which solves the lattice at
     every iterate). With a physical flight condition in the config (``[flight]
