@@ -120,7 +120,6 @@ fn from_datcom(case: &Case) -> bool {
 /// stands for; the library then uses the base's own planform for it). At
 /// a physical flight condition μ₁ and i_B may not be given; with a DATCOM
 /// output's tables, the sweep angle may not change.
-
 pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError> {
     if physical {
         for (axis, g) in [(3, &given.mu1), (4, &given.i_b)] {
