@@ -33,6 +33,12 @@ pub struct ModelArgs {
     /// lifting-surface-frequency, transonic-frequency, faired.
     #[arg(long = "omega-bar", value_name = "W", value_parser = positive)]
     pub omega_bar: Option<f64>,
+    /// Take the lift slope, aerodynamic centre, C_D0 and z_w, m_w, z_q,
+    /// m_q, z_ẇ, m_ẇ from a Digital DATCOM output (for006.dat), moved from
+    /// its moment centre to the config's c.g. (in place of the config's
+    /// `[model] datcom`; its `[model.tables]` still win; docs/tables.md).
+    #[arg(long, value_name = "FILE")]
+    pub datcom: Option<String>,
 }
 
 impl ModelArgs {
@@ -42,6 +48,7 @@ impl ModelArgs {
             damping: self.damping.map(|d| d.0),
             aero: self.aero.map(|a| a.0),
             omega_bar: self.omega_bar,
+            datcom: self.datcom.clone(),
             ..Default::default()
         }
     }

@@ -133,6 +133,7 @@ def sweep(
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
     derivatives: bool = False,
+    datcom: Optional[str] = None,
 ) -> SweepResult:
     """Design points over a Cartesian grid of Mach number, leading-edge sweep
     (degrees), c.g. position h, relative density μ₁ and pitching inertia i_B:
@@ -149,12 +150,12 @@ def sweep(
     → the §8 standard and eq (41)'s margin. Points are in grid order, the last
     axis (i_B) varying fastest.
 
-    ``damping``, ``aero`` and ``omega_bar`` override the config's model as
-    the command line's ``--damping``, ``--aero`` and ``--omega-bar`` do (see
-    :func:`analyze`). The aerodynamics are shared by the points that differ
-    only in μ₁ and i_B unless the damping theory iterates ω̄ (eqs 39–40, the
-    lattice's), the doublet lattice is solved once per planform and Mach
-    number, and a point's frequency iteration interpolates in that wing's
+    ``damping``, ``aero``, ``omega_bar`` and ``datcom`` override the config's
+    model as the command line's ``--damping``, ``--aero``, ``--omega-bar`` and
+    ``--datcom`` do (see :func:`analyze`). The aerodynamics are shared by the
+    points that differ only in μ₁ and i_B unless the damping theory iterates
+    ω̄ (eqs 39–40, the lattice's), the doublet lattice is solved once per
+    planform and Mach number, and a point's frequency iteration interpolates in that wing's
     table of solved frequencies (stability-core's tests hold the short
     period's roots within 2·10⁻⁴ of ``analyze``'s, which solves the lattice at
     every iterate). With a physical flight condition in the config (``[flight]
@@ -177,6 +178,7 @@ def sweep(
         aero=aero,
         omega_bar=omega_bar,
         derivatives=derivatives,
+        datcom=datcom,
     )
     verdicts = _np.array(list(raw["verdicts"]) + [""])
     messages = _np.array(list(raw["messages"]) + [""], dtype=object)

@@ -180,10 +180,11 @@ def analyze(
     damping: Optional[str] = None,
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
+    datcom: Optional[str] = None,
 ) -> Analysis:
     """A design point through §5–8: ``delta-stability analyze``, the keywords
     its ``--mach``, ``--cg``, ``--damping``, ``--aero`` (``default`` or
-    ``lifting-surface``) and ``--omega-bar``."""
+    ``lifting-surface``), ``--omega-bar`` and ``--datcom``."""
 
 def sweep_columns(
     config: ConfigSource,
@@ -197,6 +198,7 @@ def sweep_columns(
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
     derivatives: bool = False,
+    datcom: Optional[str] = None,
 ) -> dict[str, Any]:
     """The raw columns of ``delta_stability.sweep`` (the library's grid,
     ``stability_core::sweep``): ``columns`` (the CSV's names, in order), each

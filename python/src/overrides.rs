@@ -1,7 +1,7 @@
 //! The command line's overrides of a config as keyword arguments:
-//! `analyze(…, mach=, cg=, damping=, aero=, omega_bar=)` and `sweep(…,
-//! damping=, aero=, omega_bar=)` are `--mach`, `--cg`, `--damping`,
-//! `--aero` and `--omega-bar`, applied by the command line's own
+//! `analyze(…, mach=, cg=, damping=, aero=, omega_bar=, datcom=)` and
+//! `sweep(…, damping=, aero=, omega_bar=, datcom=)` are `--mach`, `--cg`,
+//! `--damping`, `--aero`, `--omega-bar` and `--datcom`, applied by the command line's own
 //! [`stability_io::config::apply`] (each value within its range, the same
 //! messages).
 
@@ -23,6 +23,8 @@ pub struct Model<'a> {
     pub aero: Option<&'a str>,
     /// A frequency-dependent theory at ω̄ = W, not iterated.
     pub omega_bar: Option<f64>,
+    /// A DATCOM output's tables (`--datcom FILE`).
+    pub datcom: Option<&'a str>,
 }
 
 /// The damping model named `name`.
@@ -63,6 +65,7 @@ pub fn overridden(
         cg,
         aero: model.aero.map(aero).transpose()?,
         omega_bar: model.omega_bar,
+        datcom: model.datcom.map(str::to_string),
     };
     apply(&mut cfg, &o).map_err(failure)?;
     Ok(cfg)

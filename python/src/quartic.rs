@@ -635,10 +635,12 @@ impl Analysis {
 /// `default` or `lifting-surface`, the doublet lattice's ∂C_L/∂α and H₀ with
 /// their exact Mach derivatives for eqs 25–29, M < 1) and `omega_bar`
 /// (--omega-bar: a frequency-dependent theory, eqs 39–40 or the lattice's,
-/// at ω̄ = W instead of iterated to the short period's s/μ₁). Raises
+/// at ω̄ = W instead of iterated to the short period's s/μ₁) and `datcom`
+/// (--datcom: a Digital DATCOM output's tables, docs/tables.md). Raises
 /// InputError with the command line's message.
 #[pyfunction]
-#[pyo3(signature = (config, /, *, mach=None, cg=None, damping=None, aero=None, omega_bar=None))]
+#[pyo3(signature = (config, /, *, mach=None, cg=None, damping=None, aero=None, omega_bar=None, datcom=None))]
+#[allow(clippy::too_many_arguments)]
 pub fn analyze(
     py: Python<'_>,
     config: &Bound<'_, PyAny>,
@@ -647,12 +649,14 @@ pub fn analyze(
     damping: Option<&str>,
     aero: Option<&str>,
     omega_bar: Option<f64>,
+    datcom: Option<&str>,
 ) -> PyResult<Analysis> {
     guard(|| {
         let model = Model {
             damping,
             aero,
             omega_bar,
+            datcom,
         };
         let cfg = overridden(config, mach, cg, model)?;
         let (result, tau, json) = py

@@ -304,7 +304,7 @@ fn to_dict<'py>(py: Python<'py>, c: Columns, shape: Vec<usize>) -> PyResult<Boun
 /// The sweep's columns as a dict of numpy arrays (see [`to_dict`]);
 /// `delta_stability.sweep` decodes the verdicts and errors.
 #[pyfunction]
-#[pyo3(signature = (config, *, mach=None, sweep=None, cg=None, mu1=None, i_b=None, damping=None, aero=None, omega_bar=None, derivatives=false))]
+#[pyo3(signature = (config, *, mach=None, sweep=None, cg=None, mu1=None, i_b=None, damping=None, aero=None, omega_bar=None, derivatives=false, datcom=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep_columns<'py>(
     py: Python<'py>,
@@ -318,12 +318,14 @@ pub fn sweep_columns<'py>(
     aero: Option<&str>,
     omega_bar: Option<f64>,
     derivatives: bool,
+    datcom: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let model = Model {
             damping,
             aero,
             omega_bar,
+            datcom,
         };
         let cfg = overridden(config, None, None, model)?;
         let axes = AxisArgs {

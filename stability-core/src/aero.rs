@@ -9,6 +9,7 @@
 //! monotone cubic Hermite interpolation) or from a named, documented default
 //! method ([`defaults`]); `docs/models.md` sets out the choices.
 
+use crate::derivative_tables::DerivativeTables;
 use crate::display::Num;
 use crate::geometry::Planform;
 use crate::lifting_surface::{LiftingSurfaceError, Steady, cache};
@@ -58,6 +59,16 @@ pub enum AeroError {
     )]
     OutsideTable { mach: f64, lo: f64, hi: f64 },
     #[error(
+        "Mach {} is outside the range [{}, {}] of the table of {derivative} (tables are not extrapolated: extend the table, or drop it to use the computed value)",
+        Num(*mach), Num(*lo), Num(*hi)
+    )]
+    OutsideDerivativeTable {
+        derivative: &'static str,
+        mach: f64,
+        lo: f64,
+        hi: f64,
+    },
+    #[error(
         "Mach {} is outside the default models' range [0, {}]",
         Num(*.0), defaults::MACH_MAX
     )]
@@ -81,6 +92,35 @@ pub struct Table {
     mach: Vec<f64>,
     value: Vec<f64>,
     slope: Vec<f64>,
+    origin: TableOrigin,
+}
+
+/// Whose table it is: the user's, or one made from a DATCOM output
+/// ([`crate::datcom`]). Serializes as `"table"` or `"datcom"`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TableOrigin {
+    #[default]
+    User,
+    Datcom,
+}
+
+impl TableOrigin {
+    /// In words (a page's).
+    pub fn describe(self) -> &'static str {
+        match self {
+            TableOrigin::User => "your table",
+            TableOrigin::Datcom => "DATCOM's output",
+        }
+    }
+}
+
+impl Serialize for TableOrigin {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(match self {
+            TableOrigin::User => "table",
+            TableOrigin::Datcom => "datcom",
+        })
+    }
 }
 
 impl Table {
@@ -133,7 +173,27 @@ impl Table {
         for i in 0..n - 1 {
             (slope[i], slope[i + 1]) = monotone_slopes(delta[i], slope[i], slope[i + 1]);
         }
-        Ok(Table { mach, value, slope })
+        Ok(Table {
+            mach,
+            value,
+            slope,
+            origin: TableOrigin::User,
+        })
+    }
+
+    /// The table marked as coming from `origin`.
+    pub fn with_origin(self, origin: TableOrigin) -> Table {
+        Table { origin, ..self }
+    }
+
+    /// Whose table it is.
+    pub fn origin(&self) -> TableOrigin {
+        self.origin
+    }
+
+    /// The Mach numbers and values, as given.
+    pub fn points(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
+        self.mach.iter().copied().zip(self.value.iter().copied())
     }
 
     /// The Mach range covered.
@@ -452,6 +512,10 @@ pub struct AeroModel {
     pub zero_lift_drag: Source,
     pub drag_due_to_lift: Source,
     pub aerodynamic_centre: Source,
+    /// The user's (or DATCOM's) derivative tables, applied to the
+    /// derivative set computed from the above
+    /// ([`crate::derivative_tables`]).
+    pub derivatives: DerivativeTables,
 }
 
 /// The lift slope and aerodynamic centre a damping model's own theory
@@ -475,6 +539,8 @@ pub struct TheoryCoefficients {
 pub enum Origin {
     /// The user's table.
     Table,
+    /// A table made from a DATCOM output ([`crate::datcom`]).
+    Datcom,
     /// The method of [`defaults`] (for K = ∂C_D/∂C_L²: 1/a of the lift
     /// slope used, whatever its origin).
     Method,
@@ -489,6 +555,7 @@ impl Origin {
     pub fn describe(self) -> String {
         match self {
             Origin::Table => "your table".to_string(),
+            Origin::Datcom => "DATCOM's output (--datcom, [model] datcom)".to_string(),
             Origin::Method => "the default method (docs/models.md)".to_string(),
             Origin::DampingModel(name) => format!("the damping model `{name}`'s own theory"),
             Origin::LiftingSurface => "the doublet lattice (--aero lifting-surface)".to_string(),
@@ -500,6 +567,7 @@ impl Serialize for Origin {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         s.serialize_str(match self {
             Origin::Table => "table",
+            Origin::Datcom => "datcom",
             Origin::Method => "method",
             Origin::DampingModel(name) => name,
             Origin::LiftingSurface => "lifting-surface",
@@ -570,7 +638,13 @@ fn resolve(
     method: impl FnOnce() -> Result<Value, AeroError>,
 ) -> Result<(Value, Origin), AeroError> {
     match (source, own, lattice) {
-        (Source::Table(t), _, _) => Ok((t.at(m)?, Origin::Table)),
+        (Source::Table(t), _, _) => {
+            let origin = match t.origin() {
+                TableOrigin::User => Origin::Table,
+                TableOrigin::Datcom => Origin::Datcom,
+            };
+            Ok((t.at(m)?, origin))
+        }
         (Source::LiftingSurface, _, Some((p, of))) => {
             let (v, d) = of(&lifting_surface_steady(p, m)?);
             Ok((Value::new(v, d), Origin::LiftingSurface))

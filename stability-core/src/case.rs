@@ -19,6 +19,7 @@ use crate::damping::{
     Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,
     damping_derivatives_with, theory_coefficients, x_q, x_wdot,
 };
+use crate::derivative_tables::TableUse;
 use crate::faired;
 use crate::geometry::Planform;
 use crate::invalid::{self, Invalid};
@@ -231,6 +232,9 @@ pub struct CaseResult {
     pub analysis: Analysis,
     pub frequency: Option<FrequencyIteration>,
     pub warnings: Warnings,
+    /// What each derivative table of the aerodynamic model did
+    /// ([`crate::derivative_tables`]): the derivatives above are with them.
+    pub tables: Vec<TableUse>,
 }
 
 /// The inputs of a design point that [`evaluate`] checks before use.
@@ -390,6 +394,7 @@ fn evaluate_with(
         analysis: run.analysis,
         frequency,
         warnings,
+        tables: run.tables,
     })
 }
 
@@ -412,6 +417,7 @@ struct Run {
     damping: Damping,
     derivatives: Derivatives,
     analysis: Analysis,
+    tables: Vec<TableUse>,
 }
 
 impl<'a> Point<'a> {
@@ -454,8 +460,20 @@ impl<'a> Point<'a> {
     }
 
     fn run(&self, omega_bar: Option<f64>) -> Result<Run, CaseError> {
-        let damping = damping_at(self.case, &self.wing, omega_bar, self.harmonic)?;
-        let derivatives = self.derivatives(&damping.derivatives);
+        let mut damping = damping_at(self.case, &self.wing, omega_bar, self.harmonic)?;
+        let computed = self.derivatives(&damping.derivatives);
+        let (derivatives, tables) =
+            self.case
+                .aero
+                .derivatives
+                .apply(&computed, self.case.h, self.case.mach)?;
+        // the damping four as used, tables included
+        damping.derivatives = DampingDerivatives {
+            z_q: derivatives.z_q,
+            z_wdot: derivatives.z_wdot,
+            m_q: derivatives.m_q,
+            m_wdot: derivatives.m_wdot,
+        };
         let analysis = if self.classical {
             Analysis::of(&derivatives)?
         } else {
@@ -465,6 +483,7 @@ impl<'a> Point<'a> {
             damping,
             derivatives,
             analysis,
+            tables,
         })
     }
 

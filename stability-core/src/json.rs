@@ -299,6 +299,7 @@ impl Serialize for CaseView<'_> {
                 fig18: &r.damping.fig18,
                 frequency: &r.frequency,
             },
+            derivative_tables: &r.tables,
             analysis: AnalysisJson::new(&r.analysis, self.tau, Some(margins)),
             warnings: &r.warnings,
         }
@@ -311,6 +312,8 @@ struct CaseJson<'a> {
     case: CaseKeys,
     aerodynamics: &'a crate::aero::Coefficients,
     derivatives: &'a Derivatives,
+    /// What each derivative table did (`[model.tables]`, DATCOM's).
+    derivative_tables: &'a [crate::derivative_tables::TableUse],
     damping: DampingJson<'a>,
     #[serde(flatten)]
     analysis: AnalysisJson<'a>,

@@ -12,7 +12,7 @@
 //! | §2.2 the planform | [`geometry`] |
 //! | §5–6 aerodynamic coefficients, stiffness derivatives | [`aero`], [`stiffness`] |
 //! | §7 the damping derivatives and their theories; the faired model of Figs 19–24 | [`theory`], [`damping`], [`faired`], [`supersonic`] (supersonic leading edges), [`lifting_surface`] (subsonic lifting surface) |
-//! | §3 the derivative set | [`derivatives`] |
+//! | §3 the derivative set; the user's tables of derivatives; DATCOM's derivatives in the report's notation | [`derivatives`], [`derivative_tables`], [`datcom`] |
 //! | §3–4, eqs (4)–(6) the stability quartic; its roots | [`quartic`], [`roots`] |
 //! | §4, eqs (7)–(8) the modes; the report's own method | [`modes`], [`classical`] |
 //! | §4 Routh, §8 the damping standard, §9 margins | [`criteria`] |
@@ -43,6 +43,8 @@ pub mod classical;
 pub mod criteria;
 pub mod damp;
 pub mod damping;
+pub mod datcom;
+pub mod derivative_tables;
 pub mod derivatives;
 pub mod dimensional;
 pub mod display;

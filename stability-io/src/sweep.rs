@@ -9,6 +9,7 @@
 
 use crate::config::physical::Physical;
 use crate::limits::{self, Limit};
+use stability_core::aero::{Source, TableOrigin};
 use stability_core::case::Case;
 use stability_core::display::{Num, sig};
 use stability_core::grid;
@@ -109,10 +110,16 @@ const LIMITS: [Option<&Limit>; 5] = [
 /// Why μ₁ or i_B cannot be an axis at a physical flight condition.
 pub const FIXED_BY_FLIGHT: &str = "the config's flight condition is physical (mass, I_y, altitude…), which fixes μ₁ and i_B; vary the config's mass, I_y or altitude instead, or give mu1, i_b and cl_m2 in [flight]";
 
+/// Whether a case's lift slope comes from a DATCOM output's table.
+fn from_datcom(case: &Case) -> bool {
+    matches!(&case.aero.lift_slope, Source::Table(t) if t.origin() == TableOrigin::Datcom)
+}
+
 /// The axes of a sweep about `base`: each given one within its range, the
 /// others the base's values (its sweep angle rounded to the decimals it
 /// stands for; the library then uses the base's own planform for it). At
-/// a physical flight condition μ₁ and i_B may not be given.
+/// a physical flight condition μ₁ and i_B may not be given; with a DATCOM
+/// output's tables, the sweep angle may not change.
 pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError> {
     if physical {
         for (axis, g) in [(3, &given.mu1), (4, &given.i_b)] {
@@ -129,6 +136,15 @@ pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError
         base.mu1,
         base.i_b,
     ];
+    if from_datcom(base)
+        && given
+            .sweep_deg
+            .as_ref()
+            .is_some_and(|v| v.iter().any(|x| *x != defaults[1]))
+    {
+        let message = "the model's tables come from a DATCOM output, which is of one planform (its reference area, M.A.C. and moment centre): sweep the planform with one DATCOM run per sweep".to_string();
+        return Err(AxisError { axis: 1, message });
+    }
     let given = [given.mach, given.sweep_deg, given.cg, given.mu1, given.i_b];
     let mut out: [Vec<f64>; 5] = Default::default();
     for (axis, v) in given.into_iter().enumerate() {

@@ -88,6 +88,11 @@ pub struct AnalyzeJson<'a> {
     file: &'a str,
     #[serde(skip_serializing_if = "Option::is_none")]
     flight: Option<FlightJson>,
+    /// The DATCOM output the tables come from, when one does.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    datcom: Option<DatcomJson<'a>>,
+    /// Where the model's tables come from, in words.
+    tables: Vec<String>,
     #[serde(flatten)]
     point: CaseView<'a>,
     #[serde(flatten)]
@@ -99,10 +104,28 @@ impl<'a> AnalyzeJson<'a> {
         AnalyzeJson {
             file: &cfg.path,
             flight: res.flight.map(|(f, p)| f.json(&p)),
+            datcom: cfg.datcom.as_ref().map(|d| DatcomJson {
+                file: &d.output.path,
+                configuration: &d.output.configuration,
+                reference_cg: d.tables.reference_cg,
+                mach: d.output.points.iter().map(|p| p.mach).collect(),
+            }),
+            tables: cfg.tables_summary(),
             point: res.result.view_timed(&cfg.case, res.tau()),
             engineering: &res.engineering,
         }
     }
+}
+
+/// A DATCOM output's particulars (`analyze --json`'s `datcom`).
+#[derive(Serialize)]
+pub struct DatcomJson<'a> {
+    pub file: &'a str,
+    pub configuration: &'a str,
+    /// DATCOM's moment centre h (fraction of the M.A.C.).
+    pub reference_cg: f64,
+    /// Its Mach numbers.
+    pub mach: Vec<f64>,
 }
 
 /// One input's sensitivities, with the rates also in 1/s when τ is known.

@@ -396,3 +396,65 @@ fn expand(text: &str) -> String {
 fn the_corpus_expands_as_documented() {
     assert_eq!(expand("# repeat 3\nx = \"⟨a⟩\"\ny"), "\nx = \"aaa\"\ny");
 }
+
+/// The DATCOM fixture with line `l` damaged: a token replaced by `v`,
+/// the line deleted, repeated or shifted right by `k` columns.
+fn damage_datcom(text: &str, l: usize, how: u8, v: &str, k: usize) -> String {
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let n = lines.len();
+    let i = l % n;
+    match how % 4 {
+        0 => {
+            let words: Vec<&str> = lines[i].split_whitespace().collect();
+            if let Some(w) = words.get(k % words.len().max(1)) {
+                lines[i] = lines[i].replacen(w, v, 1);
+            }
+        }
+        1 => {
+            lines.remove(i);
+        }
+        2 => {
+            let copy = lines[i].clone();
+            lines.insert(i, copy);
+        }
+        _ => lines[i] = format!("{}{}", " ".repeat(k % 12), lines[i]),
+    }
+    lines.join("\n")
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// A damaged DATCOM output gives finite points whose tables are made
+    /// or refused, or an error at its line and column (or, with no table
+    /// left, one naming the file): never a panic.
+    #[test]
+    fn damaged_datcom_outputs_give_finite_points_or_a_located_error(
+        l in 0usize..1400, how in 0u8..4, v in values(), k in 0usize..14,
+        l2 in 0usize..1400, how2 in 0u8..4,
+    ) {
+        let base = include_str!("fixtures/datcom/delta60_h0.0.out");
+        let text = damage_datcom(&damage_datcom(base, l, how, &v, k), l2, how2, &v, k + 1);
+        match stability_io::input::datcom::parse("d.out", &text) {
+            Ok(o) => {
+                for p in &o.points {
+                    let all = [p.mach, p.reference.area, p.reference.length, p.reference.moment_x];
+                    prop_assert!(all.iter().all(|x| x.is_finite()), "{p:?}");
+                    let given = [p.cd, p.cla, p.cma, p.clq, p.cmq, p.clad, p.cmad];
+                    prop_assert!(given.iter().flatten().all(|x| x.is_finite()), "{p:?}");
+                }
+                let wing = stability_core::geometry::Planform::new(
+                    60f64.to_radians(), 0.0, stability_core::geometry::Size::RootChord(10.0),
+                ).unwrap();
+                let _ = stability_core::datcom::tables(&o.points, &wing, o.apex_x);
+            }
+            Err(e) => {
+                let m = e.to_string();
+                prop_assert!(
+                    located_and_short(&m).is_ok() || m.starts_with("d.out: no static or dynamic"),
+                    "{m}"
+                );
+            }
+        }
+    }
+}

@@ -13,6 +13,7 @@ use stability_core::aero::{Coefficients, Origin};
 use stability_core::case::{CaseResult, DampingModel, FrequencyIteration};
 use stability_core::criteria::Margins;
 use stability_core::damping::Theory;
+use stability_core::derivative_tables::Mode;
 use stability_core::display::sig;
 use stability_core::flight::{FlightPoint, PhysicalFlight};
 use stability_io::config::{self, Overrides, overridden};
@@ -220,11 +221,31 @@ fn design_point(s: &mut String, cfg: &config::Config, r: &CaseResult) {
         sig(r.c_l, 4)
     );
     aerodynamics(s, &r.coefficients, c.damping);
+    for line in cfg.tables_summary() {
+        let _ = writeln!(s, "  tables: {line}");
+    }
+    for t in &r.tables {
+        let _ = writeln!(s, "    {}", t.describe());
+    }
+    // the damping four from value tables: the theory's are not used
+    let tabled = ["z_q", "z_wdot", "m_q", "m_wdot"].iter().all(|n| {
+        r.tables
+            .iter()
+            .any(|t| t.derivative == *n && t.table.is_some() && t.mode == Mode::Value)
+    });
+    let theory = format!(
+        "{} {}",
+        r.damping.theory.name(),
+        r.damping.theory.equations()
+    );
     let _ = writeln!(
         s,
-        "  damping: {} {}; z_θ̇ = {}, m_θ̇ = {}",
-        r.damping.theory.name(),
-        r.damping.theory.equations(),
+        "  damping: {}; z_θ̇ = {}, m_θ̇ = {}",
+        if tabled {
+            format!("z_q, z_ẇ, m_q, m_ẇ from the tables (the theory {theory} not used)")
+        } else {
+            theory
+        },
         sig(r.damping.derivatives.z_thetadot(), 4),
         sig(r.damping.derivatives.m_thetadot(), 4)
     );

@@ -132,7 +132,11 @@ pub fn run(o: &Args) -> Result<(), Failure> {
     }
     file.commit().map_err(write_err)?;
     bar.finish_and_clear();
-    crate::output::print(&format!("wrote {total} design points to {}\n", o.output))
+    let mut message = format!("wrote {total} design points to {}\n", o.output);
+    for line in cfg.tables_summary() {
+        message.push_str(&format!("  tables: {line}\n"));
+    }
+    crate::output::print(&message)
 }
 
 /// The points of a chunk.

@@ -87,7 +87,7 @@ pub(crate) fn coefficient_joins<'a>(
             match origin {
                 Origin::Method => out.push(methods),
                 Origin::DampingModel(_) | Origin::LiftingSurface => out.extend(faired::JOINS),
-                Origin::Table => {}
+                Origin::Table | Origin::Datcom => {}
             }
         }
     }

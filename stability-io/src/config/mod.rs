@@ -25,10 +25,14 @@
 //! omega_bar = 0.3       # lifting-surface: the ω̄ it is evaluated at (default 0, quasi-steady);
 //!                       # the iterated theories and faired: the starting ω̄ (default √(−m_w/(μ₁i_B)))
 //! iterate_frequency = true
+//! datcom = "for006.dat" # optional: a DATCOM output's tables (docs/tables.md)
 //! [model.tables]        # optional: the user's curves instead of the defaults
 //! lift_slope = { mach = [0.5, 0.9, 1.2], value = [3.1, 3.6, 3.4] }
 //! zero_lift_drag = { file = "cd0.csv" }   # two columns, Mach and value (a header line optional)
 //! # drag_due_to_lift, aerodynamic_centre likewise
+//! m_q = { mach = [0.5, 1.2], values = [-0.9, -0.6], mode = "value", cg = 0.25 }
+//! z_u = { file = "dz_u.csv", mode = "increment" }   # added to the computed z_u
+//! # any of x_u x_w x_wdot x_q z_u z_w z_wdot z_q m_u m_w m_wdot m_q (z_ẇ, m_ẇ too)
 //! ```
 //!
 //! An optional `[control]` table gives the control derivatives of
@@ -42,13 +46,14 @@ pub mod tables;
 
 use crate::Failure;
 use crate::diag::{InputError, quote};
+use crate::input::datcom::Datcom;
 use crate::input::toml_error;
 use crate::limits;
 use raw::{RawConfig, RawModel, RawPlanform};
-use stability_core::aero::{AeroError, AeroModel, AeroModelName, Source};
+use stability_core::aero::{AeroError, AeroModel, AeroModelName};
 use stability_core::case::{Case, CaseError, DampingModel};
 use stability_core::damping::DampingError;
-use stability_core::display::Num;
+use stability_core::display::{Num, sig};
 use stability_core::geometry::{GeometryError, Planform, Size};
 use stability_core::lifting_surface::LiftingSurfaceError;
 use std::ops::Range;
@@ -66,6 +71,12 @@ pub struct Config {
     /// The physical flight condition, when `[flight]` gives one
     /// ([`physical`]); `case` then holds the μ₁, i_B and C_L·M² it gives.
     pub physical: Option<physical::Physical>,
+    /// The user's own tables (`[model.tables]`), which win over a DATCOM
+    /// output's.
+    pub tables: AeroModel,
+    /// The DATCOM output the model takes its tables from (`[model]
+    /// datcom`, `--datcom`).
+    pub datcom: Option<Datcom>,
     text: String,
     /// Where each value (and table) was written: field and span.
     spans: Vec<(String, Range<usize>)>,
@@ -165,14 +176,19 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
         omega_bar: None,
         iterate_frequency: true,
     };
-    if let Some(m) = &raw.model {
-        r.spans.push(("[model]".into(), m.span()));
-        model(&mut r, m.get_ref(), &mut case)?;
-    }
+    let (tables, datcom) = match &raw.model {
+        Some(m) => {
+            r.spans.push(("[model]".into(), m.span()));
+            model(&mut r, m.get_ref(), &mut case)?
+        }
+        None => (AeroModel::default(), None),
+    };
     Ok(Config {
         path: path.to_string(),
         case,
         physical,
+        tables,
+        datcom,
         text: text.to_string(),
         spans: r.spans,
         overridden: Vec::new(),
@@ -261,7 +277,21 @@ fn planform(r: &mut Reader<'_>, p: &Spanned<RawPlanform>) -> Result<Planform, In
     Ok(planform)
 }
 
-fn model(r: &mut Reader<'_>, m: &RawModel, case: &mut Case) -> Result<(), Failure> {
+/// A file a config names, relative to the config's directory.
+pub fn relative(config: &str, file: &str) -> std::path::PathBuf {
+    Path::new(config)
+        .parent()
+        .unwrap_or(Path::new("."))
+        .join(file)
+}
+
+/// `[model]`: the damping and aerodynamic models, the tables and the
+/// DATCOM output; returns the user's tables and the DATCOM output.
+fn model(
+    r: &mut Reader<'_>,
+    m: &RawModel,
+    case: &mut Case,
+) -> Result<(AeroModel, Option<Datcom>), Failure> {
     if let Some(d) = &m.damping {
         r.spans.push(("[model] damping".into(), d.span()));
         case.damping = DampingModel::parse(d.get_ref()).map_err(|_| {
@@ -284,22 +314,29 @@ fn model(r: &mut Reader<'_>, m: &RawModel, case: &mut Case) -> Result<(), Failur
     if let Some(it) = m.iterate_frequency {
         case.iterate_frequency = it;
     }
-    if let Some(t) = &m.tables {
-        r.spans.push(("[model.tables]".into(), t.span()));
-        let t = t.get_ref();
-        let get = |name: &str, t: &Option<Spanned<raw::RawTable>>| -> Result<Source, Failure> {
-            match t {
-                Some(t) => Ok(Source::Table(tables::table_from(r.path, r.text, name, t)?)),
-                None => Ok(Source::Default),
-            }
-        };
-        case.aero = AeroModel {
-            lift_slope: get("lift_slope", &t.lift_slope)?,
-            zero_lift_drag: get("zero_lift_drag", &t.zero_lift_drag)?,
-            drag_due_to_lift: get("drag_due_to_lift", &t.drag_due_to_lift)?,
-            aerodynamic_centre: get("aerodynamic_centre", &t.aerodynamic_centre)?,
-        };
-    }
+    let user = match &m.tables {
+        Some(t) => {
+            r.spans.push(("[model.tables]".into(), t.span()));
+            tables::user_tables(r.path, r.text, t.get_ref())?
+        }
+        None => AeroModel::default(),
+    };
+    let datcom = match &m.datcom {
+        Some(d) => {
+            r.spans.push(("[model] datcom".into(), d.span()));
+            let file = relative(r.path, d.get_ref());
+            let named_at = r.err(d.span(), "[model] datcom", String::new());
+            Some(Datcom::load(&file, &case.planform).map_err(|e| match e {
+                Failure::Io(e) => Failure::Io(e.named_at(&named_at)),
+                other => other,
+            })?)
+        }
+        None => None,
+    };
+    case.aero = match &datcom {
+        Some(d) => d.tables.under(&user),
+        None => user.clone(),
+    };
     if let Some(a) = &m.aero {
         r.spans.push(("[model] aero".into(), a.span()));
         let name = AeroModelName::parse(a.get_ref()).ok_or_else(|| {
@@ -318,10 +355,51 @@ fn model(r: &mut Reader<'_>, m: &RawModel, case: &mut Case) -> Result<(), Failur
         // a table wins over the named model for its coefficient
         case.aero = case.aero.clone().with_name(name);
     }
-    Ok(())
+    Ok((user, datcom))
 }
 
 impl Config {
+    /// Where the model's tables come from, one line each (none without
+    /// tables): the DATCOM output and which quantities it gives, and the
+    /// user's own tables.
+    pub fn tables_summary(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if let Some(d) = &self.datcom {
+            let derivatives: Vec<&str> = d.tables.derivatives.0.iter().map(|t| t.name).collect();
+            out.push(format!(
+                "{}: the lift slope, aerodynamic centre{}, and {} (about h = {}, moved to the c.g.)",
+                d.describe(),
+                if d.tables.zero_lift_drag.is_some() { ", C_D0" } else { "" },
+                derivatives.join(", "),
+                sig(d.tables.reference_cg, 3),
+            ));
+        }
+        let mine: Vec<String> = [
+            ("lift_slope", &self.tables.lift_slope),
+            ("zero_lift_drag", &self.tables.zero_lift_drag),
+            ("drag_due_to_lift", &self.tables.drag_due_to_lift),
+            ("aerodynamic_centre", &self.tables.aerodynamic_centre),
+        ]
+        .into_iter()
+        .filter(|(_, s)| matches!(s, stability_core::aero::Source::Table(_)))
+        .map(|(n, _)| n.to_string())
+        .chain(self.tables.derivatives.0.iter().map(|t| {
+            let mode = match t.mode {
+                stability_core::derivative_tables::Mode::Value => "value",
+                stability_core::derivative_tables::Mode::Increment => "increment",
+            };
+            match t.reference_cg {
+                Some(h) => format!("{} ({mode}, about h = {})", t.name, sig(h, 3)),
+                None => format!("{} ({mode})", t.name),
+            }
+        }))
+        .collect();
+        if !mine.is_empty() {
+            out.push(format!("your [model.tables]: {}", mine.join(", ")));
+        }
+        out
+    }
+
     /// The config's text, as read.
     pub fn text(&self) -> &str {
         &self.text
@@ -361,6 +439,7 @@ impl Config {
         let field = match e {
             CaseError::Aero(
                 AeroError::OutsideTable { .. }
+                | AeroError::OutsideDerivativeTable { .. }
                 | AeroError::OutsideDefaults(_)
                 | AeroError::LatticeMach(_),
             ) => "[flight] mach",

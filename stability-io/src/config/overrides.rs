@@ -1,5 +1,5 @@
 //! A config's values replaced from outside the file: the command line's
-//! `--mach`, `--cg`, `--damping`, `--aero` and `--omega-bar`, and the
+//! `--mach`, `--cg`, `--damping`, `--aero`, `--omega-bar` and `--datcom`, and the
 //! Python package's keywords of the same names. Each value is checked
 //! against its range ([`crate::limits`]), and an error about a replaced
 //! value names the flag that replaced it.
@@ -7,6 +7,7 @@
 use super::Config;
 use crate::Failure;
 use crate::diag::InputError;
+use crate::input::datcom::Datcom;
 use crate::limits;
 use stability_core::aero::AeroModelName;
 use stability_core::case::DampingModel;
@@ -22,6 +23,9 @@ pub struct Overrides {
     /// `--omega-bar W`: the frequency-dependent theories at ω̄ = W (not
     /// iterated).
     pub omega_bar: Option<f64>,
+    /// `--datcom FILE`: a DATCOM output's tables in place of the config's
+    /// (`[model] datcom`); the config's own `[model.tables]` still win.
+    pub datcom: Option<String>,
 }
 
 /// The config at `path` with `o` applied (`analyze`'s and `sweep`'s).
@@ -47,6 +51,13 @@ pub fn apply(cfg: &mut Config, o: &Overrides) -> Result<(), Failure> {
     if let Some(h) = o.cg {
         cfg.case.h = limits::CG.check(h).map_err(|e| bad("--cg", e))?;
         cfg.overridden_by("[flight] cg", format!("--cg {}", Num(h)));
+    }
+    if let Some(file) = &o.datcom {
+        let d = Datcom::load(std::path::Path::new(file), &cfg.case.planform)?;
+        // (its lift slope and aerodynamic centre are tables: no named model applies to them)
+        cfg.case.aero = d.tables.under(&cfg.tables);
+        cfg.datcom = Some(d);
+        cfg.overridden_by("[model] datcom", format!("--datcom {file}"));
     }
     if let Some(a) = o.aero {
         cfg.case.aero = cfg.case.aero.clone().with_name(a);

@@ -54,22 +54,26 @@ pub struct RawModel {
     pub aero: Option<Spanned<String>>,
     pub omega_bar: Option<Spanned<f64>>,
     pub iterate_frequency: Option<bool>,
+    /// A DATCOM output (`for006.dat`) whose tables the model takes.
+    pub datcom: Option<Spanned<String>>,
     pub tables: Option<Spanned<RawTables>>,
 }
 
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct RawTables {
-    pub lift_slope: Option<Spanned<RawTable>>,
-    pub zero_lift_drag: Option<Spanned<RawTable>>,
-    pub drag_due_to_lift: Option<Spanned<RawTable>>,
-    pub aerodynamic_centre: Option<Spanned<RawTable>>,
-}
+/// The tables by name: the coefficients of §6 (`lift_slope`,
+/// `zero_lift_drag`, `drag_due_to_lift`, `aerodynamic_centre`) and the
+/// derivatives of the report's notation (`m_q`, `z_wdot` or `z_ẇ`, …).
+pub type RawTables = std::collections::BTreeMap<String, Spanned<RawTable>>;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawTable {
     pub mach: Option<Vec<f64>>,
+    #[serde(alias = "values")]
     pub value: Option<Vec<f64>>,
     pub file: Option<Spanned<String>>,
+    /// A derivative's: `value` (the default) or `increment`.
+    pub mode: Option<Spanned<String>>,
+    /// A derivative's: the c.g. h its values are about (default: the
+    /// case's).
+    pub cg: Option<Spanned<f64>>,
 }

@@ -1,15 +1,109 @@
 //! The user's aerodynamic tables (`[model.tables]`): inline
-//! (`mach = [...]`, `value = [...]`) or a two-column CSV file (Mach,
-//! value). A CSV file's first line is a header when none of its cells is
-//! a number; a file without a header is used whole, and a cell of a row
-//! that is not a number is an error at its line and column.
+//! (`mach = [...]`, `value = [...]` or `values = [...]`) or a two-column
+//! CSV file (Mach, value). A CSV file's first line is a header when none
+//! of its cells is a number; a file without a header is used whole, and a
+//! cell of a row that is not a number is an error at its line and column.
+//!
+//! A table is of a coefficient of §6 ([`COEFFICIENTS`]) or of a derivative
+//! of the report's notation ([`stability_core::derivative_tables::NAMES`],
+//! `z_ẇ` and `m_ẇ` also so spelt), the latter with `mode = "value"` (the
+//! default) or `"increment"` and, optionally, `cg = h`, the c.g. its values
+//! are about.
 
-use super::raw::RawTable;
+use super::raw::{RawTable, RawTables};
 use crate::Failure;
 use crate::diag::{InputError, quote};
-use stability_core::aero::{AeroError, Table};
-use std::path::Path;
+use crate::input::suggest::did_you_mean;
+use crate::limits;
+use stability_core::aero::{AeroError, AeroModel, Source, Table};
+use stability_core::derivative_tables::{self, DerivativeTable, Mode, Outside};
 use toml::Spanned;
+
+/// The coefficients of §6 a table may give.
+pub const COEFFICIENTS: [&str; 4] = [
+    "lift_slope",
+    "zero_lift_drag",
+    "drag_due_to_lift",
+    "aerodynamic_centre",
+];
+
+/// The model's sources from the user's tables: each coefficient's table,
+/// and the derivative tables (in the order of their names).
+pub fn user_tables(path: &str, text: &str, tables: &RawTables) -> Result<AeroModel, Failure> {
+    let mut aero = AeroModel::default();
+    for (name, t) in tables {
+        let raw = t.get_ref();
+        let field = format!("[model.tables] {name}");
+        let at = |span: std::ops::Range<usize>, m: String| {
+            Failure::from(InputError::at(path, text, span, field.clone(), m))
+        };
+        if let Some(k) = COEFFICIENTS.iter().position(|c| c == name) {
+            if let Some(s) = raw
+                .mode
+                .as_ref()
+                .map(|m| m.span())
+                .or(raw.cg.as_ref().map(|c| c.span()))
+            {
+                return Err(at(s, "`mode` and `cg` belong to a derivative's table; a coefficient's table gives its value".into()));
+            }
+            let source = Source::Table(table_from(path, text, name, t)?);
+            match k {
+                0 => aero.lift_slope = source,
+                1 => aero.zero_lift_drag = source,
+                2 => aero.drag_due_to_lift = source,
+                _ => aero.aerodynamic_centre = source,
+            }
+            continue;
+        }
+        let Some(derivative) = derivative_tables::named(name) else {
+            let names = COEFFICIENTS.iter().chain(&derivative_tables::NAMES);
+            return Err(at(
+                t.span(),
+                format!(
+                    "unknown table `{}`{}; the tables are: {}",
+                    quote(name),
+                    did_you_mean(name, names.clone().copied()),
+                    names.copied().collect::<Vec<_>>().join(", ")
+                ),
+            ));
+        };
+        if aero.derivatives.0.iter().any(|d| d.name == derivative) {
+            return Err(at(
+                t.span(),
+                format!("{derivative} has two tables (one spelt otherwise); give one"),
+            ));
+        }
+        let mode = match &raw.mode {
+            None => Mode::Value,
+            Some(m) => Mode::parse(m.get_ref()).ok_or_else(|| {
+                at(
+                    m.span(),
+                    format!(
+                        "mode is `value` or `increment`, not `{}`",
+                        quote(m.get_ref())
+                    ),
+                )
+            })?,
+        };
+        let reference_cg = match &raw.cg {
+            None => None,
+            Some(c) => Some(
+                limits::CG
+                    .check(*c.get_ref())
+                    .map_err(|m| at(c.span(), m))?,
+            ),
+        };
+        aero.derivatives.0.push(DerivativeTable {
+            name: derivative,
+            table: table_from(path, text, name, t)?,
+            mode,
+            reference_cg,
+            outside: Outside::Refuse,
+            missing: Vec::new(),
+        });
+    }
+    Ok(aero)
+}
 
 pub fn table_from(
     path: &str,
@@ -25,10 +119,7 @@ pub fn table_from(
             Ok(Table::new(m.clone(), v.clone()).map_err(|e| at(e.to_string()))?)
         }
         (None, None, Some(f)) => {
-            let file = Path::new(path)
-                .parent()
-                .unwrap_or(Path::new("."))
-                .join(f.get_ref());
+            let file = super::relative(path, f.get_ref());
             let named_at = InputError::at(path, text, f.span(), field.clone(), "");
             let csv = crate::files::read_input(&file).map_err(|e| match e {
                 Failure::Io(e) => Failure::Io(e.named_at(&named_at)),
@@ -170,5 +261,56 @@ mod tests {
             let e = read_csv_table("t.csv", text).unwrap_err();
             assert!(e.to_string().starts_with(at), "{text:?}: {e}");
         }
+    }
+}
+
+#[cfg(test)]
+mod derivative_table_tests {
+    const BASE: &str = "[planform]\nsweep = 60.0\nroot_chord = 10.0\n[flight]\nmach = 0.9\ncg = 0.25\nmu1 = 50.0\ni_b = 0.08\ncl_m2 = 0.05\n[model.tables]\n";
+
+    fn error(tables: &str) -> String {
+        crate::config::parse("c.toml", &format!("{BASE}{tables}"))
+            .unwrap_err()
+            .to_string()
+    }
+
+    #[test]
+    fn mode_and_cg_are_checked_and_located() {
+        let e = error("m_q = { mach = [0.5, 1.0], value = [1.0, 1.0], mode = \"add\" }\n");
+        assert!(
+            e.starts_with("c.toml:11:") && e.contains("`value` or `increment`, not `add`"),
+            "{e}"
+        );
+        let e = error("lift_slope = { mach = [0.5, 1.0], value = [3.0, 3.0], cg = 0.1 }\n");
+        assert!(e.contains("belong to a derivative's table"), "{e}");
+        let e = error("m_q = { mach = [0.5, 1.0], value = [1.0, 1.0], cg = 900.0 }\n");
+        assert!(e.contains("[model.tables] m_q"), "{e}");
+        let e = error(
+            "z_wdot = { mach = [0.5, 1.0], value = [1.0, 1.0] }\n\"z_ẇ\" = { mach = [0.5, 1.0], value = [1.0, 1.0] }\n",
+        );
+        assert!(e.contains("two tables"), "{e}");
+    }
+
+    #[test]
+    fn the_old_tables_and_the_new_are_read() {
+        let c = crate::config::parse(
+            "c.toml",
+            &format!(
+                "{BASE}lift_slope = {{ mach = [0.5, 1.0], value = [3.0, 3.2] }}\n\"m_ẇ\" = {{ mach = [0.5, 1.0], values = [-0.1, -0.1], mode = \"increment\", cg = 0.0 }}\n"
+            ),
+        )
+        .unwrap();
+        let d = &c.case.aero.derivatives.0;
+        assert_eq!(d.len(), 1);
+        assert_eq!(d[0].name, "m_wdot");
+        assert_eq!(
+            d[0].mode,
+            stability_core::derivative_tables::Mode::Increment
+        );
+        assert_eq!(d[0].reference_cg, Some(0.0));
+        assert!(matches!(
+            c.case.aero.lift_slope,
+            stability_core::aero::Source::Table(_)
+        ));
     }
 }

@@ -33,6 +33,7 @@
 pub mod analysis;
 pub mod avl;
 pub mod check;
+pub mod datcom;
 pub mod dimensional;
 pub mod dimensional_notation;
 pub mod raw;
