@@ -69,6 +69,7 @@ pub mod study;
 pub mod supersonic;
 pub mod sweep;
 pub mod theory;
+pub mod uncertainty;
 pub mod units;
 pub mod verdict;
 pub mod warnings;
