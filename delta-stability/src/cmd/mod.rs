@@ -7,3 +7,4 @@ pub mod report;
 pub mod response;
 pub mod sensitivity;
 pub mod sweep;
+pub mod uncertainty;

@@ -39,6 +39,7 @@ pub mod overrides;
 pub mod physical;
 pub mod raw;
 pub mod tables;
+pub mod uncertainty;
 
 use crate::Failure;
 use crate::diag::{InputError, quote};
