@@ -163,10 +163,15 @@ fn the_probabilities_agree_with_a_plain_loop_monte_carlo() {
     let p_loop = met as f64 / n as f64;
     let se = |p: f64| (p * (1.0 - p) / n as f64).sqrt();
     let se2 = (se(p_loop).powi(2) + s.standard_met.se().powi(2)).sqrt();
-    assert!(p_loop > 0.2 && p_loop < 0.8, "a case with both verdicts: {p_loop}");
+    assert!(
+        p_loop > 0.2 && p_loop < 0.8,
+        "a case with both verdicts: {p_loop}"
+    );
     within(s.standard_met.p, p_loop, se2, "P(§8) against the loop");
     let d_loop = divergent as f64 / n as f64;
-    let se2 = (se(d_loop).powi(2) + s.divergent.se().powi(2)).sqrt().max(1.0 / n as f64);
+    let se2 = (se(d_loop).powi(2) + s.divergent.se().powi(2))
+        .sqrt()
+        .max(1.0 / n as f64);
     within(s.divergent.p, d_loop, se2, "P(divergent) against the loop");
     // the medians of ζ: within a few standard errors of a median
     zeta.sort_by(f64::total_cmp);
@@ -216,8 +221,14 @@ fn a_seed_gives_the_same_bits_on_1_2_and_8_threads() {
         sobol: false,
     };
     let on = |t| {
-        let pool = rayon::ThreadPoolBuilder::new().num_threads(t).build().unwrap();
-        format!("{:?}", pool.install(|| study.run(&[0.9], &options, &|_| {})))
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(t)
+            .build()
+            .unwrap();
+        format!(
+            "{:?}",
+            pool.install(|| study.run(&[0.9], &options, &|_| {}))
+        )
     };
     assert_eq!(on(1), on(8));
 }
@@ -251,8 +262,8 @@ fn model_form_uncertainty_weighs_each_theorys_probability() {
     let both = Study::new(at(base()), None, vec![input()], &[], &[(a, 1.0), (b, 3.0)]).unwrap();
     let s = &both.run(&[1.5], &options, &|_| {})[0];
     let expected = 0.25 * pa.p + 0.75 * pb.p;
-    let se = (s.standard_met.se().powi(2) + (0.25 * pa.se()).powi(2) + (0.75 * pb.se()).powi(2))
-        .sqrt();
+    let se =
+        (s.standard_met.se().powi(2) + (0.25 * pa.se()).powi(2) + (0.75 * pb.se()).powi(2)).sqrt();
     within(s.standard_met.p, expected, se, "the weighted theories");
     assert_eq!(s.sobol.as_ref().unwrap().factors, vec!["m_q", "model"]);
 }
@@ -278,14 +289,20 @@ fn samples_without_a_result_are_counted_not_fatal() {
     let p_neg = 0.158_655_253_931_457; // Φ(−1)
     let p = s.errors as f64 / s.samples as f64;
     within(p, p_neg, (p_neg * (1.0 - p_neg) / 1e4).sqrt(), "P(i_B ≤ 0)");
-    assert!(s.first_error.as_ref().unwrap().contains("i_b"), "{:?}", s.first_error);
+    assert!(
+        s.first_error.as_ref().unwrap().contains("i_b"),
+        "{:?}",
+        s.first_error
+    );
     assert_eq!(s.evaluated + s.errors, s.samples);
 }
 
 #[test]
 fn a_study_that_cannot_run_says_why() {
     let err = |inputs, corr: &[(String, String, f64)]| {
-        Study::new(base(), None, inputs, corr, &[]).unwrap_err().to_string()
+        Study::new(base(), None, inputs, corr, &[])
+            .unwrap_err()
+            .to_string()
     };
     let ib = |sd| Input {
         quantity: Quantity::IB,

@@ -105,7 +105,10 @@ pub fn csv_rows(s: &Summary) -> String {
     quantiles(&mut row, "cycles_to_half", &s.cycles_to_half);
     quantiles(&mut row, "damping_ratio", &s.damping_ratio);
     if let Some(sobol) = &s.sobol {
-        for (output, ix) in [("margin", &sobol.margin), ("damping_ratio", &sobol.damping_ratio)] {
+        for (output, ix) in [
+            ("margin", &sobol.margin),
+            ("damping_ratio", &sobol.damping_ratio),
+        ] {
             for (factor, i) in sobol.factors.iter().zip(ix.iter().flatten()) {
                 indices(&mut row, output, factor, i);
             }

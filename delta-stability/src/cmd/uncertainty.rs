@@ -64,15 +64,19 @@ pub fn run(o: &Args) -> Result<(), Failure> {
         .map(|out| crate::overwrite::Named::new("-o", out))
         .collect();
     crate::overwrite::refuse("CONFIG", &o.config, &read, &outputs)?;
-    let json_out = match o.output.as_deref().map(|p| Path::new(p).extension().and_then(|e| e.to_str())) {
+    let json_out = match o
+        .output
+        .as_deref()
+        .map(|p| Path::new(p).extension().and_then(|e| e.to_str()))
+    {
         None => None,
         Some(Some("csv")) => Some(false),
         Some(Some("json")) => Some(true),
         Some(_) => return Err(bad("-o: the output must end in .csv or .json".into())),
     };
     let study = stability_io::config::uncertainty::read(&cfg)?.ok_or_else(|| {
-        cfg.error_at(
-            "[planform]",
+        InputError::file(
+            &o.config,
             "the config has no [uncertainty] table: give a distribution for an input, e.g. [uncertainty.i_b] dist = \"normal\", relative_sd = 0.1 (see `uncertainty --help`)",
         )
     })?;
@@ -86,7 +90,11 @@ pub fn run(o: &Args) -> Result<(), Failure> {
     let mut results = Vec::with_capacity(machs.len());
     for (k, &m) in machs.iter().enumerate() {
         let done = k as u64 * o.samples;
-        results.push(study.at_mach(m).run(&options, &|n| bar.set_position(done + n)));
+        results.push(
+            study
+                .at_mach(m)
+                .run(&options, &|n| bar.set_position(done + n)),
+        );
     }
     bar.finish_and_clear();
     let view = UncertaintyJson::new(&o.config, &study, &options, &results);
@@ -105,15 +113,22 @@ pub fn run(o: &Args) -> Result<(), Failure> {
 fn progress_bar(total: u64) -> ProgressBar {
     let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
     bar.set_style(
-        ProgressStyle::with_template("{spinner} [{bar:30}] {pos}/{len} samples ({per_sec}, eta {eta})")
-            .unwrap_or_else(|_| ProgressStyle::default_bar())
-            .progress_chars("=> "),
+        ProgressStyle::with_template(
+            "{spinner} [{bar:30}] {pos}/{len} samples ({per_sec}, eta {eta})",
+        )
+        .unwrap_or_else(|_| ProgressStyle::default_bar())
+        .progress_chars("=> "),
     );
     bar
 }
 
 /// OUT written atomically: the JSON view or the long CSV.
-fn write(out: &Path, json: bool, value: &serde_json::Value, results: &[Summary]) -> Result<(), Failure> {
+fn write(
+    out: &Path,
+    json: bool,
+    value: &serde_json::Value,
+    results: &[Summary],
+) -> Result<(), Failure> {
     let write_err = |e: std::io::Error| Failure::Io(write_error(out, &e));
     let text = if json {
         serde_json::to_string_pretty(value).unwrap_or_default() + "\n"
@@ -133,13 +148,26 @@ fn page(results: &[Summary], factors: &[&str], o: &Args) -> String {
         format!("{} [{}, {}]", sig(p.p, 3), sig(p.low, 3), sig(p.high, 3))
     };
     let mut table = vec![
-        ["Mach", "P(§8 met)", "P(meets)", "P(divergent)", "cycles ½ (5, 50, 95 %)", "ζ (5, 50, 95 %)", "errors"]
-            .map(String::from)
-            .to_vec(),
+        [
+            "Mach",
+            "P(§8 met)",
+            "P(meets)",
+            "P(divergent)",
+            "cycles ½ (5, 50, 95 %)",
+            "ζ (5, 50, 95 %)",
+            "errors",
+        ]
+        .map(String::from)
+        .to_vec(),
     ];
     for r in results {
         let q = |q: &stability_core::uncertainty::stats::Quantiles| {
-            format!("{}, {}, {}", sig(q.values[1], 3), sig(q.values[3], 3), sig(q.values[5], 3))
+            format!(
+                "{}, {}, {}",
+                sig(q.values[1], 3),
+                sig(q.values[3], 3),
+                sig(q.values[5], 3)
+            )
         };
         table.push(vec![
             sig(r.mach, 4),
@@ -159,7 +187,11 @@ fn page(results: &[Summary], factors: &[&str], o: &Args) -> String {
     s.push_str(&crate::page::aligned(&table));
     for r in results.iter().filter(|r| r.first_error.is_some()) {
         let e = r.first_error.as_deref().unwrap_or_default();
-        s.push_str(&format!("M = {}: {} samples had no result; the first: {e}\n", sig(r.mach, 4), r.errors));
+        s.push_str(&format!(
+            "M = {}: {} samples had no result; the first: {e}\n",
+            sig(r.mach, 4),
+            r.errors
+        ));
     }
     if o.sobol {
         s.push_str(&sobol_page(results, factors));
@@ -182,7 +214,10 @@ fn sobol_page(results: &[Summary], factors: &[&str]) -> String {
         let mut row = vec![sig(r.mach, 4)];
         let sobol = r.sobol.as_ref();
         for k in 0..factors.len() {
-            for ix in [sobol.and_then(|x| x.margin.as_ref()), sobol.and_then(|x| x.damping_ratio.as_ref())] {
+            for ix in [
+                sobol.and_then(|x| x.margin.as_ref()),
+                sobol.and_then(|x| x.damping_ratio.as_ref()),
+            ] {
                 row.push(ix.map_or("—".into(), |ix| {
                     format!("{} / {}", sig(ix[k].first, 2), sig(ix[k].total, 2))
                 }));

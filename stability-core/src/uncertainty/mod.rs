@@ -29,9 +29,9 @@
 //! [`crate::lifting_surface::FrequencyTable`] (shared by every sample).
 
 pub mod dist;
+mod run;
 pub mod sobol;
 pub mod stats;
-mod run;
 mod study;
 
 pub use dist::Dist;

@@ -3,7 +3,9 @@
 
 use super::sobol::SobolSums;
 use super::stats::{Proportion, Reservoir};
-use super::study::{AtMach, BATCH, CHUNK, Levels, MAX_FACTORS, Options, Outcome, Sensitivity, Study, Summary};
+use super::study::{
+    AtMach, BATCH, CHUNK, Levels, MAX_FACTORS, Options, Outcome, Sensitivity, Study, Summary,
+};
 use crate::case::Case;
 use crate::criteria::Verdict;
 use rand::rngs::ChaCha8Rng;
@@ -87,7 +89,9 @@ impl AtMach<'_> {
         let mut rng = ChaCha8Rng::seed_from_u64(options.seed);
         rng.set_stream(chunk);
         let mut tally = Tally {
-            sobol: options.sobol.then(|| [SobolSums::new(k), SobolSums::new(k)]),
+            sobol: options
+                .sobol
+                .then(|| [SobolSums::new(k), SobolSums::new(k)]),
             ..Tally::default()
         };
         let (mut za, mut zb, mut x) = ([0.0; MAX_FACTORS], [0.0; MAX_FACTORS], [0.0; MAX_FACTORS]);
@@ -127,9 +131,12 @@ impl AtMach<'_> {
         let n = options.samples;
         let chunks = n.div_ceil(CHUNK as u64);
         let mut total = Tally {
-            sobol: options
-                .sobol
-                .then(|| [SobolSums::new(self.factors()), SobolSums::new(self.factors())]),
+            sobol: options.sobol.then(|| {
+                [
+                    SobolSums::new(self.factors()),
+                    SobolSums::new(self.factors()),
+                ]
+            }),
             ..Tally::default()
         };
         let mut cycles = Reservoir::new(options.seed);
@@ -198,7 +205,12 @@ fn output(f: &Result<Outcome, String>, j: usize) -> f64 {
 
 impl Study {
     /// The run at each of `machs`, in order.
-    pub fn run(&self, machs: &[f64], options: &Options, progress: &(dyn Fn(u64) + Sync)) -> Vec<Summary> {
+    pub fn run(
+        &self,
+        machs: &[f64],
+        options: &Options,
+        progress: &(dyn Fn(u64) + Sync),
+    ) -> Vec<Summary> {
         machs
             .iter()
             .map(|&m| self.at_mach(m).run(options, progress))

@@ -169,8 +169,16 @@ mod tests {
         let got = sums.indices().unwrap();
         for i in 0..3 {
             let g = got[i];
-            assert!((g.first - s[i]).abs() < 4.0 * g.first_se, "S{i} {g:?} vs {}", s[i]);
-            assert!((g.total - st[i]).abs() < 4.0 * g.total_se, "ST{i} {g:?} vs {}", st[i]);
+            assert!(
+                (g.first - s[i]).abs() < 4.0 * g.first_se,
+                "S{i} {g:?} vs {}",
+                s[i]
+            );
+            assert!(
+                (g.total - st[i]).abs() < 4.0 * g.total_se,
+                "ST{i} {g:?} vs {}",
+                st[i]
+            );
             assert!(g.first_se < 0.02 && g.total_se < 0.02, "{g:?}");
         }
     }

@@ -43,8 +43,16 @@ impl Proportion {
             n,
             p,
             // exact at the ends: 0 of n has 0 as its lower bound
-            low: if count == 0 { 0.0 } else { (centre - half).max(0.0) },
-            high: if count == n { 1.0 } else { (centre + half).min(1.0) },
+            low: if count == 0 {
+                0.0
+            } else {
+                (centre - half).max(0.0)
+            },
+            high: if count == n {
+                1.0
+            } else {
+                (centre + half).min(1.0)
+            },
         }
     }
 
@@ -171,7 +179,10 @@ mod tests {
         }
         let q = r.quantiles();
         for (p, v) in q.probabilities.iter().zip(&q.values) {
-            assert!((p - v).abs() < 5.0 * (p * (1.0 - p) / RESERVOIR as f64).sqrt(), "{p} {v}");
+            assert!(
+                (p - v).abs() < 5.0 * (p * (1.0 - p) / RESERVOIR as f64).sqrt(),
+                "{p} {v}"
+            );
         }
     }
 }

@@ -257,11 +257,14 @@ fn check_inputs(inputs: &[Input], flight: Option<&FlightCondition>) -> Result<()
         }
         i.dist.check().map_err(|e| StudyError::Dist(name, e))?;
         match i.quantity {
-            q if q.is_physical() && flight.is_none() => return Err(StudyError::NeedsPhysical(name)),
+            q if q.is_physical() && flight.is_none() => {
+                return Err(StudyError::NeedsPhysical(name));
+            }
             Quantity::Mu1 | Quantity::IB | Quantity::ClM2 if flight.is_some() => {
                 return Err(StudyError::FixedByPhysical(name));
             }
-            Quantity::Altitude if matches!(flight, Some(f) if matches!(f.air, Air::Given { .. })) => {
+            Quantity::Altitude if matches!(flight, Some(f) if matches!(f.air, Air::Given { .. })) =>
+            {
                 return Err(StudyError::NoAltitude);
             }
             Quantity::Derivative(_) if i.error == ErrorKind::Value => {
@@ -424,7 +427,12 @@ impl AtMach<'_> {
 
     /// One sample: the inputs' values `x` ([`AtMach::values`]) with damping
     /// model `model`, `case` that model's design point to overwrite.
-    pub fn evaluate(&self, x: &[f64], model: usize, case: &mut Case) -> Result<Outcome, SampleError> {
+    pub fn evaluate(
+        &self,
+        x: &[f64],
+        model: usize,
+        case: &mut Case,
+    ) -> Result<Outcome, SampleError> {
         let s = self.study;
         let nominal = &self.cases[model];
         let (mut mu1, mut i_b, mut cl_m2, mut h) =

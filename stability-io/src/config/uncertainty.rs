@@ -122,7 +122,9 @@ pub fn read(cfg: &Config) -> Result<Option<Study>, Failure> {
                     })
                     .collect();
             }
-            "model" => models = model_form(v).map_err(|m| at(span, "[uncertainty.model]".into(), m))?,
+            "model" => {
+                models = model_form(v).map_err(|m| at(span, "[uncertainty.model]".into(), m))?
+            }
             _ => inputs.push(input(cfg, name, v, span)?),
         }
     }
@@ -194,8 +196,18 @@ fn input(
 ) -> Result<Input, Failure> {
     let field = format!("[uncertainty.{name}]");
     let err = |f: &str, m: String| {
-        let field = if f.is_empty() { field.clone() } else { format!("{field} {f}") };
-        Failure::Input(InputError::at(&cfg.path, cfg.text(), span.clone(), field, m))
+        let field = if f.is_empty() {
+            field.clone()
+        } else {
+            format!("{field} {f}")
+        };
+        Failure::Input(InputError::at(
+            &cfg.path,
+            cfg.text(),
+            span.clone(),
+            field,
+            m,
+        ))
     };
     let quantity = Quantity::parse(name).ok_or_else(|| {
         let names: Vec<_> = Quantity::names().collect();
@@ -209,6 +221,12 @@ fn input(
             ),
         )
     })?;
+    if quantity.is_physical() && cfg.physical.is_none() {
+        return Err(err(
+            "",
+            StudyError::NeedsPhysical(quantity.name()).to_string(),
+        ));
+    }
     let raw = RawInput::deserialize(v).map_err(|e| err("", e.message().trim().to_string()))?;
     let error = match raw.error.as_deref() {
         None if matches!(quantity, Quantity::Derivative(_)) => ErrorKind::Multiplicative,
@@ -218,7 +236,10 @@ fn input(
         Some(o) => {
             return Err(err(
                 "error",
-                format!("`{}` is not an error kind: value, multiplicative or additive", quote(o)),
+                format!(
+                    "`{}` is not an error kind: value, multiplicative or additive",
+                    quote(o)
+                ),
             ));
         }
     };
@@ -228,7 +249,8 @@ fn input(
         ErrorKind::Additive => 0.0,
     };
     let dist = dist(cfg, &raw, centre).map_err(|(f, m)| err(f, m))?;
-    dist.check().map_err(|e| err(param_of(&e.to_string()), e.to_string()))?;
+    dist.check()
+        .map_err(|e| err(param_of(&e.to_string()), e.to_string()))?;
     Ok(Input {
         quantity,
         error,
@@ -278,7 +300,12 @@ fn dist(cfg: &Config, r: &RawInput, centre: f64) -> Result<Dist, ParamError> {
     let centre = |v: Option<f64>, name: &'static str| match v {
         Some(v) => Ok(v),
         None if centre.is_finite() => Ok(centre),
-        None => Err((name, format!("give `{name}`: a derivative's value is not known before it is computed; or use error = \"multiplicative\""))),
+        None => Err((
+            name,
+            format!(
+                "give `{name}`: the nominal value is not known before the derivatives are computed (or the air is given as rho); or use error = \"multiplicative\""
+            ),
+        )),
     };
     Ok(match r.dist.as_str() {
         "normal" => {
@@ -333,9 +360,13 @@ fn samples(cfg: &Config, r: &RawInput) -> Result<Vec<f64>, ParamError> {
                 .unwrap_or(Path::new("."))
                 .join(f);
             let text = crate::files::read_input(&file).map_err(|e| ("file", e.to_string()))?;
-            read_samples_csv(&file.display().to_string(), &text).map_err(|e| ("file", e.to_string()))
+            read_samples_csv(&file.display().to_string(), &text)
+                .map_err(|e| ("file", e.to_string()))
         }
-        _ => Err(("values", "give `values = [...]` or `file = \"samples.csv\"`".into())),
+        _ => Err((
+            "values",
+            "give `values = [...]` or `file = \"samples.csv\"`".into(),
+        )),
     }
 }
 
