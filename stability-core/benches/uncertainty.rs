@@ -93,24 +93,52 @@ fn design_point(b: Bencher) {
 
 #[divan::bench]
 fn quartic_only(b: Bencher) {
-    let s = Study::new(base(1.5, DampingModel::FairedSlender), None, inputs(false), &[], &[]).unwrap();
+    let s = Study::new(
+        base(1.5, DampingModel::FairedSlender),
+        None,
+        inputs(false),
+        &[],
+        &[],
+    )
+    .unwrap();
     run(b, &s, 1.5, 4096, false);
 }
 
 #[divan::bench]
 fn quartic_only_sobol(b: Bencher) {
-    let s = Study::new(base(1.5, DampingModel::FairedSlender), None, inputs(false), &[], &[]).unwrap();
+    let s = Study::new(
+        base(1.5, DampingModel::FairedSlender),
+        None,
+        inputs(false),
+        &[],
+        &[],
+    )
+    .unwrap();
     run(b, &s, 1.5, 1024, true);
 }
 
 #[divan::bench]
 fn design_point_per_sample(b: Bencher) {
-    let s = Study::new(base(1.5, DampingModel::FairedSlender), None, inputs(true), &[], &[]).unwrap();
+    let s = Study::new(
+        base(1.5, DampingModel::FairedSlender),
+        None,
+        inputs(true),
+        &[],
+        &[],
+    )
+    .unwrap();
     run(b, &s, 1.5, 1024, false);
 }
 
 #[divan::bench(sample_count = 10)]
 fn faired_lattice(b: Bencher) {
-    let s = Study::new(base(0.9, DampingModel::Faired), None, inputs(true), &[], &[]).unwrap();
+    let s = Study::new(
+        base(0.9, DampingModel::Faired),
+        None,
+        inputs(true),
+        &[],
+        &[],
+    )
+    .unwrap();
     run(b, &s, 0.9, 256, false);
 }

@@ -99,7 +99,7 @@ impl SobolSums {
     /// that does not vary.
     pub fn indices(&self) -> Option<Vec<Indices>> {
         let v = self.variance();
-        if self.rows < 2 || !(v > 0.0) {
+        if self.rows < 2 || v.is_nan() || v <= 0.0 {
             return None;
         }
         let n = self.rows as f64;
