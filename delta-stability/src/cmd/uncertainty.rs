@@ -20,7 +20,7 @@ use std::path::Path;
 /// The command's options.
 #[derive(Debug, Clone, clap::Args)]
 pub struct Args {
-    /// The design point and its [uncertainty] table (TOML).
+    /// The design point and its `[uncertainty]` table (TOML).
     pub config: String,
     /// Mach numbers: A:B:STEP (inclusive), a list A,B,… or one value.
     #[arg(long)]

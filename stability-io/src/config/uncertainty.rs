@@ -34,7 +34,7 @@
 //!
 //! Inputs: `mu1`, `i_b`, `cl_m2`, `cg`; `altitude`, `mass`, `I_y` (a
 //! physical flight condition, in its units; `mass` is the weight where
-//! [flight] gives one); the derivatives `x_u` … `m_q`. Distributions:
+//! `[flight]` gives one); the derivatives `x_u` … `m_q`. Distributions:
 //! `normal` (`mean`, `sd` or `relative_sd`), `lognormal` (`median` or
 //! `mu`, and `sigma`, of ln x), `uniform` (`low`, `high`), `triangular`
 //! (`low`, `mode`, `high`), `samples` (`values` or `file`). A mean or
