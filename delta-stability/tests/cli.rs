@@ -1102,3 +1102,182 @@ fn no_output_says_met_where_a_root_grows() {
         );
     }
 }
+
+/// The 60° delta at M = 0.9 (slender fairing) with m_q + e, e uniform on
+/// [0, 2.2], and `extra` appended.
+fn uncertain_config(extra: &str) -> String {
+    format!(
+        "[planform]\nsweep = 60.0\nroot_chord = 10.0\n\n[flight]\nmach = 0.9\ncg = 0.25\nmu1 = 50.0\ni_b = 0.08\ncl_m2 = 0.05\n\n\
+         [model]\ndamping = \"faired-slender\"\n\n[uncertainty.m_q]\nerror = \"additive\"\ndist = \"uniform\"\nlow = 0.0\nhigh = 2.2\n{extra}"
+    )
+}
+
+/// The additive error on m_q at which the §8 verdict changes, by bisection
+/// on the library's analysis of the config's design point.
+fn m_q_flip() -> f64 {
+    use stability_core::analysis::Analysis;
+    let case = stability_core::case::Case {
+        damping: stability_core::case::DampingModel::FairedSlender,
+        ..stability_core::study::report_wing(60.0, 0.9)
+    };
+    let d = stability_core::case::evaluate(&case).unwrap().derivatives;
+    let met = |e: f64| {
+        let d = stability_core::Derivatives {
+            m_q: d.m_q + e,
+            ..d
+        };
+        Analysis::of(&d).unwrap().verdict.is_met()
+    };
+    let (mut lo, mut hi) = (0.0, 2.2);
+    assert!(met(lo) && !met(hi));
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if met(mid) { lo = mid } else { hi = mid }
+    }
+    lo
+}
+
+#[test]
+fn uncertainty_gives_the_probability_of_a_known_flip_and_writes_csv_and_json() {
+    let dir = Scratch::new();
+    let cfg = dir.write("u.toml", uncertain_config(""));
+    let csv = dir.path().join("u.csv");
+    let args = [
+        "uncertainty",
+        path(&cfg),
+        "--mach",
+        "0.9",
+        "--samples",
+        "8000",
+        "--sobol",
+        "--seed",
+        "4",
+    ];
+    let v = json(&run_ok(
+        &[&args[..], &["--json", "-o", path(&csv)]].concat(),
+    ));
+    let r = &v["results"][0];
+    let p = r["standard_met"]["p"].as_f64().unwrap();
+    let expected = m_q_flip() / 2.2;
+    let se = (expected * (1.0 - expected) / 8000.0).sqrt();
+    assert!((p - expected).abs() < 3.0 * se, "{p} vs {expected}");
+    let (lo, hi) = (
+        r["standard_met"]["low"].as_f64().unwrap(),
+        r["standard_met"]["high"].as_f64().unwrap(),
+    );
+    assert!(lo < p && p < hi && hi - lo < 0.03, "{lo} {hi}");
+    assert_eq!(r["sobol"]["factors"][0], "m_q");
+    let s1 = r["sobol"]["margin"][0]["first"].as_f64().unwrap();
+    let se1 = r["sobol"]["margin"][0]["first_se"].as_f64().unwrap();
+    assert!((s1 - 1.0).abs() < 3.0 * se1, "S1 = {s1} ± {se1}");
+    // the CSV has the same numbers, and the same seed the same bits
+    let text = std::fs::read_to_string(&csv).unwrap();
+    assert!(text.starts_with("mach,quantity,value,low,high\n"), "{text}");
+    let row = text
+        .lines()
+        .find(|l| l.starts_with("0.9,p_standard_met,"))
+        .unwrap();
+    let got: f64 = row.split(',').nth(2).unwrap().parse().unwrap();
+    assert!((got - p).abs() < 1e-11, "{row}");
+    let again = json(&run_ok(&[&args[..], &["--json"]].concat()));
+    assert_eq!(again["results"], v["results"]);
+    // the page says the same
+    let page = common::stdout(&run_ok(&args));
+    assert!(
+        page.contains("P(§8 met)") && page.contains("Sobol indices"),
+        "{page}"
+    );
+}
+
+#[test]
+fn uncertainty_rejects_bad_tables_at_their_line_and_field() {
+    let dir = Scratch::new();
+    let cases = [
+        (
+            "[uncertainty.m_qq]\ndist = \"normal\"\nsd = 0.1\n",
+            ":20:1: [uncertainty.m_qq]: `m_qq` cannot be uncertain; did you mean `m_q`?",
+        ),
+        (
+            "[uncertainty.i_b]\ndist = \"normal\"\nsd = -0.1\n",
+            ":20:1: [uncertainty.i_b] sd: sd must not be negative",
+        ),
+        (
+            "[uncertainty.i_b]\ndist = \"gauss\"\nsd = 0.1\n",
+            "[uncertainty.i_b] dist: `gauss` is not a distribution",
+        ),
+        (
+            "[uncertainty.mass]\ndist = \"normal\"\nsd = 0.1\n",
+            "[uncertainty.mass]: `mass` is a quantity of the physical flight condition",
+        ),
+        (
+            "[uncertainty]\ncorrelation = [{ between = [\"m_q\", \"cg\"], rho = 0.5 }]\n",
+            "[uncertainty] correlation: the correlation names `cg`, which is not uncertain",
+        ),
+        (
+            "[uncertainty.model]\ndamping = [\"faired\", \"slendr\"]\n",
+            "[uncertainty.model]: unknown damping model `slendr`; did you mean `slender`?",
+        ),
+        (
+            "[uncertainty.model]\ndamping = [\"faired\"]\nweights = [1.0, 2.0]\n",
+            "give one weight per damping model",
+        ),
+    ];
+    for (extra, message) in cases {
+        let cfg = dir.write("bad.toml", uncertain_config(extra));
+        let out = run_err(
+            &[
+                "uncertainty",
+                path(&cfg),
+                "--mach",
+                "0.9",
+                "--samples",
+                "10",
+            ],
+            2,
+        );
+        let err = stderr(&out);
+        assert!(err.contains(message), "{extra}: {err}");
+    }
+    let plain = common::example("delta-60.toml");
+    let cfg = dir.write("plain.toml", plain);
+    let err = stderr(&run_err(&["uncertainty", path(&cfg), "--mach", "0.9"], 2));
+    assert!(err.contains("no [uncertainty] table"), "{err}");
+}
+
+#[test]
+fn uncertainty_of_a_physical_condition_without_spread_is_analyzes_verdict() {
+    // altitude, mass and I_y uncertain with no spread: every sample is the
+    // design point, so the probabilities are 0 or 1 as analyze says, and
+    // every quantile its ζ
+    let dir = Scratch::new();
+    let text = common::example("delta-60-physical.toml")
+        + "\n[uncertainty.altitude]\ndist = \"normal\"\nsd = 0.0\n\
+           [uncertainty.mass]\nerror = \"multiplicative\"\ndist = \"uniform\"\nlow = 1.0\nhigh = 1.0000000001\n\
+           [uncertainty.I_y]\ndist = \"triangular\"\nlow = 69999.99999\nmode = 70000.0\nhigh = 70000.00001\n";
+    let cfg = dir.write("p.toml", text);
+    let a = json(&run_ok(&["analyze", path(&cfg), "--json"]));
+    let u = json(&run_ok(&[
+        "uncertainty",
+        path(&cfg),
+        "--mach",
+        "0.9",
+        "--samples",
+        "300",
+        "--json",
+    ]));
+    let r = &u["results"][0];
+    let met = a["verdict"]["overall"] == "meets";
+    assert_eq!(r["meets"]["p"].as_f64(), Some(if met { 1.0 } else { 0.0 }));
+    let zeta = a["modes"][0]["damping_ratio"].as_f64().unwrap();
+    for q in r["damping_ratio"]["values"].as_array().unwrap() {
+        assert!(
+            (q.as_f64().unwrap() - zeta).abs() < 1e-6 * zeta,
+            "{q} vs {zeta}"
+        );
+    }
+    // the phugoid's level is judged (τ in seconds is known)
+    assert_eq!(
+        r["phugoid_level"]["not_assessed"]["count"].as_u64(),
+        Some(0)
+    );
+}

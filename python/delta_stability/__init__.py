@@ -17,7 +17,10 @@ arrays in and out. Equation numbers are the note's.
 - :func:`batch_roots` — the quartic solver on an (N, 5) array;
 - :func:`response` (§11), :func:`convert` (the appendix's notations),
   :func:`sensitivity` (§10), :func:`damping_derivatives` (§7's theories),
-  :func:`lifting_surface` (the doublet-lattice method).
+  :func:`lifting_surface` (the doublet-lattice method);
+- :func:`uncertainty` — the probability of meeting the §8 standard, of each
+  MIL-F-8785C level and of a divergence when the inputs are uncertain, with
+  Sobol indices (``delta-stability uncertainty``), as a pandas DataFrame.
 
 Inputs are read by the command line's own readers: a path to a TOML file or
 a dict of the same shape, and errors are :class:`InputError` (a
@@ -77,6 +80,7 @@ __all__ = [
     "sensitivity",
     "sweep",
     "theories",
+    "uncertainty",
 ]
 
 class SweepResult(dict):
@@ -188,6 +192,61 @@ def sweep(
         out[k] = decode[k][raw[k]] if k in decode else raw[k]
     out.shape = tuple(raw["shape"])
     return out
+
+
+def uncertainty(
+    config: ConfigSource,
+    *,
+    mach: Axis,
+    samples: int = 10_000,
+    seed: int = 1,
+    sobol: bool = False,
+    damping: Optional[str] = None,
+    aero: Optional[str] = None,
+    omega_bar: Optional[float] = None,
+):  # -> pandas.DataFrame
+    """The config's ``[uncertainty]`` study at each Mach number: what
+    ``delta-stability uncertainty`` computes (docs/uncertainty.md), by the
+    same library (``stability_core::uncertainty``) with the GIL released.
+
+    ``config`` is a path or a dict with an ``uncertainty`` table, e.g.
+    ``{"uncertainty": {"i_b": {"dist": "normal", "relative_sd": 0.1},
+    "m_q": {"error": "multiplicative", "dist": "uniform", "low": 0.8,
+    "high": 1.2}, "model": {"damping": ["faired", "faired-slender"],
+    "weights": [3, 1]}}}`` beside ``planform`` and ``flight``. ``mach`` is a
+    number, a list or ``"A:B:STEP"``; ``samples`` Monte Carlo samples a Mach
+    number; the same ``seed`` gives the same numbers on any thread count;
+    ``sobol=True`` adds the first-order and total Sobol indices (Saltelli et
+    al. 2010; Jansen 1999) for the margin Δm_θ̇ (eq 41) and for ζ.
+
+    Returns a ``pandas.DataFrame`` in long form, one row per Mach number and
+    quantity: columns ``mach``, ``quantity`` (``p_standard_met``,
+    ``p_meets``, ``p_fails``, ``p_divergent``, ``p_sp_level_a_1`` …,
+    ``cycles_to_half_q50`` …, ``sobol_first_margin_i_b`` …), ``value``,
+    ``low``, ``high`` (95 % intervals; NaN where none). The whole result as
+    ``delta-stability uncertainty --json`` gives it is in
+    ``df.attrs["results"]``. Raises :class:`InputError` for a bad table.
+    """
+    import io
+    import json
+
+    try:
+        import pandas as pd
+    except ImportError as e:  # pragma: no cover - depends on the environment
+        raise ImportError("uncertainty() needs pandas: pip install pandas") from e
+    text, csv = _native.uncertainty_run(
+        config,
+        mach=mach,
+        samples=samples,
+        seed=seed,
+        sobol=sobol,
+        damping=damping,
+        aero=aero,
+        omega_bar=omega_bar,
+    )
+    df = pd.read_csv(io.StringIO(csv))
+    df.attrs["results"] = json.loads(text)
+    return df
 
 
 def _argument_error(field: str, message: str) -> InputError:

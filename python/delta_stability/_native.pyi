@@ -186,6 +186,21 @@ def analyze(
     its ``--mach``, ``--cg``, ``--damping``, ``--aero`` (``default`` or
     ``lifting-surface``), ``--omega-bar`` and ``--datcom``."""
 
+def uncertainty_run(
+    config: ConfigSource,
+    /,
+    *,
+    mach: Axis,
+    samples: int = 10_000,
+    seed: int = 1,
+    sobol: bool = False,
+    damping: Optional[str] = None,
+    aero: Optional[str] = None,
+    omega_bar: Optional[float] = None,
+) -> tuple[str, str]:
+    """The raw result of ``delta_stability.uncertainty``: the JSON of
+    ``delta-stability uncertainty --json`` and its long CSV."""
+
 def sweep_columns(
     config: ConfigSource,
     *,

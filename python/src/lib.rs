@@ -23,6 +23,7 @@ mod roots;
 mod sensitivity;
 mod sweep;
 mod theories;
+mod uncertainty;
 mod views;
 
 pub use errors::InputError;
@@ -49,6 +50,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(theories::damping_models, m)?)?;
     m.add_function(wrap_pyfunction!(theories::aero_models, m)?)?;
     m.add_function(wrap_pyfunction!(theories::lifting_surface, m)?)?;
+    m.add_function(wrap_pyfunction!(uncertainty::uncertainty_run, m)?)?;
     m.add_function(wrap_pyfunction!(panic_for_tests, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

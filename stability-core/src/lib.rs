@@ -71,6 +71,7 @@ pub mod study;
 pub mod supersonic;
 pub mod sweep;
 pub mod theory;
+pub mod uncertainty;
 pub mod units;
 pub mod verdict;
 pub mod warnings;

@@ -30,6 +30,7 @@ pub mod limits;
 pub mod response;
 pub mod state_space;
 pub mod sweep;
+pub mod uncertainty;
 pub mod views;
 
 /// The version the files this crate writes are stamped with (the

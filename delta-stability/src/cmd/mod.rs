@@ -8,3 +8,4 @@ pub mod report_design;
 pub mod response;
 pub mod sensitivity;
 pub mod sweep;
+pub mod uncertainty;

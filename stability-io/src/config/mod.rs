@@ -43,6 +43,7 @@ pub mod overrides;
 pub mod physical;
 pub mod raw;
 pub mod tables;
+pub mod uncertainty;
 
 use crate::Failure;
 use crate::diag::{InputError, quote};

@@ -13,6 +13,9 @@ pub struct RawConfig {
     /// The control derivatives, read by [`crate::control`].
     #[serde(default)]
     pub control: Option<toml::Value>,
+    /// The uncertainty study, read by [`super::uncertainty`].
+    #[serde(default)]
+    pub uncertainty: Option<toml::Value>,
 }
 
 #[derive(Deserialize)]

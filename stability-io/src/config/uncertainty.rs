@@ -1,0 +1,398 @@
+//! A config's `[uncertainty]` table (issue 23): a distribution on any
+//! input, correlations between them, and damping theories with weights —
+//! the [`stability_core::uncertainty::Study`] of `delta-stability
+//! uncertainty` and of Python's `uncertainty()`.
+//!
+//! ```toml
+//! [uncertainty.i_b]            # the value itself (the default for flight inputs)
+//! dist = "normal"
+//! relative_sd = 0.1            # sd = 0.1 × mean; mean defaults to the config's i_b
+//!
+//! [uncertainty.m_q]            # a derivative: an error on its computed value
+//! error = "multiplicative"     # the default for derivatives; or "additive"
+//! dist = "uniform"
+//! low = 0.8
+//! high = 1.2
+//!
+//! [uncertainty.cg]
+//! dist = "triangular"
+//! low = 0.22
+//! mode = 0.25
+//! high = 0.30
+//!
+//! [uncertainty.mass]           # with a physical [flight]: altitude, mass, I_y
+//! dist = "samples"
+//! file = "masses.csv"          # one number a line (a header line allowed); or values = [...]
+//!
+//! [uncertainty.model]          # model-form uncertainty
+//! damping = ["faired", "lifting-surface"]
+//! weights = [0.7, 0.3]         # default: equal
+//!
+//! [uncertainty]
+//! correlation = [{ between = ["i_b", "cg"], rho = 0.5 }]
+//! ```
+//!
+//! Inputs: `mu1`, `i_b`, `cl_m2`, `cg`; `altitude`, `mass`, `I_y` (a
+//! physical flight condition, in its units; `mass` is the weight where
+//! `[flight]` gives one); the derivatives `x_u` … `m_q`. Distributions:
+//! `normal` (`mean`, `sd` or `relative_sd`), `lognormal` (`median` or
+//! `mu`, and `sigma`, of ln x), `uniform` (`low`, `high`), `triangular`
+//! (`low`, `mode`, `high`), `samples` (`values` or `file`). A mean or
+//! median not given is the nominal value (1 for a multiplicative error, 0
+//! for an additive one). Correlations are between the inputs' normal
+//! scores (a Gaussian copula). Every error names the file, line and field.
+
+use super::Config;
+use crate::Failure;
+use crate::diag::{InputError, quote};
+use crate::input::toml_error;
+use serde::Deserialize;
+use stability_core::case::DampingModel;
+use stability_core::flight::{Air, Altitude, Mass};
+use stability_core::uncertainty::dist::Dist;
+use stability_core::uncertainty::{ErrorKind, Input, Quantity, Study, StudyError};
+use std::collections::BTreeMap;
+use std::path::Path;
+use toml::Spanned;
+
+#[derive(Deserialize)]
+struct WithUncertainty {
+    uncertainty: Option<Spanned<BTreeMap<String, Spanned<toml::Value>>>>,
+}
+
+/// One input's table.
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RawInput {
+    dist: String,
+    error: Option<String>,
+    mean: Option<f64>,
+    sd: Option<f64>,
+    relative_sd: Option<f64>,
+    median: Option<f64>,
+    mu: Option<f64>,
+    sigma: Option<f64>,
+    low: Option<f64>,
+    mode: Option<f64>,
+    high: Option<f64>,
+    values: Option<Vec<f64>>,
+    file: Option<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawModelForm {
+    damping: Vec<String>,
+    weights: Option<Vec<f64>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawCorrelation {
+    between: [String; 2],
+    rho: f64,
+}
+
+/// The config's uncertainty study, if it has an `[uncertainty]` table.
+pub fn read(cfg: &Config) -> Result<Option<Study>, Failure> {
+    let (path, text) = (cfg.path.as_str(), cfg.text());
+    let raw: WithUncertainty = toml::from_str(text).map_err(|e| toml_error(path, text, &e))?;
+    let Some(table) = raw.uncertainty else {
+        return Ok(None);
+    };
+    let whole = table.span();
+    let at = |span: std::ops::Range<usize>, field: String, m: String| {
+        Failure::Input(InputError::at(path, text, span, field, m))
+    };
+    let (mut inputs, mut correlations, mut models) = (Vec::new(), Vec::new(), Vec::new());
+    for (name, value) in table.get_ref() {
+        let span = value.span();
+        let v = value.get_ref().clone();
+        match name.as_str() {
+            "correlation" => {
+                let field = "[uncertainty] correlation".to_string();
+                let list = Vec::<RawCorrelation>::deserialize(v).map_err(|e| {
+                    at(span.clone(), field.clone(), format!("{}; write correlation = [{{ between = [\"i_b\", \"cg\"], rho = 0.5 }}]", e.message().trim()))
+                })?;
+                correlations = list
+                    .into_iter()
+                    .map(|c| {
+                        let [a, b] = c.between;
+                        (a, b, c.rho)
+                    })
+                    .collect();
+            }
+            "model" => {
+                models = model_form(v).map_err(|m| at(span, "[uncertainty.model]".into(), m))?
+            }
+            _ => inputs.push(input(cfg, name, v, span)?),
+        }
+    }
+    let flight = cfg.physical.as_ref().map(|p| p.condition);
+    Study::new(cfg.case.clone(), flight, inputs, &correlations, &models)
+        .map(Some)
+        .map_err(|e| {
+            let key = key_of(&e);
+            let field = match key {
+                "correlation" => "[uncertainty] correlation".to_string(),
+                "model" => "[uncertainty.model] weights".to_string(),
+                "" => "[uncertainty]".to_string(),
+                n => format!("[uncertainty.{n}]"),
+            };
+            let span = table.get_ref().get(key).map_or(whole, |v| v.span());
+            at(span, field, e.to_string())
+        })
+}
+
+/// The key of `[uncertainty]` a study's error is about ("" the table).
+fn key_of(e: &StudyError) -> &'static str {
+    match e {
+        StudyError::Correlation(_) | StudyError::NotUncertain(_) => "correlation",
+        StudyError::Weights => "model",
+        StudyError::Dist(n, _)
+        | StudyError::NeedsPhysical(n)
+        | StudyError::FixedByPhysical(n)
+        | StudyError::DerivativeValue(n)
+        | StudyError::Duplicate(n) => n,
+        StudyError::NoAltitude => "altitude",
+        StudyError::TooMany => "",
+    }
+}
+
+/// `[uncertainty.model]`: the theories and their weights.
+fn model_form(v: toml::Value) -> Result<Vec<(DampingModel, f64)>, String> {
+    let raw = RawModelForm::deserialize(v).map_err(|e| e.message().trim().to_string())?;
+    let weights = raw.weights.unwrap_or_else(|| vec![1.0; raw.damping.len()]);
+    if weights.len() != raw.damping.len() || raw.damping.is_empty() {
+        return Err(format!(
+            "give one weight per damping model ({} models, {} weights)",
+            raw.damping.len(),
+            weights.len()
+        ));
+    }
+    raw.damping
+        .iter()
+        .zip(weights)
+        .map(|(d, w)| {
+            DampingModel::parse(d).map(|m| (m, w)).map_err(|_| {
+                let names = DampingModel::ALL.map(DampingModel::name);
+                format!(
+                    "unknown damping model `{}`{}; the models are: {}",
+                    quote(d),
+                    crate::input::suggest::did_you_mean(d, names),
+                    names.join(", ")
+                )
+            })
+        })
+        .collect()
+}
+
+/// One input's table read: its quantity, error and distribution.
+fn input(
+    cfg: &Config,
+    name: &str,
+    v: toml::Value,
+    span: std::ops::Range<usize>,
+) -> Result<Input, Failure> {
+    let field = format!("[uncertainty.{name}]");
+    let err = |f: &str, m: String| {
+        let field = if f.is_empty() {
+            field.clone()
+        } else {
+            format!("{field} {f}")
+        };
+        Failure::Input(InputError::at(
+            &cfg.path,
+            cfg.text(),
+            span.clone(),
+            field,
+            m,
+        ))
+    };
+    let quantity = Quantity::parse(name).ok_or_else(|| {
+        let names: Vec<_> = Quantity::names().collect();
+        err(
+            "",
+            format!(
+                "`{}` cannot be uncertain{}; the inputs are: {}, and the tables model and correlation",
+                quote(name),
+                crate::input::suggest::did_you_mean(name, names.iter().copied()),
+                names.join(", ")
+            ),
+        )
+    })?;
+    if quantity.is_physical() && cfg.physical.is_none() {
+        return Err(err(
+            "",
+            StudyError::NeedsPhysical(quantity.name()).to_string(),
+        ));
+    }
+    let raw = RawInput::deserialize(v).map_err(|e| err("", e.message().trim().to_string()))?;
+    let error = match raw.error.as_deref() {
+        None if matches!(quantity, Quantity::Derivative(_)) => ErrorKind::Multiplicative,
+        None | Some("value") => ErrorKind::Value,
+        Some("multiplicative") => ErrorKind::Multiplicative,
+        Some("additive") => ErrorKind::Additive,
+        Some(o) => {
+            return Err(err(
+                "error",
+                format!(
+                    "`{}` is not an error kind: value, multiplicative or additive",
+                    quote(o)
+                ),
+            ));
+        }
+    };
+    let centre = match error {
+        ErrorKind::Value => nominal(cfg, quantity),
+        ErrorKind::Multiplicative => 1.0,
+        ErrorKind::Additive => 0.0,
+    };
+    let dist = dist(cfg, &raw, centre).map_err(|(f, m)| err(f, m))?;
+    dist.check()
+        .map_err(|e| err(param_of(&e.to_string()), e.to_string()))?;
+    Ok(Input {
+        quantity,
+        error,
+        dist,
+    })
+}
+
+/// The parameter an error names (`sd must not be negative` → `sd`).
+fn param_of(message: &str) -> &'static str {
+    ["sd", "sigma", "mean", "mu", "low", "mode", "high"]
+        .into_iter()
+        .find(|p| message.starts_with(p))
+        .unwrap_or("")
+}
+
+/// The config's nominal value of a quantity (a derivative's: its own,
+/// known only when computed; an error takes it).
+fn nominal(cfg: &Config, q: Quantity) -> f64 {
+    let c = &cfg.case;
+    let f = cfg.physical.as_ref().map(|p| p.condition);
+    match q {
+        Quantity::Mu1 => c.mu1,
+        Quantity::IB => c.i_b,
+        Quantity::ClM2 => c.cl_m2,
+        Quantity::Cg => c.h,
+        Quantity::Altitude => match f.map(|f| f.air) {
+            Some(Air::Standard(Altitude::Pressure(h) | Altitude::Geometric(h))) => h,
+            _ => f64::NAN,
+        },
+        Quantity::Mass => match f.map(|f| f.mass) {
+            Some(Mass::Mass(m) | Mass::Weight(m)) => m,
+            None => f64::NAN,
+        },
+        Quantity::PitchInertia => f.map_or(f64::NAN, |f| f.pitch_inertia),
+        Quantity::Derivative(_) => f64::NAN,
+    }
+}
+
+type ParamError = (&'static str, String);
+
+/// The distribution a table gives, its mean or median defaulting to
+/// `centre`.
+fn dist(cfg: &Config, r: &RawInput, centre: f64) -> Result<Dist, ParamError> {
+    let need = |name: &'static str, v: Option<f64>| {
+        v.ok_or((name, format!("the {} distribution needs `{name}`", r.dist)))
+    };
+    let centre = |v: Option<f64>, name: &'static str| match v {
+        Some(v) => Ok(v),
+        None if centre.is_finite() => Ok(centre),
+        None => Err((
+            name,
+            format!(
+                "give `{name}`: the nominal value is not known before the derivatives are computed (or the air is given as rho); or use error = \"multiplicative\""
+            ),
+        )),
+    };
+    Ok(match r.dist.as_str() {
+        "normal" => {
+            let mean = centre(r.mean, "mean")?;
+            let sd = match (r.sd, r.relative_sd) {
+                (Some(sd), None) => sd,
+                (None, Some(rel)) => rel * mean.abs(),
+                _ => return Err(("sd", "give one of `sd` and `relative_sd`".into())),
+            };
+            Dist::Normal { mean, sd }
+        }
+        "lognormal" => {
+            let mu = match r.mu {
+                Some(mu) => mu,
+                None => centre(r.median, "median")?.ln(),
+            };
+            Dist::LogNormal {
+                mu,
+                sigma: need("sigma", r.sigma)?,
+            }
+        }
+        "uniform" => Dist::Uniform {
+            low: need("low", r.low)?,
+            high: need("high", r.high)?,
+        },
+        "triangular" => Dist::Triangular {
+            low: need("low", r.low)?,
+            mode: need("mode", r.mode)?,
+            high: need("high", r.high)?,
+        },
+        "samples" => Dist::samples(samples(cfg, r)?).map_err(|e| ("values", e.to_string()))?,
+        other => {
+            return Err((
+                "dist",
+                format!(
+                    "`{}` is not a distribution: normal, lognormal, uniform, triangular or samples",
+                    quote(other)
+                ),
+            ));
+        }
+    })
+}
+
+/// The samples of `dist = "samples"`: `values = [...]` or a file of one
+/// number a line.
+fn samples(cfg: &Config, r: &RawInput) -> Result<Vec<f64>, ParamError> {
+    match (&r.values, &r.file) {
+        (Some(v), None) => Ok(v.clone()),
+        (None, Some(f)) => {
+            let file = Path::new(&cfg.path)
+                .parent()
+                .unwrap_or(Path::new("."))
+                .join(f);
+            let text = crate::files::read_input(&file).map_err(|e| ("file", e.to_string()))?;
+            read_samples_csv(&file.display().to_string(), &text)
+                .map_err(|e| ("file", e.to_string()))
+        }
+        _ => Err((
+            "values",
+            "give `values = [...]` or `file = \"samples.csv\"`".into(),
+        )),
+    }
+}
+
+/// One number a line; blank lines and `#` comments skipped; a first line
+/// that is not a number is a header.
+pub fn read_samples_csv(path: &str, csv: &str) -> Result<Vec<f64>, InputError> {
+    let mut out = Vec::new();
+    let mut first = true;
+    for (i, line) in csv.lines().enumerate() {
+        let l = line.trim();
+        if l.is_empty() || l.starts_with('#') {
+            continue;
+        }
+        match l.parse::<f64>() {
+            Ok(x) if x.is_finite() => out.push(x),
+            _ if first => {}
+            _ => {
+                return Err(InputError::at_line(
+                    path,
+                    csv,
+                    i + 1,
+                    format!("`{}` is not a finite number; one number a line", quote(l)),
+                ));
+            }
+        }
+        first = false;
+    }
+    Ok(out)
+}
