@@ -217,8 +217,15 @@ enum Command {
     /// first rows, × rows). Columns: the grid values, stable (Routh),
     /// verdict (the one-cycle standard: meets, fails, divergent), the short
     /// period's root, cycles to half amplitude, damping ratio and ω̄, the
-    /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
-    /// outside a theory's validity. Roots are in units of 1/τ, τ = m/(½ρSV).
+    /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), the phugoid's ζ and period,
+    /// the MIL-F-8785C levels, the four roots, k_n (eq 42's static margin
+    /// K_n = −dC_m/dC_L at constant C_L·M², from the quartic's E: it
+    /// includes the pitching moment's change with Mach number, m_u),
+    /// neutral_point (h_n, where m_w = 0 at constant speed — the
+    /// aerodynamic centre H₀ — as a fraction of the M.A.C.) and
+    /// static_margin_pct (h_n − h, % M.A.C.; positive: stable in
+    /// incidence), and an error for points outside a theory's validity.
+    /// Roots are in units of 1/τ, τ = m/(½ρSV).
     /// The damping theory and aerodynamic model are CONFIG's unless --damping
     /// or --aero replace them (listed in `analyze --help`); the lifting
     /// surface is solved once per sweep and Mach number, whatever the c.g.,

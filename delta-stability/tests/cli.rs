@@ -1102,3 +1102,68 @@ fn no_output_says_met_where_a_root_grows() {
         );
     }
 }
+
+/// The neutral point and static margin (issue 20, item 6): `analyze`'s
+/// page and JSON give h_n = the aerodynamic centre H₀ its aerodynamics
+/// report (m_w = (h − H₀)(a + C_D), eq 14) and the margin h_n − h in % of
+/// the M.A.C.; the sweep's columns are the same numbers, beside K_n.
+#[test]
+fn the_neutral_point_and_static_margin_are_on_the_page_the_json_and_the_sweep() {
+    let dir = Scratch::new();
+    let csv = dir.path().join("cg.csv");
+    run_ok(&[
+        "sweep",
+        "examples/delta-60.toml",
+        "--mach",
+        "0.8",
+        "--cg",
+        "0.2,0.6",
+        "-o",
+        path(&csv),
+    ]);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| header.iter().position(|h| *h == n).expect(n);
+    for line in lines {
+        let r: Vec<&str> = line.split(',').collect();
+        let cell = |n: &str| r[col(n)].parse::<f64>().unwrap();
+        let cg = r[col("cg")];
+        let v = json(&run_ok(&[
+            "analyze",
+            "examples/delta-60.toml",
+            "--mach",
+            "0.8",
+            "--cg",
+            cg,
+            "--json",
+        ]));
+        let h0 = v["aerodynamics"]["aerodynamic_centre"]["value"]
+            .as_f64()
+            .unwrap();
+        let m = &v["criteria"]["margins"];
+        let h_n = m["neutral_point"].as_f64().unwrap();
+        let h: f64 = cg.parse().unwrap();
+        assert!((h_n - h0).abs() < 1e-12, "{h_n} vs H₀ {h0}");
+        let pct = m["static_margin_pct"].as_f64().unwrap();
+        assert!((pct - 100.0 * (h0 - h)).abs() < 1e-10, "{pct}");
+        assert!((cell("neutral_point") - h_n).abs() < 1e-12);
+        assert!((cell("static_margin_pct") - pct).abs() < 1e-10);
+        let k_n = m["static_margin"].as_f64().unwrap();
+        assert!((cell("k_n") - k_n).abs() <= 1e-6 * k_n.abs(), "{k_n}");
+        // a c.g. behind the neutral point is statically unstable: K_n < 0
+        // there as well (the Mach-number term is small at M = 0.8)
+        assert_eq!(pct > 0.0, k_n > 0.0, "h {h}");
+    }
+    let page = common::stdout(&run_ok(&[
+        "analyze",
+        "examples/delta-60.toml",
+        "--cg",
+        "0.3",
+    ]));
+    assert!(
+        page.contains("neutral point h_n = 0.5000")
+            && page.contains("static margin h_n − h = 20.00 % M.A.C."),
+        "{page}"
+    );
+}

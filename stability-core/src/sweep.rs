@@ -363,13 +363,14 @@ impl Sweep {
                         ..r.derivatives
                     };
                     match Analysis::without_classical(&d) {
-                        Ok(a) => out.push_ok(&d, &a),
+                        Ok(a) => out.push_ok(&d, &a, r.coefficients.lift_slope.value),
                         Err(e) => out.push_err(e.into()),
                     }
                 }
                 _ => match evaluate_point_with(&case, self.harmonic) {
                     Ok(r) => {
-                        out.push_ok(&r.derivatives, &r.analysis);
+                        let lift_slope = r.coefficients.lift_slope.value;
+                        out.push_ok(&r.derivatives, &r.analysis, lift_slope);
                         last = Some((key, r));
                     }
                     Err(e) => out.push_err(e.into()),
@@ -462,6 +463,11 @@ pub struct Points {
     /// m_θ̇ and its margin Δm_θ̇ over eq (41)'s requirement.
     pub m_thetadot: Vec<f64>,
     pub delta_m_thetadot: Vec<f64>,
+    /// K_n of eq (42), the neutral point h_n and the static margin h_n − h
+    /// in % M.A.C. ([`crate::criteria::Margins::at_cg`]).
+    pub k_n: Vec<f64>,
+    pub neutral_point: Vec<f64>,
+    pub static_margin_pct: Vec<f64>,
     /// The fifteen quartic inputs, when asked for (NaN where an error).
     pub derivatives: Option<Vec<Derivatives>>,
     /// The points with no result, by their position in these columns
@@ -493,6 +499,9 @@ impl Points {
             roots: Vec::with_capacity(n),
             m_thetadot: v(),
             delta_m_thetadot: v(),
+            k_n: v(),
+            neutral_point: v(),
+            static_margin_pct: v(),
             derivatives: derivatives.then(|| Vec::with_capacity(n)),
             errors: Vec::new(),
         }
@@ -524,7 +533,7 @@ impl Points {
 
     /// A point's results (after its [`Points::push_head`]); a point whose
     /// numbers overflow is an error, not a row of blanks.
-    fn push_ok(&mut self, d: &Derivatives, a: &Analysis) {
+    fn push_ok(&mut self, d: &Derivatives, a: &Analysis, lift_slope: f64) {
         if !finite(d, a) {
             return self.push_err(PointError::Overflow);
         }
@@ -550,6 +559,11 @@ impl Points {
         self.m_thetadot.push(a.damping_standard.m_thetadot);
         self.delta_m_thetadot
             .push(or_nan(a.damping_standard.margin));
+        let h = self.cg.last().copied().unwrap_or(f64::NAN);
+        let m = crate::criteria::Margins::at_cg(&a.quartic, d, lift_slope, h);
+        self.k_n.push(or_nan(m.static_margin));
+        self.neutral_point.push(or_nan(m.neutral_point));
+        self.static_margin_pct.push(or_nan(m.static_margin_pct));
         if let Some(ds) = &mut self.derivatives {
             ds.push(*d);
         }
@@ -571,6 +585,9 @@ impl Points {
             &mut self.ph_period,
             &mut self.m_thetadot,
             &mut self.delta_m_thetadot,
+            &mut self.k_n,
+            &mut self.neutral_point,
+            &mut self.static_margin_pct,
         ] {
             c.push(f64::NAN);
         }
@@ -606,7 +623,10 @@ impl Points {
             ph_period,
             roots,
             m_thetadot,
-            delta_m_thetadot
+            delta_m_thetadot,
+            k_n,
+            neutral_point,
+            static_margin_pct
         );
         if let (Some(a), Some(b)) = (&mut self.derivatives, &mut other.derivatives) {
             a.append(b);
@@ -639,8 +659,11 @@ pub fn columns(derivatives: bool, physical: bool) -> Vec<&'static str> {
 /// damping ratio and ω̄; the phugoid's root; m_θ̇ and Δm_θ̇ (eq 41); then
 /// the phugoid's damping ratio and period (τ), the MIL-F-8785C levels (1, 2, 3, or 4 for worse than
 /// Level 3: the short period's in Categories A, B, C, the phugoid's), and
-/// the four roots (1/τ).
-pub const RESULT_COLUMNS: [&str; 25] = [
+/// the four roots (1/τ); last K_n of eq (42) (−dC_m/dC_L at constant
+/// C_L·M², with the Mach-number terms), the neutral point h_n (where
+/// m_w = 0 at constant speed; fraction of the M.A.C.) and the static margin
+/// h_n − h in % M.A.C. ([`crate::criteria::NeutralPoint`]).
+pub const RESULT_COLUMNS: [&str; 28] = [
     "stable",
     "verdict",
     "sp_re",
@@ -666,6 +689,9 @@ pub const RESULT_COLUMNS: [&str; 25] = [
     "root3_im",
     "root4_re",
     "root4_im",
+    "k_n",
+    "neutral_point",
+    "static_margin_pct",
 ];
 
 /// One cell of a point's results.
@@ -725,6 +751,9 @@ impl Points {
             n(r[2].im),
             n(r[3].re),
             n(r[3].im),
+            n(self.k_n[k]),
+            n(self.neutral_point[k]),
+            n(self.static_margin_pct[k]),
         ]
     }
 }
