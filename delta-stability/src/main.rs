@@ -206,7 +206,8 @@ enum Command {
     Report(cmd::report::Args),
     /// Design points over a Cartesian grid of Mach, sweep, c.g., μ₁ and i_B.
     ///
-    /// Each range is A:B:STEP (inclusive) or a single value; those not given
+    /// Each range is A:B:STEP (inclusive), a list A,B,… or a single value,
+    /// for every axis; those not given
     /// come from CONFIG (see `analyze --help`). Points are evaluated in
     /// parallel; OUT (.csv or .json) is written atomically — a killed run
     /// leaves no half-written file (its temporary file beside OUT,
@@ -236,7 +237,12 @@ enum Command {
     /// point's planform (the root chord is held, so they change with
     /// --sweep; --mu1 and --ib are refused), and V = M·a, C_L and τ from
     /// each Mach number: at a fixed altitude and weight C_L·M² is constant
-    /// (eq 24), so C_L ∝ 1/M² and τ ∝ 1/M. The rows then also carry v_m_s,
+    /// (eq 24), so C_L ∝ 1/M² and τ ∝ 1/M. --altitude (pressure altitude),
+    /// --mass and --iy then vary the condition itself, in CONFIG's units:
+    /// each point's μ₁, i_B, C_L·M² and speed of sound from its altitude,
+    /// mass and I_y, as `analyze` computes them for CONFIG edited to them
+    /// (without a physical condition they are refused). The rows then carry
+    /// altitude, mass and I_y after i_b, and also v_m_s,
     /// c_l, tau_s and the modes in seconds (sp_re_s, sp_im_s,
     /// sp_natural_frequency_rad_s, sp_period_s, ph_re_s, ph_im_s).
     ///

@@ -1167,3 +1167,143 @@ fn the_neutral_point_and_static_margin_are_on_the_page_the_json_and_the_sweep() 
         "{page}"
     );
 }
+
+/// The physical flight condition's axes (issue 20, item 6): each point of
+/// a sweep over altitude, mass and I_y is the design point `analyze`
+/// computes from the config edited by hand to that altitude, mass and I_y
+/// (μ₁, i_B, C_L, τ, V and the short period); at sea level μ₁ is
+/// m/(½ρ₀Sc̄) with the standard atmosphere's ρ₀ = 1.2250 kg/m³.
+#[test]
+fn sweeps_over_altitude_mass_and_inertia_are_analyze_on_edited_configs() {
+    let dir = Scratch::new();
+    let base = common::example("delta-60-physical.toml");
+    let csv = dir.path().join("physical.csv");
+    run_ok(&[
+        "sweep",
+        "examples/delta-60-physical.toml",
+        "--mach",
+        "0.9,1.5",
+        "--altitude",
+        "0:6000:6000",
+        "--mass",
+        "10000,14000",
+        "--iy",
+        "50000,70000",
+        "--damping",
+        "faired-slender",
+        "-o",
+        path(&csv),
+    ]);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| header.iter().position(|h| *h == n).expect(n);
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2 * 2 * 2 * 2);
+    // S = 83.138 m², c̄ = 8 m (12 m root chord, 60°): the file's comment
+    let (s, c) = (0.5 * 12.0 * 24.0 * 30f64.to_radians().tan(), 8.0);
+    for r in &rows {
+        let cell = |n: &str| r[col(n)].parse::<f64>().unwrap();
+        assert_eq!(r[col("error")], "", "{r:?}");
+        let (alt, mass, i_y) = (r[col("altitude")], r[col("mass")], r[col("I_y")]);
+        let edited = base
+            .replace("altitude = 11000.0", &format!("altitude = {alt}"))
+            .replace("mass = 12000.0", &format!("mass = {mass}"))
+            .replace("I_y = 70000.0", &format!("I_y = {i_y}"));
+        let cfg = dir.write("edited.toml", edited);
+        let v = json(&run_ok(&[
+            "analyze",
+            path(&cfg),
+            "--mach",
+            r[col("mach")],
+            "--damping",
+            "faired-slender",
+            "--json",
+        ]));
+        let f = &v["flight"];
+        assert_eq!(
+            f["pressure_altitude_m"].as_f64(),
+            Some(alt.parse().unwrap())
+        );
+        let close = |a: f64, b: &serde_json::Value, what: &str| {
+            let b = b.as_f64().unwrap();
+            assert!((a - b).abs() <= 1e-12 * b.abs(), "{what}: {a} vs {b} {r:?}");
+        };
+        close(cell("mu1"), &f["mu1"], "mu1");
+        close(cell("i_b"), &f["i_b"], "i_b");
+        close(cell("c_l"), &f["c_l"], "c_l");
+        close(cell("tau_s"), &f["tau_s"], "tau_s");
+        close(cell("v_m_s"), &f["speed_m_s"], "V");
+        let sp = v["modes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["name"] == "short_period")
+            .unwrap();
+        close(cell("sp_re"), &sp["re"], "sp re");
+        close(cell("sp_im"), &sp["im"], "sp im");
+        if alt == "0.0" {
+            // ρ₀ = 1.2250 kg/m³ as the standard tables print it (5 figures)
+            let mu1 = cell("mass") / (0.5 * 1.225 * s * c);
+            assert!((cell("mu1") - mu1).abs() < 1e-5 * mu1, "{mu1}");
+            assert!((cell("i_b") - cell("I_y") / (cell("mass") * c * c)).abs() < 1e-15);
+        }
+    }
+}
+
+/// The physical axes need a physical flight condition, and values it can
+/// have: each refusal names the option and says why, and nothing is
+/// written.
+#[test]
+fn physical_axes_are_refused_where_they_mean_nothing() {
+    let dir = Scratch::new();
+    let out = dir.path().join("x.csv");
+    let geometric = dir.write(
+        "geometric.toml",
+        common::example("delta-60-physical.toml").replace("altitude = ", "geometric_altitude = "),
+    );
+    for (cfg, args, expect) in [
+        (
+            "examples/delta-60.toml",
+            vec!["--mass", "1000"],
+            "--mass: the config's flight condition is non-dimensional",
+        ),
+        (
+            "examples/delta-60.toml",
+            vec!["--altitude", "0"],
+            "vary μ₁ and i_B instead",
+        ),
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--mu1", "50"],
+            "--mu1: the config's flight condition is physical",
+        ),
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--altitude", "90000"],
+            "--altitude 90000: the altitude",
+        ),
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--mass", "0,1000"],
+            "--mass 0: the mass must be positive",
+        ),
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--iy", "-1"],
+            "--iy -1:",
+        ),
+        (
+            path(&geometric),
+            vec!["--altitude", "1000"],
+            "--altitude: the `altitude` axis varies the pressure altitude",
+        ),
+    ] {
+        let mut a = vec!["sweep", cfg, "--mach", "0.9"];
+        a.extend(args);
+        a.extend(["-o", path(&out)]);
+        let err = stderr(&run_err(&a, 2));
+        assert!(err.contains(expect), "{a:?}: {err}");
+        assert!(!out.exists());
+    }
+}

@@ -13,8 +13,8 @@ use stability_core::case::Case;
 use stability_core::display::{Num, sig};
 use stability_core::grid;
 use stability_core::sweep::{
-    Axes, Cell, ERROR_COLUMN, PointError, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Seconds, Sweep,
-    SweepError, columns, derivative_columns,
+    Axes, Cell, DIMS, ERROR_COLUMN, PointError, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Seconds,
+    Sweep, SweepError, columns, derivative_columns,
 };
 
 /// The most values one range may have.
@@ -87,9 +87,15 @@ pub struct Given {
     pub cg: Option<Vec<f64>>,
     pub mu1: Option<Vec<f64>>,
     pub i_b: Option<Vec<f64>>,
+    /// At a physical flight condition only: pressure altitudes, masses and
+    /// I_y, in the config's units ([`Axes::FLIGHT_NAMES`]).
+    pub altitude: Option<Vec<f64>>,
+    pub mass: Option<Vec<f64>>,
+    pub i_y: Option<Vec<f64>>,
 }
 
-/// An axis's error: which axis (its index in [`Axes::NAMES`]) and why.
+/// An axis's error: which axis (its index in [`Axes::NAMES`], then
+/// [`Axes::FLIGHT_NAMES`]) and why.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AxisError {
     pub axis: usize,
@@ -107,21 +113,42 @@ const LIMITS: [Option<&Limit>; 5] = [
 ];
 
 /// Why μ₁ or i_B cannot be an axis at a physical flight condition.
-pub const FIXED_BY_FLIGHT: &str = "the config's flight condition is physical (mass, I_y, altitude…), which fixes μ₁ and i_B; vary the config's mass, I_y or altitude instead, or give mu1, i_b and cl_m2 in [flight]";
+pub const FIXED_BY_FLIGHT: &str = "the config's flight condition is physical (mass, I_y, altitude…), which fixes μ₁ and i_B; sweep its altitude, mass or I_y instead (the axes altitude, mass, I_y: --altitude, --mass, --iy), or give mu1, i_b and cl_m2 in [flight]";
+
+/// Why altitude, mass or I_y cannot be an axis without a physical flight
+/// condition.
+pub const NEEDS_PHYSICAL: &str = "the config's flight condition is non-dimensional (mu1, i_b, cl_m2), so there is no altitude, mass or I_y to vary; vary μ₁ and i_B instead (--mu1, --ib), or give a physical flight condition in [flight] (units, altitude, mass, I_y; see `analyze --help`)";
 
 /// The axes of a sweep about `base`: each given one within its range, the
 /// others the base's values (its sweep angle rounded to the decimals it
 /// stands for; the library then uses the base's own planform for it). At
-/// a physical flight condition μ₁ and i_B may not be given.
+/// a physical flight condition μ₁ and i_B may not be given; without one,
+/// altitude, mass and I_y may not.
 pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError> {
-    if physical {
-        for (axis, g) in [(3, &given.mu1), (4, &given.i_b)] {
-            if g.is_some() {
-                let message = FIXED_BY_FLIGHT.to_string();
-                return Err(AxisError { axis, message });
-            }
+    let fixed = [(3, &given.mu1), (4, &given.i_b)];
+    let flight = [(5, &given.altitude), (6, &given.mass), (7, &given.i_y)];
+    let (refused, message) = match physical {
+        true => (&fixed[..], FIXED_BY_FLIGHT),
+        false => (&flight[..], NEEDS_PHYSICAL),
+    };
+    if let Some((axis, _)) = refused.iter().find(|(_, g)| g.is_some()) {
+        let message = message.to_string();
+        return Err(AxisError {
+            axis: *axis,
+            message,
+        });
+    }
+    for (axis, g) in flight {
+        if g.as_ref().is_some_and(Vec::is_empty) {
+            let message = "the axis has no values".to_string();
+            return Err(AxisError { axis, message });
         }
     }
+    let (altitude, mass, i_y) = (
+        given.altitude.clone().unwrap_or_default(),
+        given.mass.clone().unwrap_or_default(),
+        given.i_y.clone().unwrap_or_default(),
+    );
     let defaults = [
         base.mach,
         grid::round(base.planform.sweep_le.to_degrees()),
@@ -153,6 +180,9 @@ pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError
         cg,
         mu1,
         i_b,
+        altitude,
+        mass,
+        i_y,
     })
 }
 
@@ -161,9 +191,10 @@ pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError
 pub struct Grid {
     pub sweep: Sweep,
     text: [Vec<Box<str>>; 5],
-    /// At a physical flight condition, each planform's μ₁ and i_B as
-    /// written.
-    physical: Option<Vec<[Box<str>; 2]>>,
+    /// Whether the flight condition is physical: each point's μ₁ and i_B
+    /// are then its planform's and condition's, written beside its
+    /// altitude, mass and I_y.
+    physical: bool,
 }
 
 impl Grid {
@@ -171,7 +202,10 @@ impl Grid {
     /// when it has one.
     pub fn new(base: Case, axes: Axes, physical: Option<&Physical>) -> Result<Grid, SweepError> {
         // the library checks the grid's size before the values are written
-        let sweep = Sweep::new(base, axes)?;
+        let sweep = match physical {
+            Some(p) => Sweep::physical(base, axes, &p.condition)?,
+            None => Sweep::new(base, axes)?,
+        };
         let axes = sweep.axes();
         let mut num = zmij::Buffer::new();
         let mut text =
@@ -183,20 +217,10 @@ impl Grid {
             text(&axes.mu1),
             text(&axes.i_b),
         ];
-        let sweep = match physical {
-            Some(p) => sweep.with_flight(&p.condition)?,
-            None => sweep,
-        };
-        let mut num = zmij::Buffer::new();
-        let physical = sweep.flights().map(|fs| {
-            fs.iter()
-                .map(|f| [num.format(f.mu1()).into(), num.format(f.i_b()).into()])
-                .collect()
-        });
         Ok(Grid {
+            physical: physical.is_some(),
             sweep,
             text,
-            physical,
         })
     }
 
@@ -207,7 +231,7 @@ impl Grid {
 
     /// Whether the rows carry the modes in seconds.
     pub fn is_physical(&self) -> bool {
-        self.physical.is_some()
+        self.physical
     }
 
     /// The columns of the rows.
@@ -215,14 +239,9 @@ impl Grid {
         columns(derivatives, self.is_physical())
     }
 
-    /// The grid values as written of the point of indices `idx` (μ₁ and
-    /// i_B the planform's, with a physical flight condition).
-    fn head(&self, idx: [usize; 5]) -> [&str; 5] {
-        let mut text: [&str; 5] = std::array::from_fn(|k| &*self.text[k][idx[k]]);
-        if let Some(p) = &self.physical {
-            [text[3], text[4]] = [&p[idx[1]][0], &p[idx[1]][1]];
-        }
-        text
+    /// The grid values as written of the point of indices `idx`.
+    fn head(&self, idx: [usize; DIMS]) -> [&str; 5] {
+        std::array::from_fn(|k| &*self.text[k][idx[k]])
     }
 
     /// Evaluates points `range` of the grid (the library's lean path,
@@ -246,11 +265,21 @@ impl Grid {
                 }
                 _ => Ok((&points, k)),
             };
-            let seconds = self.physical.as_ref().map(|_| {
+            let seconds = self.physical.then(|| {
                 let point = r.is_ok().then(|| self.sweep.flight_point(i)).flatten();
                 points.seconds(k, point)
             });
-            write_point(&mut out, self.head(idx), r, format, seconds);
+            // at a physical condition μ₁ and i_B are the point's own, with
+            // its altitude, mass and I_y
+            let flight = self.physical.then(|| {
+                let p = &points;
+                [p.mu1[k], p.i_b[k], p.altitude[k], p.mass[k], p.i_y[k]]
+            });
+            let head = Head {
+                text: self.head(idx),
+                flight,
+            };
+            write_point(&mut out, head, r, format, seconds);
             if !format.json {
                 out.push(b'\n');
             }
@@ -329,9 +358,17 @@ impl Row<'_> {
     }
 }
 
+/// A row's grid values: the axes as written, and at a physical flight
+/// condition the point's μ₁, i_B, altitude, mass and I_y (in place of the
+/// μ₁ and i_B axes).
+struct Head<'a> {
+    text: [&'a str; 5],
+    flight: Option<[f64; 5]>,
+}
+
 fn write_point(
     out: &mut Vec<u8>,
-    head: [&str; 5],
+    head: Head<'_>,
     r: Result<(&Points, usize), &PointError>,
     format: Format,
     seconds: Option<Seconds>,
@@ -345,9 +382,16 @@ fn write_point(
         json: format.json,
         first: true,
     };
-    for (name, v) in Axes::NAMES.iter().zip(head) {
+    let given = if head.flight.is_some() { 3 } else { 5 };
+    for (name, v) in Axes::NAMES.iter().zip(head.text).take(given) {
         row.key(name);
         row.out.extend_from_slice(v.as_bytes());
+    }
+    if let Some(values) = head.flight {
+        let names = ["mu1", "i_b"].iter().chain(&Axes::FLIGHT_NAMES);
+        for (name, v) in names.zip(values) {
+            row.number(name, Some(v));
+        }
     }
     match r {
         Ok((p, k)) => {
