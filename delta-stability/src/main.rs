@@ -148,6 +148,20 @@ enum Command {
     /// number, V = M·a, C_L and τ = m/(½ρSV); the page prints them. A
     /// quantity given in both forms (mu1 and mass, say) is an error. See
     /// examples/delta-60-physical.toml.
+    ///
+    ///   [aircraft]            # optional
+    ///   class = "IV"          # MIL-F-8785C §1.3: I, II-C, II-L, III, IV
+    ///
+    /// The class sets the Category C floors of the short-period frequency
+    /// requirement, the only limits that depend on it: --class, else the
+    /// config's class; with neither that category is not assessed, and the
+    /// page says so.
+    ///
+    /// The margins: K_n of eq (42) (−dC_m/dC_L at constant C_L·M², from
+    /// the quartic's E, so with the pitching moment's change with Mach
+    /// number, m_u), H_m, the neutral point h_n (where m_w = 0 at constant
+    /// speed: the aerodynamic centre, a fraction of the M.A.C.) and the
+    /// static margin h_n − h in % M.A.C. (JSON: criteria.margins).
     #[command(verbatim_doc_comment)]
     Analyze(cmd::analyze::Args),
     /// Convert a derivative file from one notation to another.

@@ -1307,3 +1307,71 @@ fn physical_axes_are_refused_where_they_mean_nothing() {
         assert!(!out.exists());
     }
 }
+
+/// The MIL-F-8785C class (issue 20, item 7): `--class`, else the config's
+/// `[aircraft] class`, else none — and then Category C of the short-period
+/// frequency requirement (the only limits that depend on the class, Fig 3)
+/// is not assessed while A and B are, as with any class. Each choice is
+/// printed; a class that is not one is refused at its line.
+#[test]
+fn the_class_is_given_or_the_configs_or_category_c_is_not_assessed() {
+    let dir = Scratch::new();
+    let stated = "examples/delta-60-physical.toml";
+    let text = common::example("delta-60-physical.toml");
+    assert!(text.contains("class = \"IV\""));
+    let none = dir.write("none.toml", text.replace("class = \"IV\"", ""));
+    let freq = |args: &[&str]| {
+        let mut a = vec!["analyze"];
+        a.extend(args);
+        let page = common::stdout(&run_ok(&a));
+        a.push("--json");
+        let v = json(&run_ok(&a))["short_period_frequency"].clone();
+        let line = page
+            .lines()
+            .find(|l| l.contains("short-period frequency (§3.2.2.1.1)"))
+            .expect("the requirement's line")
+            .to_string();
+        (v, line)
+    };
+    let (config, line) = freq(&[stated]);
+    assert_eq!(config["class"], "IV");
+    assert!(
+        line.contains(
+            "Class IV (high manoeuvrability (fighters, attack)), from the config's [aircraft] class"
+        ),
+        "{line}"
+    );
+    let (given, line) = freq(&[stated, "--class", "III"]);
+    assert_eq!(given["class"], "III");
+    assert!(
+        line.contains("Class III") && line.contains("given by --class"),
+        "{line}"
+    );
+    let (absent, line) = freq(&[path(&none)]);
+    assert!(
+        absent["class"].is_null() && absent["C"].is_null(),
+        "{absent}"
+    );
+    assert!(
+        line.contains("C not assessed (class not given")
+            && line.contains("give --class or [aircraft] class"),
+        "{line}"
+    );
+    // Categories A and B are the class's own whatever it is
+    for v in [&given, &absent] {
+        assert_eq!((&v["A"], &v["B"]), (&config["A"], &config["B"]));
+        assert_eq!(v["cap"], config["cap"]);
+    }
+    // ω_sp = 8.14 rad/s at n/α = 27.2 g/rad: CAP 2.44 lies in Category C's
+    // Level 1 band (0.16–3.6) above every class's floors
+    assert_eq!(
+        (&config["C"], &given["C"]),
+        (&"Level 1".into(), &"Level 1".into())
+    );
+    let bad = dir.write("bad.toml", text.replace("class = \"IV\"", "class = \"iv\""));
+    let err = stderr(&run_err(&["analyze", path(&bad)], 2));
+    assert!(
+        err.contains("[aircraft] class") && err.contains("did you mean `IV`"),
+        "{err}"
+    );
+}

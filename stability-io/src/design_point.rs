@@ -5,6 +5,7 @@
 //! returns.
 
 use crate::Failure;
+use crate::class::ClassChoice;
 use crate::config::Config;
 use crate::input::analysis::OVERFLOW;
 use stability_core::cap::AirplaneClass;
@@ -18,6 +19,8 @@ pub struct Results {
     /// The physical flight condition at the point's Mach number.
     pub flight: Option<(PhysicalFlight, FlightPoint)>,
     pub engineering: Engineering,
+    /// The MIL-F-8785C class assessed, and where it came from.
+    pub class: ClassChoice,
 }
 
 impl Results {
@@ -28,8 +31,9 @@ impl Results {
 }
 
 /// The design point of `cfg` evaluated, with the short-period frequency
-/// requirement of `class`.
-pub fn results(cfg: &Config, class: AirplaneClass) -> Result<Results, Failure> {
+/// requirement of the class `given`, else the config's ([`ClassChoice`]).
+pub fn results(cfg: &Config, given: Option<AirplaneClass>) -> Result<Results, Failure> {
+    let class = ClassChoice::of(given, cfg.class);
     let flight = match &cfg.physical {
         Some(p) => {
             let point = p
@@ -48,13 +52,14 @@ pub fn results(cfg: &Config, class: AirplaneClass) -> Result<Results, Failure> {
         &result.analysis,
         tau,
         control.as_ref(),
-        class,
+        class.class,
     );
     match engineering {
         Ok(engineering) if result.analysis.is_finite() => Ok(Results {
             result,
             flight,
             engineering,
+            class,
         }),
         _ => Err(cfg.error_at("[flight]", OVERFLOW).into()),
     }

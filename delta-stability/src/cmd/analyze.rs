@@ -59,7 +59,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let cfg = cfg?;
     let outputs = crate::overwrite::state_space(options.state_space.as_deref())?;
     crate::overwrite::refuse("CONFIG", path, &read, &outputs)?;
-    let res = results(&cfg, options.class.0)?;
+    let res = results(&cfg, options.class())?;
     for w in &res.result.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
@@ -100,7 +100,10 @@ pub fn page(cfg: &config::Config, res: &Results) -> String {
         &r.analysis,
         res.flight.map(|(_, p)| p.tau),
     ));
-    s.push_str(&super::quartic::frequency_line(&res.engineering));
+    s.push_str(&super::quartic::frequency_line(
+        &res.engineering,
+        &res.class,
+    ));
     margins(&mut s, &r.margins(&cfg.case), cfg.case.h);
     s.push_str(&crate::engineering::tables(&res.engineering));
     s
