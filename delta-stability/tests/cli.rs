@@ -1293,6 +1293,13 @@ fn physical_axes_are_refused_where_they_mean_nothing() {
             vec!["--iy", "-1"],
             "--iy -1:",
         ),
+        // 10⁶ t at 11 km: C_L·M² = W/(½ρa²S) ≈ 7.5e3, beyond the 1e3 a
+        // config may give
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--mass", "1e4,1e9"],
+            "C_L·M² = W/(½ρa²S) =",
+        ),
         (
             path(&geometric),
             vec!["--altitude", "1000"],

@@ -346,6 +346,16 @@ impl Sweep {
         Some(c.for_planform(&self.planforms[s]))
     }
 
+    /// The physical flight condition as given, when the grid has one.
+    pub fn condition(&self) -> Option<&FlightCondition> {
+        self.condition.as_ref()
+    }
+
+    /// The planforms of the sweep axis, in its order.
+    pub fn planforms(&self) -> &[Planform] {
+        &self.planforms
+    }
+
     /// The physical flight condition of point `i` (its planform, altitude,
     /// mass and I_y), when the grid has one.
     pub fn flight(&self, i: usize) -> Option<PhysicalFlight> {
@@ -1021,7 +1031,7 @@ const NAN_DERIVATIVES: Derivatives = Derivatives {
 /// Replaces the quantity of a flight condition that the axis `axis` of
 /// [`Axes::FLIGHT_NAMES`] varies: the pressure altitude, the mass (in place
 /// of a mass or a weight), I_y.
-fn set_flight_value(c: &mut FlightCondition, axis: &str, value: f64) {
+pub fn set_flight_value(c: &mut FlightCondition, axis: &str, value: f64) {
     match axis {
         "altitude" => c.air = Air::Standard(Altitude::Pressure(value)),
         "mass" => c.mass = Mass::Mass(value),

@@ -186,6 +186,71 @@ pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError
     })
 }
 
+/// At a physical flight condition with axes of its own (altitude, mass,
+/// I_y), μ₁, i_B and C_L·M² within the ranges a config may give them
+/// ([`crate::limits`], as `analyze` checks a config's): each is monotone in
+/// each axis (μ₁ = m/(½ρSc̄) and C_L·M² = W/(½ρa²S) grow with the mass
+/// and, ρ and ρa² falling, with the altitude; i_B = I_y/(mc̄²)), so the
+/// corners of the axes' ranges bound them, planform by planform. The
+/// message names the corner and what to do.
+pub fn check_flight_limits(sweep: &Sweep) -> Result<(), String> {
+    use stability_core::sweep::set_flight_value;
+    let Some(base) = sweep.condition() else {
+        return Ok(());
+    };
+    let axes = sweep.axes();
+    let ends = |v: &[f64]| match v {
+        [] => vec![None],
+        v => {
+            let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            vec![Some(lo), Some(hi)]
+        }
+    };
+    let flags = ["--altitude", "--mass", "--iy"];
+    let (alt, mass, iy) = (ends(&axes.altitude), ends(&axes.mass), ends(&axes.i_y));
+    let mut corners = Vec::new();
+    for a in &alt {
+        for m in &mass {
+            for i in &iy {
+                corners.push([*a, *m, *i]);
+            }
+        }
+    }
+    for (p, sweep_deg) in sweep.planforms().iter().zip(&axes.sweep_deg) {
+        for corner in &corners {
+            let mut c = *base;
+            for (k, v) in corner.iter().enumerate() {
+                if let Some(v) = v {
+                    set_flight_value(&mut c, Axes::FLIGHT_NAMES[k], *v);
+                }
+            }
+            let Ok(f) = c.for_planform(p) else { continue };
+            let derived = [
+                (&limits::MU1, "μ₁ = m/(½ρSc̄)", f.mu1()),
+                (&limits::I_B, "i_B = I_y/(mc̄²)", f.i_b()),
+                (&limits::CL_M2, "C_L·M² = W/(½ρa²S)", f.cl_m2()),
+            ];
+            for (limit, what, v) in derived {
+                if let Err(m) = limit.check(v) {
+                    let at: Vec<String> = corner
+                        .iter()
+                        .zip(flags)
+                        .filter_map(|(v, f)| v.map(|v| format!("{f} {}", Num(v))))
+                        .collect();
+                    return Err(format!(
+                        "{}: {what} = {} at a sweep of {}°: {m}; narrow the range",
+                        at.join(", "),
+                        Num(v),
+                        Num(*sweep_deg)
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The library's grid, and each axis's values as written (formatted once,
 /// not once per row).
 pub struct Grid {

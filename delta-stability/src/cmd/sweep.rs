@@ -18,7 +18,7 @@ use stability_core::sweep::{Axes, SweepError};
 use stability_io::config::{Config, overridden};
 use stability_io::diag::{InputError, IoError};
 use stability_io::files::write_error;
-use stability_io::sweep::{Format, Given, Grid, axes, parse_range};
+use stability_io::sweep::{Format, Given, Grid, axes, check_flight_limits, parse_range};
 use std::io::Write as _;
 use std::path::Path;
 
@@ -88,7 +88,7 @@ pub fn grid(o: &Args, cfg: &Config) -> Result<Grid, String> {
     };
     let axes: Axes = axes(given, &cfg.case, cfg.physical.is_some())
         .map_err(|e| format!("--{}: {}", FLAGS[e.axis], e.message))?;
-    Grid::new(cfg.case.clone(), axes, cfg.physical.as_ref()).map_err(|e| match e {
+    let grid = Grid::new(cfg.case.clone(), axes, cfg.physical.as_ref()).map_err(|e| match e {
         SweepError::Planform { sweep_deg, error } => format!("--sweep {sweep_deg}: {error}"),
         SweepError::FlightAxis { axis, value, error } => {
             let k = Axes::FLIGHT_NAMES
@@ -99,7 +99,9 @@ pub fn grid(o: &Args, cfg: &Config) -> Result<Grid, String> {
         }
         e @ SweepError::NotPressureAltitude { .. } => format!("--altitude: {e}"),
         e => e.to_string(),
-    })
+    })?;
+    check_flight_limits(&grid.sweep)?;
+    Ok(grid)
 }
 
 /// Whether the output is JSON (`.json`) or CSV (`.csv`).
