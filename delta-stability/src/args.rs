@@ -81,14 +81,7 @@ impl ValueEnum for ClassArg {
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
-        let help = match self.0 {
-            AirplaneClass::I => "small, light airplanes",
-            AirplaneClass::IIC => "medium weight, low-to-medium manoeuvrability, carrier-based",
-            AirplaneClass::IIL => "medium weight, low-to-medium manoeuvrability, land-based",
-            AirplaneClass::III => "large, heavy, low-to-medium manoeuvrability (transports)",
-            AirplaneClass::IV => "high manoeuvrability (fighters, attack): the default",
-        };
-        Some(PossibleValue::new(self.0.name()).help(help))
+        Some(PossibleValue::new(self.0.name()).help(self.0.describe()))
     }
 }
 

@@ -64,17 +64,16 @@ pub fn mode_shapes_table(shapes: &[ModeShape], time: TimeUnit) -> String {
     aligned(&rows)
 }
 
-/// §3.2.2.1.1 in a line.
-pub fn frequency_line(f: &ShortPeriodFrequency) -> String {
+/// §3.2.2.1.1 in a line, with the class assessed (`class`, in words).
+pub fn frequency_line(f: &ShortPeriodFrequency, class: &str) -> String {
     format!(
-        "MIL-F-8785C short-period frequency (§3.2.2.1.1), ω_sp = {} rad/s, n/α = {} g/rad, CAP = ω_sp²/(n/α) = {} 1/(g·s²): Category A {}, B {}, C {} (Class {} floors; --class)",
+        "MIL-F-8785C short-period frequency (§3.2.2.1.1), ω_sp = {} rad/s, n/α = {} g/rad, CAP = ω_sp²/(n/α) = {} 1/(g·s²): Category A {}, B {}, C {} ({class})",
         sig(f.natural_frequency_rad_s, 4),
         sig(f.n_alpha, 4),
         sig(f.cap, 3),
         f.a.as_str(),
         f.b.as_str(),
-        f.c.as_str(),
-        f.class.name()
+        f.c.map_or("not assessed", |l| l.as_str()),
     )
 }
 

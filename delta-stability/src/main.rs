@@ -152,6 +152,20 @@ enum Command {
     /// number, V = M·a, C_L and τ = m/(½ρSV); the page prints them. A
     /// quantity given in both forms (mu1 and mass, say) is an error. See
     /// examples/delta-60-physical.toml.
+    ///
+    ///   [aircraft]            # optional
+    ///   class = "IV"          # MIL-F-8785C §1.3: I, II-C, II-L, III, IV
+    ///
+    /// The class sets the Category C floors of the short-period frequency
+    /// requirement, the only limits that depend on it: --class, else the
+    /// config's class; with neither that category is not assessed, and the
+    /// page says so.
+    ///
+    /// The margins: K_n of eq (42) (−dC_m/dC_L at constant C_L·M², from
+    /// the quartic's E, so with the pitching moment's change with Mach
+    /// number, m_u), H_m, the neutral point h_n (where m_w = 0 at constant
+    /// speed: the aerodynamic centre, a fraction of the M.A.C.) and the
+    /// static margin h_n − h in % M.A.C. (JSON: criteria.margins).
     #[command(verbatim_doc_comment)]
     Analyze(cmd::analyze::Args),
     /// Convert a derivative file from one notation to another.
@@ -235,7 +249,8 @@ enum Command {
     Report(cmd::report::Args),
     /// Design points over a Cartesian grid of Mach, sweep, c.g., μ₁ and i_B.
     ///
-    /// Each range is A:B:STEP (inclusive) or a single value; those not given
+    /// Each range is A:B:STEP (inclusive), a list A,B,… or a single value,
+    /// for every axis; those not given
     /// come from CONFIG (see `analyze --help`). Points are evaluated in
     /// parallel; OUT (.csv or .json) is written atomically — a killed run
     /// leaves no half-written file (its temporary file beside OUT,
@@ -246,8 +261,15 @@ enum Command {
     /// first rows, × rows). Columns: the grid values, stable (Routh),
     /// verdict (the one-cycle standard: meets, fails, divergent), the short
     /// period's root, cycles to half amplitude, damping ratio and ω̄, the
-    /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), and an error for points
-    /// outside a theory's validity. Roots are in units of 1/τ, τ = m/(½ρSV).
+    /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), the phugoid's ζ and period,
+    /// the MIL-F-8785C levels, the four roots, k_n (eq 42's static margin
+    /// K_n = −dC_m/dC_L at constant C_L·M², from the quartic's E: it
+    /// includes the pitching moment's change with Mach number, m_u),
+    /// neutral_point (h_n, where m_w = 0 at constant speed — the
+    /// aerodynamic centre H₀ — as a fraction of the M.A.C.) and
+    /// static_margin_pct (h_n − h, % M.A.C.; positive: stable in
+    /// incidence), and an error for points outside a theory's validity.
+    /// Roots are in units of 1/τ, τ = m/(½ρSV).
     /// The damping theory and aerodynamic model are CONFIG's unless --damping
     /// or --aero replace them (listed in `analyze --help`); the lifting
     /// surface is solved once per sweep and Mach number, whatever the c.g.,
@@ -258,7 +280,12 @@ enum Command {
     /// point's planform (the root chord is held, so they change with
     /// --sweep; --mu1 and --ib are refused), and V = M·a, C_L and τ from
     /// each Mach number: at a fixed altitude and weight C_L·M² is constant
-    /// (eq 24), so C_L ∝ 1/M² and τ ∝ 1/M. The rows then also carry v_m_s,
+    /// (eq 24), so C_L ∝ 1/M² and τ ∝ 1/M. --altitude (pressure altitude),
+    /// --mass and --iy then vary the condition itself, in CONFIG's units:
+    /// each point's μ₁, i_B, C_L·M² and speed of sound from its altitude,
+    /// mass and I_y, as `analyze` computes them for CONFIG edited to them
+    /// (without a physical condition they are refused). The rows then carry
+    /// altitude, mass and I_y after i_b, and also v_m_s,
     /// c_l, tau_s and the modes in seconds (sp_re_s, sp_im_s,
     /// sp_natural_frequency_rad_s, sp_period_s, ph_re_s, ph_im_s).
     ///

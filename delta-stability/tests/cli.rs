@@ -1281,3 +1281,283 @@ fn uncertainty_of_a_physical_condition_without_spread_is_analyzes_verdict() {
         Some(0)
     );
 }
+
+/// The neutral point and static margin (issue 20, item 6): `analyze`'s
+/// page and JSON give h_n = the aerodynamic centre H₀ its aerodynamics
+/// report (m_w = (h − H₀)(a + C_D), eq 14) and the margin h_n − h in % of
+/// the M.A.C.; the sweep's columns are the same numbers, beside K_n.
+#[test]
+fn the_neutral_point_and_static_margin_are_on_the_page_the_json_and_the_sweep() {
+    let dir = Scratch::new();
+    let csv = dir.path().join("cg.csv");
+    run_ok(&[
+        "sweep",
+        "examples/delta-60.toml",
+        "--mach",
+        "0.8",
+        "--cg",
+        "0.2,0.6",
+        "-o",
+        path(&csv),
+    ]);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| header.iter().position(|h| *h == n).expect(n);
+    for line in lines {
+        let r: Vec<&str> = line.split(',').collect();
+        let cell = |n: &str| r[col(n)].parse::<f64>().unwrap();
+        let cg = r[col("cg")];
+        let v = json(&run_ok(&[
+            "analyze",
+            "examples/delta-60.toml",
+            "--mach",
+            "0.8",
+            "--cg",
+            cg,
+            "--json",
+        ]));
+        let h0 = v["aerodynamics"]["aerodynamic_centre"]["value"]
+            .as_f64()
+            .unwrap();
+        let m = &v["criteria"]["margins"];
+        let h_n = m["neutral_point"].as_f64().unwrap();
+        let h: f64 = cg.parse().unwrap();
+        assert!((h_n - h0).abs() < 1e-12, "{h_n} vs H₀ {h0}");
+        let pct = m["static_margin_pct"].as_f64().unwrap();
+        assert!((pct - 100.0 * (h0 - h)).abs() < 1e-10, "{pct}");
+        assert!((cell("neutral_point") - h_n).abs() < 1e-12);
+        assert!((cell("static_margin_pct") - pct).abs() < 1e-10);
+        let k_n = m["static_margin"].as_f64().unwrap();
+        assert!((cell("k_n") - k_n).abs() <= 1e-6 * k_n.abs(), "{k_n}");
+        // a c.g. behind the neutral point is statically unstable: K_n < 0
+        // there as well (the Mach-number term is small at M = 0.8)
+        assert_eq!(pct > 0.0, k_n > 0.0, "h {h}");
+    }
+    let page = common::stdout(&run_ok(&[
+        "analyze",
+        "examples/delta-60.toml",
+        "--cg",
+        "0.3",
+    ]));
+    assert!(
+        page.contains("neutral point h_n = 0.5000")
+            && page.contains("static margin h_n − h = 20.00 % M.A.C."),
+        "{page}"
+    );
+}
+
+/// The physical flight condition's axes (issue 20, item 6): each point of
+/// a sweep over altitude, mass and I_y is the design point `analyze`
+/// computes from the config edited by hand to that altitude, mass and I_y
+/// (μ₁, i_B, C_L, τ, V and the short period); at sea level μ₁ is
+/// m/(½ρ₀Sc̄) with the standard atmosphere's ρ₀ = 1.2250 kg/m³.
+#[test]
+fn sweeps_over_altitude_mass_and_inertia_are_analyze_on_edited_configs() {
+    let dir = Scratch::new();
+    let base = common::example("delta-60-physical.toml");
+    let csv = dir.path().join("physical.csv");
+    run_ok(&[
+        "sweep",
+        "examples/delta-60-physical.toml",
+        "--mach",
+        "0.9,1.5",
+        "--altitude",
+        "0:6000:6000",
+        "--mass",
+        "10000,14000",
+        "--iy",
+        "50000,70000",
+        "--damping",
+        "faired-slender",
+        "-o",
+        path(&csv),
+    ]);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| header.iter().position(|h| *h == n).expect(n);
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2 * 2 * 2 * 2);
+    // S = 83.138 m², c̄ = 8 m (12 m root chord, 60°): the file's comment
+    let (s, c) = (0.5 * 12.0 * 24.0 * 30f64.to_radians().tan(), 8.0);
+    for r in &rows {
+        let cell = |n: &str| r[col(n)].parse::<f64>().unwrap();
+        assert_eq!(r[col("error")], "", "{r:?}");
+        let (alt, mass, i_y) = (r[col("altitude")], r[col("mass")], r[col("I_y")]);
+        let edited = base
+            .replace("altitude = 11000.0", &format!("altitude = {alt}"))
+            .replace("mass = 12000.0", &format!("mass = {mass}"))
+            .replace("I_y = 70000.0", &format!("I_y = {i_y}"));
+        let cfg = dir.write("edited.toml", edited);
+        let v = json(&run_ok(&[
+            "analyze",
+            path(&cfg),
+            "--mach",
+            r[col("mach")],
+            "--damping",
+            "faired-slender",
+            "--json",
+        ]));
+        let f = &v["flight"];
+        assert_eq!(
+            f["pressure_altitude_m"].as_f64(),
+            Some(alt.parse().unwrap())
+        );
+        let close = |a: f64, b: &serde_json::Value, what: &str| {
+            let b = b.as_f64().unwrap();
+            assert!((a - b).abs() <= 1e-12 * b.abs(), "{what}: {a} vs {b} {r:?}");
+        };
+        close(cell("mu1"), &f["mu1"], "mu1");
+        close(cell("i_b"), &f["i_b"], "i_b");
+        close(cell("c_l"), &f["c_l"], "c_l");
+        close(cell("tau_s"), &f["tau_s"], "tau_s");
+        close(cell("v_m_s"), &f["speed_m_s"], "V");
+        let sp = v["modes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["name"] == "short_period")
+            .unwrap();
+        close(cell("sp_re"), &sp["re"], "sp re");
+        close(cell("sp_im"), &sp["im"], "sp im");
+        if alt == "0.0" {
+            // ρ₀ = 1.2250 kg/m³ as the standard tables print it (5 figures)
+            let mu1 = cell("mass") / (0.5 * 1.225 * s * c);
+            assert!((cell("mu1") - mu1).abs() < 1e-5 * mu1, "{mu1}");
+            assert!((cell("i_b") - cell("I_y") / (cell("mass") * c * c)).abs() < 1e-15);
+        }
+    }
+}
+
+/// The physical axes need a physical flight condition, and values it can
+/// have: each refusal names the option and says why, and nothing is
+/// written.
+#[test]
+fn physical_axes_are_refused_where_they_mean_nothing() {
+    let dir = Scratch::new();
+    let out = dir.path().join("x.csv");
+    let geometric = dir.write(
+        "geometric.toml",
+        common::example("delta-60-physical.toml").replace("altitude = ", "geometric_altitude = "),
+    );
+    for (cfg, args, expect) in [
+        (
+            "examples/delta-60.toml",
+            vec!["--mass", "1000"],
+            "--mass: the config's flight condition is non-dimensional",
+        ),
+        (
+            "examples/delta-60.toml",
+            vec!["--altitude", "0"],
+            "vary μ₁ and i_B instead",
+        ),
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--mu1", "50"],
+            "--mu1: the config's flight condition is physical",
+        ),
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--altitude", "90000"],
+            "--altitude 90000: the altitude",
+        ),
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--mass", "0,1000"],
+            "--mass 0: the mass must be positive",
+        ),
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--iy", "-1"],
+            "--iy -1:",
+        ),
+        // 10⁶ t at 11 km: C_L·M² = W/(½ρa²S) ≈ 7.5e3, beyond the 1e3 a
+        // config may give
+        (
+            "examples/delta-60-physical.toml",
+            vec!["--mass", "1e4,1e9"],
+            "C_L·M² = W/(½ρa²S) =",
+        ),
+        (
+            path(&geometric),
+            vec!["--altitude", "1000"],
+            "--altitude: the `altitude` axis varies the pressure altitude",
+        ),
+    ] {
+        let mut a = vec!["sweep", cfg, "--mach", "0.9"];
+        a.extend(args);
+        a.extend(["-o", path(&out)]);
+        let err = stderr(&run_err(&a, 2));
+        assert!(err.contains(expect), "{a:?}: {err}");
+        assert!(!out.exists());
+    }
+}
+
+/// The MIL-F-8785C class (issue 20, item 7): `--class`, else the config's
+/// `[aircraft] class`, else none — and then Category C of the short-period
+/// frequency requirement (the only limits that depend on the class, Fig 3)
+/// is not assessed while A and B are, as with any class. Each choice is
+/// printed; a class that is not one is refused at its line.
+#[test]
+fn the_class_is_given_or_the_configs_or_category_c_is_not_assessed() {
+    let dir = Scratch::new();
+    let stated = "examples/delta-60-physical.toml";
+    let text = common::example("delta-60-physical.toml");
+    assert!(text.contains("class = \"IV\""));
+    let none = dir.write("none.toml", text.replace("class = \"IV\"", ""));
+    let freq = |args: &[&str]| {
+        let mut a = vec!["analyze"];
+        a.extend(args);
+        let page = common::stdout(&run_ok(&a));
+        a.push("--json");
+        let v = json(&run_ok(&a))["short_period_frequency"].clone();
+        let line = page
+            .lines()
+            .find(|l| l.contains("short-period frequency (§3.2.2.1.1)"))
+            .expect("the requirement's line")
+            .to_string();
+        (v, line)
+    };
+    let (config, line) = freq(&[stated]);
+    assert_eq!(config["class"], "IV");
+    assert!(
+        line.contains(
+            "Class IV (high manoeuvrability (fighters, attack)), from the config's [aircraft] class"
+        ),
+        "{line}"
+    );
+    let (given, line) = freq(&[stated, "--class", "III"]);
+    assert_eq!(given["class"], "III");
+    assert!(
+        line.contains("Class III") && line.contains("given by --class"),
+        "{line}"
+    );
+    let (absent, line) = freq(&[path(&none)]);
+    assert!(
+        absent["class"].is_null() && absent["C"].is_null(),
+        "{absent}"
+    );
+    assert!(
+        line.contains("C not assessed (class not given")
+            && line.contains("give --class or [aircraft] class"),
+        "{line}"
+    );
+    // Categories A and B are the class's own whatever it is
+    for v in [&given, &absent] {
+        assert_eq!((&v["A"], &v["B"]), (&config["A"], &config["B"]));
+        assert_eq!(v["cap"], config["cap"]);
+    }
+    // ω_sp = 8.14 rad/s at n/α = 27.2 g/rad: CAP 2.44 lies in Category C's
+    // Level 1 band (0.16–3.6) above every class's floors
+    assert_eq!(
+        (&config["C"], &given["C"]),
+        (&"Level 1".into(), &"Level 1".into())
+    );
+    let bad = dir.write("bad.toml", text.replace("class = \"IV\"", "class = \"iv\""));
+    let err = stderr(&run_err(&["analyze", path(&bad)], 2));
+    assert!(
+        err.contains("[aircraft] class") && err.contains("did you mean `IV`"),
+        "{err}"
+    );
+}

@@ -96,7 +96,12 @@ class SweepResult(dict):
     over eq 41's m_θ̇max); ``ph_damping_ratio``, ``ph_period`` (τ); the
     MIL-F-8785C levels ``sp_level_a``, ``sp_level_b``, ``sp_level_c``,
     ``ph_level`` (1, 2, 3, or 4 for worse than Level 3); the four roots
-    ``root1_re`` … ``root4_im`` (1/τ); at a physical flight condition, the
+    ``root1_re`` … ``root4_im`` (1/τ); ``k_n`` (eq 42's static margin
+    −dC_m/dC_L at constant C_L·M², with the Mach-number terms),
+    ``neutral_point`` (h_n, where m_w = 0 at constant speed: the aerodynamic
+    centre, a fraction of the M.A.C.) and ``static_margin_pct`` (h_n − h, %
+    M.A.C.); at a physical flight condition ``altitude``, ``mass`` and
+    ``I_y`` (the point's, in the config's units; after ``i_b``) and the
     modes in seconds (``v_m_s``, ``c_l``, ``tau_s``, ``sp_re_s``,
     ``sp_im_s``, ``sp_natural_frequency_rad_s``, ``sp_period_s``,
     ``ph_re_s``, ``ph_im_s``, ``ph_period_s``, ``root1_re_s`` …

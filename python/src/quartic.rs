@@ -15,7 +15,6 @@ use pyo3::exceptions::{PyAttributeError, PyTypeError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
-use stability_core::cap::AirplaneClass;
 use stability_core::case::CaseResult;
 use stability_core::modes::Mode as CoreMode;
 use stability_io::design_point::results;
@@ -519,7 +518,7 @@ pub fn quartic(
         let file = derivative_file(source, notation, kwargs)?;
         let (analysis, json) = py
             .detach(|| -> Result<_, _> {
-                let (a, engineering) = file.evaluated(None, AirplaneClass::IV)?;
+                let (a, engineering) = file.evaluated(None, None)?;
                 let json = serde_json::to_value(QuarticJson::new(&file, &a, &engineering));
                 Ok((a, json))
             })
@@ -661,7 +660,7 @@ pub fn analyze(
         let cfg = overridden(config, mach, cg, model)?;
         let (result, tau, json) = py
             .detach(|| -> Result<_, stability_io::Failure> {
-                let r = results(&cfg, AirplaneClass::IV)?;
+                let r = results(&cfg, None)?;
                 let json = serde_json::to_value(AnalyzeJson::new(&cfg, &r));
                 let tau = r.tau();
                 Ok((r.result, tau, json))

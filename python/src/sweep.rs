@@ -72,8 +72,11 @@ pub struct AxisArgs<'a, 'py> {
     pub i_b: Option<&'a Bound<'py, PyAny>>,
 }
 
-/// The arguments' names, in the order of the library's axes.
-const NAMES: [&str; 5] = ["mach", "sweep", "cg", "mu1", "i_b"];
+/// The arguments' names, in the order of the library's axes (those of a
+/// physical flight condition last: `altitude`, `mass`, `I_y`).
+const NAMES: [&str; 8] = [
+    "mach", "sweep", "cg", "mu1", "i_b", "altitude", "mass", "I_y",
+];
 
 /// Why the library cannot sweep the grid, as an InputError.
 fn sweep_error(cfg: &Config, e: SweepError) -> PyErr {
@@ -98,6 +101,7 @@ pub fn sweep_of(a: &AxisArgs<'_, '_>, cfg: &Config) -> PyResult<Sweep> {
         cg: read(2, a.cg)?,
         mu1: read(3, a.mu1)?,
         i_b: read(4, a.i_b)?,
+        ..Given::default()
     };
     let axes = axes(given, &cfg.case, cfg.physical.is_some())
         .map_err(|e| argument(NAMES[e.axis], e.message))?;
@@ -110,13 +114,11 @@ pub fn sweep_of(a: &AxisArgs<'_, '_>, cfg: &Config) -> PyResult<Sweep> {
         let m = format!("the grid has {points}; the limit of one call is {MAX_POINTS:e}");
         return Err(argument("grid", m));
     }
-    let sweep = Sweep::new(cfg.case.clone(), axes).map_err(|e| sweep_error(cfg, e))?;
     match &cfg.physical {
-        Some(p) => sweep
-            .with_flight(&p.condition)
-            .map_err(|e| sweep_error(cfg, e)),
-        None => Ok(sweep),
+        Some(p) => Sweep::physical(cfg.case.clone(), axes, &p.condition),
+        None => Sweep::new(cfg.case.clone(), axes),
     }
+    .map_err(|e| sweep_error(cfg, e))
 }
 
 /// A column of results, as numpy takes it.
@@ -235,6 +237,9 @@ fn grid_column(p: &mut Points, name: &str) -> Option<Vec<f64>> {
         "cg" => &mut p.cg,
         "mu1" => &mut p.mu1,
         "i_b" => &mut p.i_b,
+        "altitude" => &mut p.altitude,
+        "mass" => &mut p.mass,
+        "I_y" => &mut p.i_y,
         _ => return None,
     };
     Some(std::mem::take(c))

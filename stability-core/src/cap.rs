@@ -90,6 +90,22 @@ impl AirplaneClass {
         }
     }
 
+    /// The class by its name (`I`, `II-C`, `II-L`, `III`, `IV`).
+    pub fn parse(name: &str) -> Option<AirplaneClass> {
+        AirplaneClass::ALL.into_iter().find(|c| c.name() == name)
+    }
+
+    /// What airplanes the class holds (§1.3), in words.
+    pub fn describe(self) -> &'static str {
+        match self {
+            AirplaneClass::I => "small, light airplanes",
+            AirplaneClass::IIC => "medium weight, low-to-medium manoeuvrability, carrier-based",
+            AirplaneClass::IIL => "medium weight, low-to-medium manoeuvrability, land-based",
+            AirplaneClass::III => "large, heavy, low-to-medium manoeuvrability (transports)",
+            AirplaneClass::IV => "high manoeuvrability (fighters, attack)",
+        }
+    }
+
     /// Whether the class takes the lower Category C floors (II-L, III).
     fn heavy(self) -> bool {
         matches!(self, AirplaneClass::IIL | AirplaneClass::III)
@@ -215,14 +231,17 @@ pub struct ShortPeriodFrequency {
     pub n_alpha: f64,
     /// ω_sp²/(n/α), 1/(g·s²).
     pub cap: f64,
-    /// The class whose Category C floors were applied.
-    pub class: AirplaneClass,
+    /// The class whose Category C floors were applied; `None`: not given,
+    /// and Category C not assessed (its floors differ by class; Categories
+    /// A and B do not).
+    pub class: Option<AirplaneClass>,
     #[serde(rename = "A")]
     pub a: Level,
     #[serde(rename = "B")]
     pub b: Level,
+    /// Category C's level, with a class.
     #[serde(rename = "C")]
-    pub c: Level,
+    pub c: Option<Level>,
 }
 
 impl ShortPeriodFrequency {
@@ -232,7 +251,7 @@ impl ShortPeriodFrequency {
     pub fn assess(
         omega: f64,
         n_alpha: f64,
-        class: AirplaneClass,
+        class: Option<AirplaneClass>,
     ) -> Result<ShortPeriodFrequency, String> {
         match not_assessed(omega, n_alpha) {
             Some(why) => Err(why),
@@ -240,17 +259,20 @@ impl ShortPeriodFrequency {
         }
     }
 
-    /// The levels of ω_sp (rad/s) at n/α (g/rad).
-    pub fn of(omega: f64, n_alpha: f64, class: AirplaneClass) -> ShortPeriodFrequency {
-        let level = |c| frequency_level(omega, n_alpha, c, class);
+    /// The levels of ω_sp (rad/s) at n/α (g/rad): Categories A and B
+    /// whatever the class (their limits do not depend on it), Category C
+    /// where the class is known.
+    pub fn of(omega: f64, n_alpha: f64, class: Option<AirplaneClass>) -> ShortPeriodFrequency {
+        // Categories A and B: any class gives the same regions
+        let level = |c, class| frequency_level(omega, n_alpha, c, class);
         ShortPeriodFrequency {
             natural_frequency_rad_s: omega,
             n_alpha,
             cap: omega * omega / n_alpha,
             class,
-            a: level(Category::A),
-            b: level(Category::B),
-            c: level(Category::C),
+            a: level(Category::A, AirplaneClass::IV),
+            b: level(Category::B, AirplaneClass::IV),
+            c: class.map(|k| level(Category::C, k)),
         }
     }
 }

@@ -237,6 +237,20 @@ pub struct CaseResult {
     pub tables: Vec<TableUse>,
 }
 
+impl CaseResult {
+    /// The §9 margins of the design point `case` (whose result this is):
+    /// K_n (eq 42) and H_m, the neutral point h_n and the static margin
+    /// h_n − h ([`crate::criteria::NeutralPoint`]).
+    pub fn margins(&self, case: &Case) -> crate::criteria::Margins {
+        crate::criteria::Margins::at_cg(
+            &self.analysis.quartic,
+            &self.derivatives,
+            self.coefficients.lift_slope.value,
+            case.h,
+        )
+    }
+}
+
 /// The inputs of a design point that [`evaluate`] checks before use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CaseInput {

@@ -299,20 +299,81 @@ pub fn c_from_manoeuvre_margin(h_m: f64, d: &Derivatives, lift_slope: f64) -> f6
     d.mu1 / d.i_b * lift_slope * h_m
 }
 
-/// The margins of §9 from the quartic's coefficients.
+/// The stick-fixed neutral point at constant speed, and the static margin
+/// of the c.g. ahead of it.
+///
+/// Moving the c.g. aft by Δh (fractions of the M.A.C.) transfers the
+/// normal force's moment to it: m_w grows by −z_w·Δh (eq 14: m_w =
+/// (h − H₀)(a + C_D) with z_w = −(a + C_D), eq 12). So m_w vanishes at
+///
+///   h_n = h + m_w/z_w,
+///
+/// the neutral point — for the wing alone its aerodynamic centre H₀ — and
+/// the static margin is h_n − h, the distance of the c.g. ahead of it,
+/// here in per cent of the M.A.C. (positive: statically stable in
+/// incidence). Unlike eq (42)'s K_n = −(dC_m/dC_L) at constant C_L·M²,
+/// which [`static_margin_from_e`] recovers from the quartic's E, this
+/// holds the speed fixed: K_n includes the change of the pitching moment
+/// with Mach number along the level-flight line (m_u, Mach tuck: through
+/// E = (μ₁/i_B)C_L(m_w z_u − z_w m_u)), so it is zero at h_n only where
+/// m_u = 0 there (H₀ independent of Mach number).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct NeutralPoint {
+    /// h_n, a fraction of the M.A.C. aft of its leading edge (as h).
+    pub neutral_point: f64,
+    /// h_n − h, per cent of the M.A.C.
+    pub static_margin_pct: f64,
+}
+
+impl NeutralPoint {
+    /// The neutral point and static margin of a derivative set at c.g.
+    /// `h`; `None` where z_w = 0 (no normal force: no neutral point) or a
+    /// value is not finite.
+    pub fn of(d: &Derivatives, h: f64) -> Option<NeutralPoint> {
+        let neutral_point = h + d.m_w / d.z_w;
+        let static_margin_pct = 100.0 * (neutral_point - h);
+        (d.z_w != 0.0 && neutral_point.is_finite() && static_margin_pct.is_finite()).then_some(
+            NeutralPoint {
+                neutral_point,
+                static_margin_pct,
+            },
+        )
+    }
+}
+
+/// The margins of §9 from the quartic's coefficients, and where the c.g.
+/// is known the neutral point and static margin ([`NeutralPoint`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Margins {
-    /// K_n (stick fixed), eq (42).
+    /// K_n (stick fixed), eq (42): −dC_m/dC_L at constant C_L·M², from E
+    /// (it includes the Mach-number terms, m_u).
     pub static_margin: Option<f64>,
     /// H_m (stick fixed), §9.
     pub manoeuvre_margin: Option<f64>,
+    /// h_n, where m_w = 0 (fraction of the M.A.C.; [`NeutralPoint`]).
+    pub neutral_point: Option<f64>,
+    /// h_n − h, per cent of the M.A.C.
+    pub static_margin_pct: Option<f64>,
 }
 
 impl Margins {
+    /// K_n and H_m (the c.g. unknown: no neutral point).
     pub fn of(q: &Quartic, d: &Derivatives, lift_slope: f64) -> Self {
         Margins {
             static_margin: static_margin_from_e(q.e, d, lift_slope),
             manoeuvre_margin: manoeuvre_margin_from_c(q.c, d, lift_slope),
+            neutral_point: None,
+            static_margin_pct: None,
+        }
+    }
+
+    /// K_n, H_m, and the neutral point and static margin at c.g. `h`.
+    pub fn at_cg(q: &Quartic, d: &Derivatives, lift_slope: f64, h: f64) -> Self {
+        let n = NeutralPoint::of(d, h);
+        Margins {
+            neutral_point: n.map(|n| n.neutral_point),
+            static_margin_pct: n.map(|n| n.static_margin_pct),
+            ..Margins::of(q, d, lift_slope)
         }
     }
 }

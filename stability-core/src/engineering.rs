@@ -54,7 +54,7 @@ impl Engineering {
         analysis: &Analysis,
         tau: Option<f64>,
         control: Option<&Control>,
-        class: AirplaneClass,
+        class: Option<AirplaneClass>,
     ) -> Result<Engineering, ResponseError> {
         let model = LinearModel::of_report(d, control)?;
         let Some(tau) = tau else {
@@ -81,7 +81,7 @@ impl Engineering {
         model: LinearModel,
         roots_per_s: &[Complex64; 4],
         n_alpha: Option<f64>,
-        class: AirplaneClass,
+        class: Option<AirplaneClass>,
     ) -> Engineering {
         let damp = Damp::of_roots(roots_per_s);
         let mode_shapes = ModeShape::all(&model, damp.modes());

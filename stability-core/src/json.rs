@@ -282,11 +282,7 @@ impl CaseResult {
 impl Serialize for CaseView<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let r = self.result;
-        let margins = Margins::of(
-            &r.analysis.quartic,
-            &r.derivatives,
-            r.coefficients.lift_slope.value,
-        );
+        let margins = r.margins(self.case);
         CaseJson {
             case: CaseKeys::new(self.case, r),
             aerodynamics: &r.coefficients,

@@ -1,5 +1,6 @@
 //! A Cartesian grid of design points — Mach × sweep × c.g. × μ₁ × i_B
-//! about a base [`Case`] — evaluated in parallel (rayon), with the results
+//! (× altitude × mass × I_y at a physical flight condition) about a base
+//! [`Case`] — evaluated in parallel (rayon), with the results
 //! in columns: what `delta-stability sweep` writes as CSV or JSON and the
 //! Python package returns as arrays.
 //!
@@ -37,12 +38,19 @@
 //! chord), the μ₁ and i_B axes are not used, and [`Sweep::flight_point`]
 //! gives V, C_L and τ at each point's Mach number (C_L·M² is constant at a
 //! fixed altitude and weight, eq 24, so C_L ∝ 1/M² and τ ∝ 1/M).
+//! [`Sweep::physical`] also takes axes of the condition itself — pressure
+//! altitudes, masses and I_y ([`Axes::FLIGHT_NAMES`], the last three
+//! dimensions of the grid) — and each point's condition is then resolved
+//! with its planform ([`FlightCondition::for_planform`]): μ₁, i_B, C_L·M²
+//! and the speed of sound follow from its altitude, mass and I_y.
 
 use crate::Derivatives;
 use crate::analysis::{Analysis, AnalysisError};
 use crate::case::{Case, CaseError, CaseResult, DampingModel, evaluate_point_with};
 use crate::criteria::Verdict;
-use crate::flight::{FlightCondition, FlightError, FlightPoint, PhysicalFlight};
+use crate::flight::{
+    Air, Altitude, FlightCondition, FlightError, FlightPoint, Mass, PhysicalFlight,
+};
 use crate::geometry::{GeometryError, Planform, Size};
 use crate::lifting_surface::Harmonic;
 use num_complex::Complex64;
@@ -59,6 +67,14 @@ pub struct Axes {
     pub cg: Vec<f64>,
     pub mu1: Vec<f64>,
     pub i_b: Vec<f64>,
+    /// At a physical flight condition ([`Sweep::physical`]) only: pressure
+    /// altitudes (1976 standard atmosphere), masses and pitching moments
+    /// of inertia I_y, in the condition's units (m or ft, kg or slug,
+    /// kg·m² or slug·ft²); each point's μ₁, i_B and C_L·M² follow from
+    /// them. Empty: the condition's own value.
+    pub altitude: Vec<f64>,
+    pub mass: Vec<f64>,
+    pub i_y: Vec<f64>,
 }
 
 impl Axes {
@@ -70,19 +86,49 @@ impl Axes {
             cg: vec![base.h],
             mu1: vec![base.mu1],
             i_b: vec![base.i_b],
+            ..Axes::default()
         }
+    }
+
+    /// The physical flight condition's axes' names, as the columns are
+    /// named (the config's `[flight]` keys).
+    pub const FLIGHT_NAMES: [&'static str; 3] = ["altitude", "mass", "I_y"];
+
+    /// Whether any of the physical flight condition's axes is given.
+    pub fn has_flight_axes(&self) -> bool {
+        !(self.altitude.is_empty() && self.mass.is_empty() && self.i_y.is_empty())
     }
 
     /// The axes' names, in order, as the columns are named.
     pub const NAMES: [&'static str; 5] = ["mach", "sweep_deg", "cg", "mu1", "i_b"];
 
-    fn lens(&self) -> [usize; 5] {
+    /// The number of values of each dimension of the grid (the flight
+    /// condition's axes count one where they are empty).
+    fn lens(&self) -> [usize; DIMS] {
         [
             self.mach.len(),
             self.sweep_deg.len(),
             self.cg.len(),
             self.mu1.len(),
             self.i_b.len(),
+            self.altitude.len().max(1),
+            self.mass.len().max(1),
+            self.i_y.len().max(1),
+        ]
+    }
+}
+
+/// The grid's dimensions: [`Axes::NAMES`], then [`Axes::FLIGHT_NAMES`].
+pub const DIMS: usize = 8;
+
+/// Where the flight condition's axes' values are checked: the names of
+/// [`Axes::FLIGHT_NAMES`] with the quantity each replaces.
+impl Axes {
+    fn flight_values(&self) -> [(&'static str, &[f64]); 3] {
+        [
+            ("altitude", &self.altitude),
+            ("mass", &self.mass),
+            ("I_y", &self.i_y),
         ]
     }
 }
@@ -109,6 +155,20 @@ pub enum SweepError {
         "a physical flight condition fixes μ₁ and i_B (from the mass, I_y and the air): the `{axis}` axis must have one value, not {n}"
     )]
     FixedByFlight { axis: &'static str, n: usize },
+    #[error(
+        "the `{axis}` axis needs a physical flight condition (units, altitude, mass, I_y), from which μ₁, i_B and C_L·M² follow; without one vary μ₁ and i_B"
+    )]
+    NotPhysical { axis: &'static str },
+    #[error(
+        "the `altitude` axis varies the pressure altitude of the 1976 standard atmosphere, but the flight condition's air is {air}; give the base condition as a pressure altitude (`altitude`)"
+    )]
+    NotPressureAltitude { air: &'static str },
+    #[error("the `{axis}` axis, {value}: {error}")]
+    FlightAxis {
+        axis: &'static str,
+        value: f64,
+        error: FlightError,
+    },
 }
 
 /// A count of `what` in a message, bounded in length however large: exact
@@ -134,6 +194,8 @@ pub enum PointError {
     Analysis(#[from] AnalysisError),
     #[error("the design point's numbers overflow f64")]
     Overflow,
+    #[error("the flight condition: {0}")]
+    Flight(#[from] FlightError),
 }
 
 /// A grid about a base design point, ready to evaluate.
@@ -145,6 +207,9 @@ pub struct Sweep {
     harmonic: Harmonic,
     /// With a physical flight condition, that condition with each planform.
     flights: Option<Vec<PhysicalFlight>>,
+    /// The physical flight condition as given (its axes' values replace
+    /// its altitude, mass and I_y point by point).
+    condition: Option<FlightCondition>,
 }
 
 impl Sweep {
@@ -152,6 +217,44 @@ impl Sweep {
     /// keeps). Every axis needs a value; each sweep must make a planform
     /// with the base's taper.
     pub fn new(base: Case, axes: Axes) -> Result<Sweep, SweepError> {
+        if let Some((axis, _)) = axes.flight_values().iter().find(|(_, v)| !v.is_empty()) {
+            return Err(SweepError::NotPhysical { axis });
+        }
+        Sweep::build(base, axes)
+    }
+
+    /// The grid of `axes` about `base` at the physical flight condition
+    /// `flight`, whose altitude, mass and I_y the axes
+    /// [`Axes::FLIGHT_NAMES`] may vary: each point's μ₁, i_B and C_L·M²
+    /// then follow from its planform, altitude, mass and I_y (§3, eq 24)
+    /// through [`FlightCondition::for_planform`] — as `analyze` computes
+    /// them for a config at that altitude and mass. The μ₁ and i_B axes
+    /// must hold one value each, which are not used.
+    pub fn physical(base: Case, axes: Axes, flight: &FlightCondition) -> Result<Sweep, SweepError> {
+        if !axes.altitude.is_empty() && !matches!(flight.air, Air::Standard(Altitude::Pressure(_)))
+        {
+            let air = match flight.air {
+                Air::Standard(_) => "given by a geometric altitude",
+                Air::Given { .. } => "given as ρ and the speed of sound",
+            };
+            return Err(SweepError::NotPressureAltitude { air });
+        }
+        let sweep = Sweep::build(base, axes)?.with_flight(flight)?;
+        // every value of the flight axes makes a condition (the altitude
+        // within the atmosphere's range, the mass and I_y positive)
+        let p = &sweep.planforms[0];
+        for (axis, values) in sweep.axes.flight_values() {
+            for &value in values {
+                let mut c = *flight;
+                set_flight_value(&mut c, axis, value);
+                c.for_planform(p)
+                    .map_err(|error| SweepError::FlightAxis { axis, value, error })?;
+            }
+        }
+        Ok(sweep)
+    }
+
+    fn build(base: Case, axes: Axes) -> Result<Sweep, SweepError> {
         for (axis, n) in Axes::NAMES.into_iter().zip(axes.lens()) {
             if n == 0 {
                 return Err(SweepError::Empty { axis });
@@ -196,6 +299,7 @@ impl Sweep {
             planforms,
             harmonic,
             flights: None,
+            condition: None,
         })
     }
 
@@ -220,8 +324,42 @@ impl Sweep {
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Sweep {
             flights: Some(flights),
+            condition: Some(*flight),
             ..self
         })
+    }
+
+    /// The physical flight condition of the point of indices `idx` (with
+    /// the planform), when the grid has one.
+    fn point_flight(&self, idx: [usize; DIMS]) -> Option<Result<PhysicalFlight, FlightError>> {
+        let flights = self.flights.as_ref()?;
+        let s = idx[1];
+        if !self.axes.has_flight_axes() {
+            return Some(Ok(flights[s]));
+        }
+        let mut c = self.condition?;
+        for (k, (axis, values)) in self.axes.flight_values().into_iter().enumerate() {
+            if let Some(&v) = values.get(idx[5 + k]) {
+                set_flight_value(&mut c, axis, v);
+            }
+        }
+        Some(c.for_planform(&self.planforms[s]))
+    }
+
+    /// The physical flight condition as given, when the grid has one.
+    pub fn condition(&self) -> Option<&FlightCondition> {
+        self.condition.as_ref()
+    }
+
+    /// The planforms of the sweep axis, in its order.
+    pub fn planforms(&self) -> &[Planform] {
+        &self.planforms
+    }
+
+    /// The physical flight condition of point `i` (its planform, altitude,
+    /// mass and I_y), when the grid has one.
+    pub fn flight(&self, i: usize) -> Option<PhysicalFlight> {
+        self.point_flight(self.index(i))?.ok()
     }
 
     /// The physical flight condition of each planform (in the order of the
@@ -233,9 +371,8 @@ impl Sweep {
     /// V, C_L and τ of point `i`, when the grid has a physical flight
     /// condition.
     pub fn flight_point(&self, i: usize) -> Option<FlightPoint> {
-        let [m, s, ..] = self.index(i);
-        let f = self.flights.as_ref()?.get(s)?;
-        f.at_mach(self.axes.mach[m]).ok()
+        let f = self.flight(i)?;
+        f.at_mach(self.axes.mach[self.index(i)[0]]).ok()
     }
 
     /// The same grid with the lifting surface's harmonic solutions had as
@@ -263,11 +400,11 @@ impl Sweep {
     }
 
     /// The axes' indices of point `i`.
-    pub fn index(&self, i: usize) -> [usize; 5] {
+    pub fn index(&self, i: usize) -> [usize; DIMS] {
         let dims = self.axes.lens();
         let mut k = i;
-        let mut idx = [0usize; 5];
-        for d in (0..5).rev() {
+        let mut idx = [0usize; DIMS];
+        for d in (0..DIMS).rev() {
             idx[d] = k % dims[d];
             k /= dims[d];
         }
@@ -287,20 +424,28 @@ impl Sweep {
     /// Design point `i`, as [`Sweep::evaluate`] evaluates it.
     pub fn case(&self, i: usize) -> Case {
         let mut case = self.base.clone();
-        self.set_point(self.index(i), &mut case);
+        let _ = self.set_point(self.index(i), &mut case);
         case
     }
 
-    /// Makes `case` the point of indices `idx` (no clone per point).
-    fn set_point(&self, [m, s, h, mu, ib]: [usize; 5], case: &mut Case) {
+    /// Makes `case` the point of indices `idx` (no clone per point), and
+    /// returns its physical flight condition when the grid has one.
+    fn set_point(
+        &self,
+        idx: [usize; DIMS],
+        case: &mut Case,
+    ) -> Result<Option<PhysicalFlight>, FlightError> {
+        let [m, s, h, mu, ib, ..] = idx;
         case.planform = self.planforms[s];
         case.mach = self.axes.mach[m];
         case.h = self.axes.cg[h];
         case.mu1 = self.axes.mu1[mu];
         case.i_b = self.axes.i_b[ib];
-        if let Some(f) = &self.flights {
-            f[s].apply(case);
+        let flight = self.point_flight(idx).transpose()?;
+        if let Some(f) = &flight {
+            f.apply(case);
         }
+        Ok(flight)
     }
 
     /// Whether the model needs the lifting surface's solves.
@@ -338,7 +483,11 @@ impl Sweep {
     /// `derivatives`, their fifteen quartic inputs too.
     pub fn evaluate(&self, range: Range<usize>, derivatives: bool) -> Points {
         let mut out = Points::with_capacity(range.start, range.len(), derivatives);
-        let per_aero = self.axes.mu1.len() * self.axes.i_b.len();
+        // the points that differ only in μ₁ and i_B (or I_y: a physical
+        // condition holds μ₁ and i_B to one value each, and a grid without
+        // one has no flight axes) share their aerodynamics
+        let lens = self.axes.lens();
+        let per_aero = lens[3] * lens[4] * lens[7];
         // a fixed ω̄ (not iterated, given) makes the derivatives independent
         // of μ₁ and i_B again
         let b = &self.base;
@@ -347,8 +496,12 @@ impl Sweep {
         let mut last: Option<(usize, CaseResult)> = None;
         let mut case = self.base.clone();
         for (i, idx) in range.clone().zip(self.indices(range)) {
-            self.set_point(idx, &mut case);
-            out.push_head(&case);
+            let flight = self.set_point(idx, &mut case);
+            out.push_head(&case, flight.as_ref().ok().and_then(Option::as_ref));
+            if let Err(e) = flight {
+                out.push_err(e.into());
+                continue;
+            }
             let key = i / per_aero;
             match &last {
                 Some((k, r)) if reuse && *k == key => {
@@ -363,13 +516,14 @@ impl Sweep {
                         ..r.derivatives
                     };
                     match Analysis::without_classical(&d) {
-                        Ok(a) => out.push_ok(&d, &a),
+                        Ok(a) => out.push_ok(&d, &a, r.coefficients.lift_slope.value),
                         Err(e) => out.push_err(e.into()),
                     }
                 }
                 _ => match evaluate_point_with(&case, self.harmonic) {
                     Ok(r) => {
-                        out.push_ok(&r.derivatives, &r.analysis);
+                        let lift_slope = r.coefficients.lift_slope.value;
+                        out.push_ok(&r.derivatives, &r.analysis, lift_slope);
                         last = Some((key, r));
                     }
                     Err(e) => out.push_err(e.into()),
@@ -402,21 +556,21 @@ impl Sweep {
 /// varies fastest.
 #[derive(Debug, Clone)]
 pub struct Indices {
-    dims: [usize; 5],
-    next: [usize; 5],
+    dims: [usize; DIMS],
+    next: [usize; DIMS],
     left: usize,
 }
 
 impl Iterator for Indices {
-    type Item = [usize; 5];
+    type Item = [usize; DIMS];
 
-    fn next(&mut self) -> Option<[usize; 5]> {
+    fn next(&mut self) -> Option<[usize; DIMS]> {
         if self.left == 0 {
             return None;
         }
         self.left -= 1;
         let out = self.next;
-        for d in (0..5).rev() {
+        for d in (0..DIMS).rev() {
             self.next[d] += 1;
             if self.next[d] < self.dims[d] {
                 break;
@@ -440,6 +594,12 @@ pub struct Points {
     pub cg: Vec<f64>,
     pub mu1: Vec<f64>,
     pub i_b: Vec<f64>,
+    /// At a physical flight condition, the point's pressure altitude (NaN
+    /// where the air was given as ρ and a), mass and I_y, in the
+    /// condition's units; NaN without one.
+    pub altitude: Vec<f64>,
+    pub mass: Vec<f64>,
+    pub i_y: Vec<f64>,
     /// Routh's test (§4).
     pub stable: Vec<Option<bool>>,
     /// The overall verdict, every root judged ([`crate::verdict`]): never
@@ -462,6 +622,11 @@ pub struct Points {
     /// m_θ̇ and its margin Δm_θ̇ over eq (41)'s requirement.
     pub m_thetadot: Vec<f64>,
     pub delta_m_thetadot: Vec<f64>,
+    /// K_n of eq (42), the neutral point h_n and the static margin h_n − h
+    /// in % M.A.C. ([`crate::criteria::Margins::at_cg`]).
+    pub k_n: Vec<f64>,
+    pub neutral_point: Vec<f64>,
+    pub static_margin_pct: Vec<f64>,
     /// The fifteen quartic inputs, when asked for (NaN where an error).
     pub derivatives: Option<Vec<Derivatives>>,
     /// The points with no result, by their position in these columns
@@ -479,6 +644,9 @@ impl Points {
             cg: v(),
             mu1: v(),
             i_b: v(),
+            altitude: v(),
+            mass: v(),
+            i_y: v(),
             stable: Vec::with_capacity(n),
             verdict: Vec::with_capacity(n),
             sp_re: v(),
@@ -493,6 +661,9 @@ impl Points {
             roots: Vec::with_capacity(n),
             m_thetadot: v(),
             delta_m_thetadot: v(),
+            k_n: v(),
+            neutral_point: v(),
+            static_margin_pct: v(),
             derivatives: derivatives.then(|| Vec::with_capacity(n)),
             errors: Vec::new(),
         }
@@ -507,12 +678,22 @@ impl Points {
         self.mach.is_empty()
     }
 
-    fn push_head(&mut self, c: &Case) {
+    fn push_head(&mut self, c: &Case, flight: Option<&PhysicalFlight>) {
         self.mach.push(c.mach);
         self.sweep_deg.push(c.planform.sweep_le.to_degrees());
         self.cg.push(c.h);
         self.mu1.push(c.mu1);
         self.i_b.push(c.i_b);
+        let [altitude, mass, i_y] = flight.map_or([f64::NAN; 3], |f| {
+            let u = f.units;
+            let altitude = f
+                .atmosphere
+                .map_or(f64::NAN, |a| a.geopotential_altitude / u.length());
+            [altitude, f.mass / u.mass(), f.pitch_inertia / u.inertia()]
+        });
+        self.altitude.push(altitude);
+        self.mass.push(mass);
+        self.i_y.push(i_y);
     }
 
     /// A point's error (after its [`Points::push_head`]).
@@ -524,7 +705,7 @@ impl Points {
 
     /// A point's results (after its [`Points::push_head`]); a point whose
     /// numbers overflow is an error, not a row of blanks.
-    fn push_ok(&mut self, d: &Derivatives, a: &Analysis) {
+    fn push_ok(&mut self, d: &Derivatives, a: &Analysis, lift_slope: f64) {
         if !finite(d, a) {
             return self.push_err(PointError::Overflow);
         }
@@ -550,6 +731,11 @@ impl Points {
         self.m_thetadot.push(a.damping_standard.m_thetadot);
         self.delta_m_thetadot
             .push(or_nan(a.damping_standard.margin));
+        let h = self.cg.last().copied().unwrap_or(f64::NAN);
+        let m = crate::criteria::Margins::at_cg(&a.quartic, d, lift_slope, h);
+        self.k_n.push(or_nan(m.static_margin));
+        self.neutral_point.push(or_nan(m.neutral_point));
+        self.static_margin_pct.push(or_nan(m.static_margin_pct));
         if let Some(ds) = &mut self.derivatives {
             ds.push(*d);
         }
@@ -571,6 +757,9 @@ impl Points {
             &mut self.ph_period,
             &mut self.m_thetadot,
             &mut self.delta_m_thetadot,
+            &mut self.k_n,
+            &mut self.neutral_point,
+            &mut self.static_margin_pct,
         ] {
             c.push(f64::NAN);
         }
@@ -593,6 +782,9 @@ impl Points {
             cg,
             mu1,
             i_b,
+            altitude,
+            mass,
+            i_y,
             stable,
             verdict,
             sp_re,
@@ -606,7 +798,10 @@ impl Points {
             ph_period,
             roots,
             m_thetadot,
-            delta_m_thetadot
+            delta_m_thetadot,
+            k_n,
+            neutral_point,
+            static_margin_pct
         );
         if let (Some(a), Some(b)) = (&mut self.derivatives, &mut other.derivatives) {
             a.append(b);
@@ -622,6 +817,9 @@ impl Points {
 /// derivatives and `c_l` ([`derivative_columns`]), and last `error`.
 pub fn columns(derivatives: bool, physical: bool) -> Vec<&'static str> {
     let mut c: Vec<&str> = Axes::NAMES.to_vec();
+    if physical {
+        c.extend(Axes::FLIGHT_NAMES);
+    }
     c.extend(RESULT_COLUMNS);
     if physical {
         c.extend(SECONDS_COLUMNS);
@@ -639,8 +837,11 @@ pub fn columns(derivatives: bool, physical: bool) -> Vec<&'static str> {
 /// damping ratio and ω̄; the phugoid's root; m_θ̇ and Δm_θ̇ (eq 41); then
 /// the phugoid's damping ratio and period (τ), the MIL-F-8785C levels (1, 2, 3, or 4 for worse than
 /// Level 3: the short period's in Categories A, B, C, the phugoid's), and
-/// the four roots (1/τ).
-pub const RESULT_COLUMNS: [&str; 25] = [
+/// the four roots (1/τ); last K_n of eq (42) (−dC_m/dC_L at constant
+/// C_L·M², with the Mach-number terms), the neutral point h_n (where
+/// m_w = 0 at constant speed; fraction of the M.A.C.) and the static margin
+/// h_n − h in % M.A.C. ([`crate::criteria::NeutralPoint`]).
+pub const RESULT_COLUMNS: [&str; 28] = [
     "stable",
     "verdict",
     "sp_re",
@@ -666,6 +867,9 @@ pub const RESULT_COLUMNS: [&str; 25] = [
     "root3_im",
     "root4_re",
     "root4_im",
+    "k_n",
+    "neutral_point",
+    "static_margin_pct",
 ];
 
 /// One cell of a point's results.
@@ -725,6 +929,9 @@ impl Points {
             n(r[2].im),
             n(r[3].re),
             n(r[3].im),
+            n(self.k_n[k]),
+            n(self.neutral_point[k]),
+            n(self.static_margin_pct[k]),
         ]
     }
 }
@@ -820,6 +1027,17 @@ const NAN_DERIVATIVES: Derivatives = Derivatives {
     mu1: f64::NAN,
     i_b: f64::NAN,
 };
+
+/// Replaces the quantity of a flight condition that the axis `axis` of
+/// [`Axes::FLIGHT_NAMES`] varies: the pressure altitude, the mass (in place
+/// of a mass or a weight), I_y.
+pub fn set_flight_value(c: &mut FlightCondition, axis: &str, value: f64) {
+    match axis {
+        "altitude" => c.air = Air::Standard(Altitude::Pressure(value)),
+        "mass" => c.mass = Mass::Mass(value),
+        _ => c.pitch_inertia = value,
+    }
+}
 
 /// Whether every number a point's row would carry is finite.
 fn finite(d: &Derivatives, a: &Analysis) -> bool {

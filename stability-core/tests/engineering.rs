@@ -169,7 +169,7 @@ fn mode_shapes_are_the_svd_null_vectors() {
         let a = Analysis::of(&d).unwrap();
         let model = LinearModel::of_report(&d, None).unwrap();
         for taus in [None, Some(3.455)] {
-            let e = Engineering::of_report(&d, &a, taus, None, AirplaneClass::IV).unwrap();
+            let e = Engineering::of_report(&d, &a, taus, None, Some(AirplaneClass::IV)).unwrap();
             assert_eq!(e.mode_shapes.len(), a.modes.len());
             let m = match taus {
                 Some(t) => model.in_seconds(t),
@@ -215,7 +215,7 @@ fn a_mode_without_theta_takes_its_largest_component() {
     };
     let v = eigenvector(&a, Complex64::new(-0.5, 0.0)).unwrap();
     assert!(v[1].norm() < 1e-15 && v[3].norm() < 1e-15);
-    let e = Engineering::of_model(model, &model_roots(&a), None, AirplaneClass::IV);
+    let e = Engineering::of_model(model, &model_roots(&a), None, Some(AirplaneClass::IV));
     let u_mode = e
         .mode_shapes
         .iter()
@@ -241,7 +241,7 @@ fn the_damp_table_is_the_roots_over_tau() {
     let d = tailless_delta_60();
     let tau = tailless_delta_60_flight().tau();
     let a = Analysis::of(&d).unwrap();
-    let e = Engineering::of_report(&d, &a, Some(tau), None, AirplaneClass::IV).unwrap();
+    let e = Engineering::of_report(&d, &a, Some(tau), None, Some(AirplaneClass::IV)).unwrap();
     let damp = e.damp.as_ref().unwrap();
     for (m, s) in a.modes.iter().zip(damp.modes()) {
         assert_eq!(m.name, s.name);
@@ -282,10 +282,13 @@ fn an_undefined_cap_is_not_assessed() {
         1e-320,
     ] {
         assert!(not_assessed(7.0, n).is_some(), "n/α = {n}");
-        assert!(ShortPeriodFrequency::assess(7.0, n, AirplaneClass::IV).is_err());
+        assert!(ShortPeriodFrequency::assess(7.0, n, Some(AirplaneClass::IV)).is_err());
     }
-    let f = ShortPeriodFrequency::assess(3.0, 20.0, AirplaneClass::IV).unwrap();
-    assert_eq!(f, ShortPeriodFrequency::of(3.0, 20.0, AirplaneClass::IV));
+    let f = ShortPeriodFrequency::assess(3.0, 20.0, Some(AirplaneClass::IV)).unwrap();
+    assert_eq!(
+        f,
+        ShortPeriodFrequency::of(3.0, 20.0, Some(AirplaneClass::IV))
+    );
 }
 
 #[test]
@@ -407,7 +410,7 @@ fn the_frequency_levels_outside_the_figures_and_the_747() {
         }
     }
     // the 747 in cruise (Etkin & Reid's): ω_sp 0.962 rad/s, n/α = 4.92/0.654
-    let f = ShortPeriodFrequency::of(0.9616, 4.920 / 0.654, AirplaneClass::III);
+    let f = ShortPeriodFrequency::of(0.9616, 4.920 / 0.654, Some(AirplaneClass::III));
     assert!((f.cap - 0.9616f64.powi(2) / (4.920 / 0.654)).abs() < 1e-15);
     assert_eq!((f.a, f.b), (Level::WorseThanThree, Level::One));
 }
@@ -436,4 +439,30 @@ fn the_control_column_in_seconds() {
     assert_eq!(b[3], 0.0);
     let shapes = ModeShape::all(&m, &[]);
     assert!(shapes.is_empty());
+}
+
+/// MIL-F-8785C §3.2.2.1.1: only Category C's floors depend on the airplane
+/// class (Fig 3: Classes I, II-C, IV against II-L, III), so without a class
+/// Categories A and B are assessed as with any, and C is not.
+#[test]
+fn without_a_class_only_category_c_is_not_assessed() {
+    for c in [Category::A, Category::B] {
+        let r = regions(c, AirplaneClass::I);
+        for k in AirplaneClass::ALL {
+            assert_eq!(regions(c, k), r, "{c:?} {k:?}");
+        }
+    }
+    // Category C's floors differ: ω_sp = 0.8 rad/s at n/α = 2.5 g/rad
+    // (CAP 0.256) is Level 1 for the heavy classes (ω ≥ 0.7, n/α ≥ 2.0),
+    // Level 2 for a fighter (ω ≥ 0.87 and n/α ≥ 2.7 fail)
+    let heavy = ShortPeriodFrequency::of(0.8, 2.5, Some(AirplaneClass::III));
+    let fighter = ShortPeriodFrequency::of(0.8, 2.5, Some(AirplaneClass::IV));
+    assert_eq!((heavy.c, fighter.c), (Some(Level::One), Some(Level::Two)));
+    let none = ShortPeriodFrequency::of(0.8, 2.5, None);
+    assert_eq!((none.a, none.b, none.c), (fighter.a, fighter.b, None));
+    assert_eq!(none.class, None);
+    for k in AirplaneClass::ALL {
+        assert_eq!(AirplaneClass::parse(k.name()), Some(k));
+    }
+    assert_eq!(AirplaneClass::parse("V"), None);
 }

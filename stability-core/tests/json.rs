@@ -38,13 +38,16 @@ use stability_core::study::report_wing;
 
 /// Keys the types add (a path with `[]` for every array element).
 /// Keys added since the fixtures were recorded (the overall verdict of
-/// issue 20: every root judged).
-const ADDED: [&str; 4] = [
+/// issue 20: every root judged; the neutral point and static margin of its
+/// item 6).
+const ADDED: [&str; 6] = [
     "modes[].natural_frequency_s",
     "aerodynamics.origin",
     "verdict",
     // what each derivative table did (issue 21 item 4; [] without tables)
     "derivative_tables",
+    "criteria.margins.neutral_point",
+    "criteria.margins.static_margin_pct",
 ];
 
 fn fixture(name: &str) -> Value {

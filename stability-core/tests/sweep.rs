@@ -29,6 +29,7 @@ fn axes() -> Axes {
         cg: vec![0.15, 0.3],
         mu1: vec![30.0, 120.0, 400.0],
         i_b: vec![0.05, 0.1],
+        ..Axes::default()
     }
 }
 

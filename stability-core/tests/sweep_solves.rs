@@ -18,6 +18,7 @@ fn the_lattice_is_solved_once_per_planform_and_mach_number() {
         cg: vec![0.1, 0.2, 0.3, 0.4],
         mu1: vec![20.0, 60.0, 180.0],
         i_b: vec![0.05, 0.1],
+        ..Axes::default()
     };
     for (aero, damping) in [
         (AeroModelName::Default, Theory::LiftingSurface),

@@ -12,6 +12,7 @@
 //! `analyze` analysed ([`derivative_file`] is that reading).
 
 use crate::Failure;
+use crate::class::ClassChoice;
 use crate::config::Config;
 use crate::csv::exact as lit;
 use crate::input::analysis::OVERFLOW;
@@ -34,6 +35,8 @@ pub struct Results {
     pub engineering: Engineering,
     /// The config's `[control]`, when it has one.
     pub control: Option<Control>,
+    /// The MIL-F-8785C class assessed, and where it came from.
+    pub class: ClassChoice,
 }
 
 impl Results {
@@ -44,8 +47,9 @@ impl Results {
 }
 
 /// The design point of `cfg` evaluated, with the short-period frequency
-/// requirement of `class`.
-pub fn results(cfg: &Config, class: AirplaneClass) -> Result<Results, Failure> {
+/// requirement of the class `given`, else the config's ([`ClassChoice`]).
+pub fn results(cfg: &Config, given: Option<AirplaneClass>) -> Result<Results, Failure> {
+    let class = ClassChoice::of(given, cfg.class);
     let flight = match &cfg.physical {
         Some(p) => {
             let point = p
@@ -64,7 +68,7 @@ pub fn results(cfg: &Config, class: AirplaneClass) -> Result<Results, Failure> {
         &result.analysis,
         tau,
         control.as_ref(),
-        class,
+        class.class,
     );
     match engineering {
         Ok(engineering) if result.analysis.is_finite() => Ok(Results {
@@ -72,6 +76,7 @@ pub fn results(cfg: &Config, class: AirplaneClass) -> Result<Results, Failure> {
             flight,
             engineering,
             control,
+            class,
         }),
         _ => Err(cfg.error_at("[flight]", OVERFLOW).into()),
     }
@@ -81,7 +86,7 @@ pub fn results(cfg: &Config, class: AirplaneClass) -> Result<Results, Failure> {
 /// makes it (the Mach number within its range, every other value the
 /// config's; at a physical flight condition V, C_L and τ at that Mach
 /// number): one point of a design's report across Mach.
-pub fn at_mach(cfg: &Config, mach: f64, class: AirplaneClass) -> Result<Results, Failure> {
+pub fn at_mach(cfg: &Config, mach: f64, class: Option<AirplaneClass>) -> Result<Results, Failure> {
     let mut cfg = cfg.clone();
     let mach = crate::config::Overrides {
         mach: Some(mach),
@@ -189,7 +194,7 @@ pub fn derivative_file(cfg: &Config, res: &Results) -> Result<DerivativeFile, Fa
 /// the config's warnings among the file's).
 pub fn read_set(
     path: &str,
-    class: AirplaneClass,
+    class: Option<AirplaneClass>,
 ) -> Result<(DerivativeFile, Option<Control>), Failure> {
     let text = crate::files::read_input(std::path::Path::new(path))?;
     if !crate::config::is_config(&text) {

@@ -17,6 +17,7 @@
 //! every error located at the value at fault. The computations are
 //! [`stability_core`]'s.
 
+pub mod class;
 pub mod config;
 pub mod control;
 pub mod convert;

@@ -14,8 +14,8 @@ use stability_core::case::Case;
 use stability_core::display::{Num, sig};
 use stability_core::grid;
 use stability_core::sweep::{
-    Axes, Cell, ERROR_COLUMN, PointError, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Seconds, Sweep,
-    SweepError, columns, derivative_columns,
+    Axes, Cell, DIMS, ERROR_COLUMN, PointError, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Seconds,
+    Sweep, SweepError, columns, derivative_columns,
 };
 
 /// The most values one range may have.
@@ -88,9 +88,15 @@ pub struct Given {
     pub cg: Option<Vec<f64>>,
     pub mu1: Option<Vec<f64>>,
     pub i_b: Option<Vec<f64>>,
+    /// At a physical flight condition only: pressure altitudes, masses and
+    /// I_y, in the config's units ([`Axes::FLIGHT_NAMES`]).
+    pub altitude: Option<Vec<f64>>,
+    pub mass: Option<Vec<f64>>,
+    pub i_y: Option<Vec<f64>>,
 }
 
-/// An axis's error: which axis (its index in [`Axes::NAMES`]) and why.
+/// An axis's error: which axis (its index in [`Axes::NAMES`], then
+/// [`Axes::FLIGHT_NAMES`]) and why.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AxisError {
     pub axis: usize,
@@ -108,7 +114,11 @@ const LIMITS: [Option<&Limit>; 5] = [
 ];
 
 /// Why μ₁ or i_B cannot be an axis at a physical flight condition.
-pub const FIXED_BY_FLIGHT: &str = "the config's flight condition is physical (mass, I_y, altitude…), which fixes μ₁ and i_B; vary the config's mass, I_y or altitude instead, or give mu1, i_b and cl_m2 in [flight]";
+pub const FIXED_BY_FLIGHT: &str = "the config's flight condition is physical (mass, I_y, altitude…), which fixes μ₁ and i_B; sweep its altitude, mass or I_y instead (the axes altitude, mass, I_y: --altitude, --mass, --iy), or give mu1, i_b and cl_m2 in [flight]";
+
+/// Why altitude, mass or I_y cannot be an axis without a physical flight
+/// condition.
+pub const NEEDS_PHYSICAL: &str = "the config's flight condition is non-dimensional (mu1, i_b, cl_m2), so there is no altitude, mass or I_y to vary; vary μ₁ and i_B instead (--mu1, --ib), or give a physical flight condition in [flight] (units, altitude, mass, I_y; see `analyze --help`)";
 
 /// Whether a case's lift slope comes from a DATCOM output's table.
 fn from_datcom(case: &Case) -> bool {
@@ -118,17 +128,34 @@ fn from_datcom(case: &Case) -> bool {
 /// The axes of a sweep about `base`: each given one within its range, the
 /// others the base's values (its sweep angle rounded to the decimals it
 /// stands for; the library then uses the base's own planform for it). At
-/// a physical flight condition μ₁ and i_B may not be given; with a DATCOM
-/// output's tables, the sweep angle may not change.
+/// a physical flight condition μ₁ and i_B may not be given; without one,
+/// altitude, mass and I_y may not; with a DATCOM output's tables, the
+/// sweep angle may not change.
 pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError> {
-    if physical {
-        for (axis, g) in [(3, &given.mu1), (4, &given.i_b)] {
-            if g.is_some() {
-                let message = FIXED_BY_FLIGHT.to_string();
-                return Err(AxisError { axis, message });
-            }
+    let fixed = [(3, &given.mu1), (4, &given.i_b)];
+    let flight = [(5, &given.altitude), (6, &given.mass), (7, &given.i_y)];
+    let (refused, message) = match physical {
+        true => (&fixed[..], FIXED_BY_FLIGHT),
+        false => (&flight[..], NEEDS_PHYSICAL),
+    };
+    if let Some((axis, _)) = refused.iter().find(|(_, g)| g.is_some()) {
+        let message = message.to_string();
+        return Err(AxisError {
+            axis: *axis,
+            message,
+        });
+    }
+    for (axis, g) in flight {
+        if g.as_ref().is_some_and(Vec::is_empty) {
+            let message = "the axis has no values".to_string();
+            return Err(AxisError { axis, message });
         }
     }
+    let (altitude, mass, i_y) = (
+        given.altitude.clone().unwrap_or_default(),
+        given.mass.clone().unwrap_or_default(),
+        given.i_y.clone().unwrap_or_default(),
+    );
     let defaults = [
         base.mach,
         grid::round(base.planform.sweep_le.to_degrees()),
@@ -169,7 +196,75 @@ pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError
         cg,
         mu1,
         i_b,
+        altitude,
+        mass,
+        i_y,
     })
+}
+
+/// At a physical flight condition with axes of its own (altitude, mass,
+/// I_y), μ₁, i_B and C_L·M² within the ranges a config may give them
+/// ([`crate::limits`], as `analyze` checks a config's): each is monotone in
+/// each axis (μ₁ = m/(½ρSc̄) and C_L·M² = W/(½ρa²S) grow with the mass
+/// and, ρ and ρa² falling, with the altitude; i_B = I_y/(mc̄²)), so the
+/// corners of the axes' ranges bound them, planform by planform. The
+/// message names the corner and what to do.
+pub fn check_flight_limits(sweep: &Sweep) -> Result<(), String> {
+    use stability_core::sweep::set_flight_value;
+    let Some(base) = sweep.condition() else {
+        return Ok(());
+    };
+    let axes = sweep.axes();
+    let ends = |v: &[f64]| match v {
+        [] => vec![None],
+        v => {
+            let lo = v.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            vec![Some(lo), Some(hi)]
+        }
+    };
+    let flags = ["--altitude", "--mass", "--iy"];
+    let (alt, mass, iy) = (ends(&axes.altitude), ends(&axes.mass), ends(&axes.i_y));
+    let mut corners = Vec::new();
+    for a in &alt {
+        for m in &mass {
+            for i in &iy {
+                corners.push([*a, *m, *i]);
+            }
+        }
+    }
+    for (p, sweep_deg) in sweep.planforms().iter().zip(&axes.sweep_deg) {
+        for corner in &corners {
+            let mut c = *base;
+            for (k, v) in corner.iter().enumerate() {
+                if let Some(v) = v {
+                    set_flight_value(&mut c, Axes::FLIGHT_NAMES[k], *v);
+                }
+            }
+            let Ok(f) = c.for_planform(p) else { continue };
+            let derived = [
+                (&limits::MU1, "μ₁ = m/(½ρSc̄)", f.mu1()),
+                (&limits::I_B, "i_B = I_y/(mc̄²)", f.i_b()),
+                (&limits::CL_M2, "C_L·M² = W/(½ρa²S)", f.cl_m2()),
+            ];
+            for (limit, what, v) in derived {
+                if let Err(m) = limit.check(v) {
+                    let at: Vec<String> = corner
+                        .iter()
+                        .zip(flags)
+                        .filter_map(|(v, f)| v.map(|v| format!("{f} {}", Num(v))))
+                        .collect();
+                    return Err(format!(
+                        "{}: {what} = {} at a sweep of {}°: {m}; narrow the range",
+                        at.join(", "),
+                        Num(v),
+                        Num(*sweep_deg)
+                    ));
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The library's grid, and each axis's values as written (formatted once,
@@ -177,9 +272,10 @@ pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError
 pub struct Grid {
     pub sweep: Sweep,
     text: [Vec<Box<str>>; 5],
-    /// At a physical flight condition, each planform's μ₁ and i_B as
-    /// written.
-    physical: Option<Vec<[Box<str>; 2]>>,
+    /// Whether the flight condition is physical: each point's μ₁ and i_B
+    /// are then its planform's and condition's, written beside its
+    /// altitude, mass and I_y.
+    physical: bool,
 }
 
 impl Grid {
@@ -187,7 +283,10 @@ impl Grid {
     /// when it has one.
     pub fn new(base: Case, axes: Axes, physical: Option<&Physical>) -> Result<Grid, SweepError> {
         // the library checks the grid's size before the values are written
-        let sweep = Sweep::new(base, axes)?;
+        let sweep = match physical {
+            Some(p) => Sweep::physical(base, axes, &p.condition)?,
+            None => Sweep::new(base, axes)?,
+        };
         let axes = sweep.axes();
         let mut num = zmij::Buffer::new();
         let mut text =
@@ -199,20 +298,10 @@ impl Grid {
             text(&axes.mu1),
             text(&axes.i_b),
         ];
-        let sweep = match physical {
-            Some(p) => sweep.with_flight(&p.condition)?,
-            None => sweep,
-        };
-        let mut num = zmij::Buffer::new();
-        let physical = sweep.flights().map(|fs| {
-            fs.iter()
-                .map(|f| [num.format(f.mu1()).into(), num.format(f.i_b()).into()])
-                .collect()
-        });
         Ok(Grid {
+            physical: physical.is_some(),
             sweep,
             text,
-            physical,
         })
     }
 
@@ -223,7 +312,7 @@ impl Grid {
 
     /// Whether the rows carry the modes in seconds.
     pub fn is_physical(&self) -> bool {
-        self.physical.is_some()
+        self.physical
     }
 
     /// The columns of the rows.
@@ -231,14 +320,9 @@ impl Grid {
         columns(derivatives, self.is_physical())
     }
 
-    /// The grid values as written of the point of indices `idx` (μ₁ and
-    /// i_B the planform's, with a physical flight condition).
-    fn head(&self, idx: [usize; 5]) -> [&str; 5] {
-        let mut text: [&str; 5] = std::array::from_fn(|k| &*self.text[k][idx[k]]);
-        if let Some(p) = &self.physical {
-            [text[3], text[4]] = [&p[idx[1]][0], &p[idx[1]][1]];
-        }
-        text
+    /// The grid values as written of the point of indices `idx`.
+    fn head(&self, idx: [usize; DIMS]) -> [&str; 5] {
+        std::array::from_fn(|k| &*self.text[k][idx[k]])
     }
 
     /// Evaluates points `range` of the grid (the library's lean path,
@@ -262,11 +346,21 @@ impl Grid {
                 }
                 _ => Ok((&points, k)),
             };
-            let seconds = self.physical.as_ref().map(|_| {
+            let seconds = self.physical.then(|| {
                 let point = r.is_ok().then(|| self.sweep.flight_point(i)).flatten();
                 points.seconds(k, point)
             });
-            write_point(&mut out, self.head(idx), r, format, seconds);
+            // at a physical condition μ₁ and i_B are the point's own, with
+            // its altitude, mass and I_y
+            let flight = self.physical.then(|| {
+                let p = &points;
+                [p.mu1[k], p.i_b[k], p.altitude[k], p.mass[k], p.i_y[k]]
+            });
+            let head = Head {
+                text: self.head(idx),
+                flight,
+            };
+            write_point(&mut out, head, r, format, seconds);
             if !format.json {
                 out.push(b'\n');
             }
@@ -345,9 +439,17 @@ impl Row<'_> {
     }
 }
 
+/// A row's grid values: the axes as written, and at a physical flight
+/// condition the point's μ₁, i_B, altitude, mass and I_y (in place of the
+/// μ₁ and i_B axes).
+struct Head<'a> {
+    text: [&'a str; 5],
+    flight: Option<[f64; 5]>,
+}
+
 fn write_point(
     out: &mut Vec<u8>,
-    head: [&str; 5],
+    head: Head<'_>,
     r: Result<(&Points, usize), &PointError>,
     format: Format,
     seconds: Option<Seconds>,
@@ -361,9 +463,16 @@ fn write_point(
         json: format.json,
         first: true,
     };
-    for (name, v) in Axes::NAMES.iter().zip(head) {
+    let given = if head.flight.is_some() { 3 } else { 5 };
+    for (name, v) in Axes::NAMES.iter().zip(head.text).take(given) {
         row.key(name);
         row.out.extend_from_slice(v.as_bytes());
+    }
+    if let Some(values) = head.flight {
+        let names = ["mu1", "i_b"].iter().chain(&Axes::FLIGHT_NAMES);
+        for (name, v) in names.zip(values) {
+            row.number(name, Some(v));
+        }
     }
     match r {
         Ok((p, k)) => {

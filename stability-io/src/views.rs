@@ -290,7 +290,12 @@ impl<'a> DesignPointKeys<'a> {
             mil_f_8785c: a.flying_qualities(time),
             short_period_frequency: e.short_period_frequency.as_ref(),
             short_period_frequency_not_assessed: e.short_period_frequency_not_assessed.as_deref(),
-            margins: Margins::of(&a.quartic, &r.derivatives, r.coefficients.lift_slope.value),
+            margins: Margins::at_cg(
+                &a.quartic,
+                &r.derivatives,
+                r.coefficients.lift_slope.value,
+                cfg.case.h,
+            ),
             cg: cfg.case.h,
             aerodynamic_centre: r.coefficients.aerodynamic_centre.value,
             aerodynamics: &r.coefficients,
@@ -370,7 +375,7 @@ impl<'a> DesignReportJson<'a> {
     /// results or its error), with the CAP levels of `class`.
     pub fn new(
         cfg: &'a Config,
-        class: stability_core::cap::AirplaneClass,
+        class: Option<stability_core::cap::AirplaneClass>,
         points: &'a [(f64, Result<Results, String>)],
     ) -> Self {
         use stability_core::criteria::Verdict;
@@ -403,7 +408,7 @@ impl<'a> DesignReportJson<'a> {
                 i_b: dimensionless.then_some(c.i_b),
                 cl_m2: dimensionless.then_some(c.cl_m2),
             },
-            class: class.name(),
+            class: class.map_or("not given", |c| c.name()),
             verdict: DesignVerdicts {
                 worst: verdicts.iter().flatten().max().copied(),
                 meets: on(Verdict::Meets),

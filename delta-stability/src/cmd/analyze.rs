@@ -67,7 +67,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         outputs.push(crate::overwrite::Named::new("--write-derivatives", out));
     }
     crate::overwrite::refuse("CONFIG", path, &read, &outputs)?;
-    let res = results(&cfg, options.class.0)?;
+    let res = results(&cfg, options.class())?;
     for w in &res.result.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }
@@ -129,17 +129,32 @@ pub fn page(cfg: &config::Config, res: &Results) -> String {
         &r.analysis,
         res.flight.map(|(_, p)| p.tau),
     ));
-    s.push_str(&super::quartic::frequency_line(&res.engineering));
-    let lift_slope = r.coefficients.lift_slope.value;
-    let m = Margins::of(&r.analysis.quartic, &r.derivatives, lift_slope);
-    let _ = writeln!(
-        s,
-        "Margins (§9): static K_n = {} (eq 42), manoeuvre H_m = {}",
-        m.static_margin.map_or("—".into(), |x| sig(x, 4)),
-        m.manoeuvre_margin.map_or("—".into(), |x| sig(x, 4))
-    );
+    s.push_str(&super::quartic::frequency_line(
+        &res.engineering,
+        &res.class,
+    ));
+    margins(&mut s, &r.margins(&cfg.case), cfg.case.h);
     s.push_str(&crate::engineering::tables(&res.engineering));
     s
+}
+
+/// The §9 margins, and the neutral point and static margin with what
+/// each means ([`stability_core::criteria::NeutralPoint`]).
+fn margins(s: &mut String, m: &Margins, h: f64) {
+    let or_dash = |v: Option<f64>, n| v.map_or("—".into(), |x| sig(x, n));
+    let _ = writeln!(
+        s,
+        "Margins (§9): static K_n = {} (eq 42: −dC_m/dC_L at constant C_L·M², from E, with the Mach-number terms m_u), manoeuvre H_m = {}",
+        or_dash(m.static_margin, 4),
+        or_dash(m.manoeuvre_margin, 4)
+    );
+    let _ = writeln!(
+        s,
+        "  neutral point h_n = {} (m_w = 0 at constant speed: the aerodynamic centre), static margin h_n − h = {} % M.A.C. at h = {}",
+        or_dash(m.neutral_point, 4),
+        or_dash(m.static_margin_pct, 4),
+        sig(h, 4)
+    );
 }
 
 /// The physical flight condition and what it gives (§3, eq 24).

@@ -14,6 +14,7 @@ use crate::page::analysis_page;
 use stability_core::analysis::Analysis;
 use stability_core::engineering::Engineering;
 use stability_core::linear::Control;
+use stability_io::class::ClassChoice;
 use stability_io::input::dimensional_notation::{self, DimensionalFile, is_dimensional};
 use stability_io::input::{self, DerivativeFile};
 use stability_io::views::{DimensionalJson, QuarticJson};
@@ -37,10 +38,20 @@ pub struct EngineeringArgs {
     /// Write the state space ẋ = A x + B δ, x = (u/V, α, q, θ), with the outputs y = C x + D δ (the states, γ = θ − α and the load factor n_z = (V/g)(q − α̇) at the c.g.), in seconds when the flight condition is dimensional (else in τ), to OUT.json, with a python-control script OUT.py and a MATLAB script OUT.m beside it (damp() and the step response). B needs a `[control]` table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; optional name); without one, A only.
     #[arg(long, value_name = "OUT.json")]
     pub state_space: Option<String>,
-    /// The MIL-F-8785C airplane class (§1.3) whose Category C floors the short-period frequency requirement applies.
-    #[arg(long = "class", value_enum, default_value = "IV")]
-    pub class: ClassArg,
+    /// The MIL-F-8785C airplane class (§1.3) whose Category C floors the short-period frequency requirement applies (only they depend on the class). Not given: analyze takes the config's `[aircraft] class`; without one (and always for quartic's files) Category C of that requirement is not assessed, and the page says so. (It was IV by default.)
+    #[arg(long = "class", value_enum)]
+    pub class: Option<ClassArg>,
 }
+
+impl EngineeringArgs {
+    /// The class given with `--class`, if one was.
+    pub fn class(&self) -> Option<stability_core::cap::AirplaneClass> {
+        self.class.map(|c| c.0)
+    }
+}
+
+/// How a class is given on the command line, in messages.
+pub const CLASS_FLAG: &str = "--class";
 
 /// A derivative file as `quartic` reads it: a dimensional set as it is,
 /// any other in the report's notation with its `[control]` table.
@@ -71,7 +82,8 @@ pub fn run(a: &Args) -> Result<(), Failure> {
         Read::Report(input, control) => (input, control),
     };
     crate::output::warn_all(&input.warnings);
-    let (analysis, engineering) = input.evaluated(control.as_ref(), o.class.0)?;
+    let (analysis, engineering) = input.evaluated(control.as_ref(), o.class())?;
+    let class = ClassChoice::of(o.class(), None);
     let tau = input.tau();
     let view = QuarticJson::new(&input, &analysis, &engineering);
     crate::output::finite(file, &view)?;
@@ -91,11 +103,16 @@ pub fn run(a: &Args) -> Result<(), Failure> {
     if a.json {
         crate::output::print_json(file, &view)
     } else {
-        print(&table(&input, &analysis, &engineering))
+        print(&table(&input, &analysis, &engineering, &class))
     }
 }
 
-pub fn table(input: &DerivativeFile, a: &Analysis, engineering: &Engineering) -> String {
+pub fn table(
+    input: &DerivativeFile,
+    a: &Analysis,
+    engineering: &Engineering,
+    class: &ClassChoice,
+) -> String {
     let mut s = analysis_page(
         &format!(
             "Stability quartic of {} (eqs 4–6; the errata of docs/errata.md applied)",
@@ -104,7 +121,7 @@ pub fn table(input: &DerivativeFile, a: &Analysis, engineering: &Engineering) ->
         a,
         input.tau(),
     );
-    s.push_str(&frequency_line(engineering));
+    s.push_str(&frequency_line(engineering, class));
     s.push_str(&crate::engineering::tables(engineering));
     s
 }
@@ -112,12 +129,15 @@ pub fn table(input: &DerivativeFile, a: &Analysis, engineering: &Engineering) ->
 /// The MIL-F-8785C short-period frequency requirement's line: the levels,
 /// or why it is not assessed (CAP undefined); empty when it does not
 /// apply (no oscillatory short period, or no times in seconds).
-pub fn frequency_line(e: &Engineering) -> String {
+pub fn frequency_line(e: &Engineering, class: &ClassChoice) -> String {
     match (
         &e.short_period_frequency,
         &e.short_period_frequency_not_assessed,
     ) {
-        (Some(f), _) => format!("{}\n", crate::engineering::frequency_line(f)),
+        (Some(f), _) => format!(
+            "{}\n",
+            crate::engineering::frequency_line(f, &class.describe(CLASS_FLAG))
+        ),
         (None, Some(why)) => {
             format!("MIL-F-8785C short-period frequency (§3.2.2.1.1): not assessed: {why}\n")
         }
@@ -131,7 +151,8 @@ pub fn frequency_line(e: &Engineering) -> String {
 /// from the set in stability axes.
 fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> {
     crate::output::warn_all(&input.warnings);
-    let (a, engineering) = input.evaluated(args.engineering.class.0)?;
+    let (a, engineering) = input.evaluated(args.engineering.class())?;
+    let class = ClassChoice::of(args.engineering.class(), None);
     let view = DimensionalJson::new(input, &a, &engineering);
     crate::output::finite(&input.path, &view)?;
     if let Some(out) = &args.engineering.state_space {
@@ -154,7 +175,7 @@ fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> 
         input.path
     );
     let mut page = crate::page::dimensional_page(&title, &a);
-    page.push_str(&frequency_line(&engineering));
+    page.push_str(&frequency_line(&engineering, &class));
     page.push_str(&crate::engineering::tables(&engineering));
     print(&page)
 }

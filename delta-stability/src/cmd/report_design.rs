@@ -8,7 +8,6 @@ use super::report::{Args, progress_bar, write_plate, write_report};
 use crate::Failure;
 use crate::report::design::{Design, MAX_MACHS, default_machs, figures, page};
 use crate::report::html::DOCS;
-use stability_core::cap::AirplaneClass;
 use stability_io::config::overridden;
 use stability_io::diag::InputError;
 use stability_io::limits;
@@ -66,7 +65,7 @@ pub fn run(args: &Args, config: &str) -> Result<(), Failure> {
     crate::overwrite::refuse("CONFIG", config, &read, &outputs)?;
     let bad = |m: String| Failure::Input(InputError::file(config, m));
     let ms = machs(args.mach.as_deref(), cfg.case.mach).map_err(bad)?;
-    let class = args.class.map_or(AirplaneClass::IV, |c| c.0);
+    let class = stability_io::class::ClassChoice::of(args.class.map(|c| c.0), cfg.class);
     let bar = progress_bar(3);
     bar.set_message(format!("{} Mach numbers", ms.len()));
     let design = Design::new(cfg, &ms, class);
@@ -101,7 +100,7 @@ pub fn run(args: &Args, config: &str) -> Result<(), Failure> {
             }
         }
         bar.inc(1);
-        let summary = DesignReportJson::new(&design.cfg, class, &design.points);
+        let summary = DesignReportJson::new(&design.cfg, class.class, &design.points);
         crate::output::finite("summary.json", &summary)?;
         let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
         write("summary.json", json.as_bytes())?;

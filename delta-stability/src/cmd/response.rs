@@ -120,8 +120,7 @@ impl Args {
 }
 
 pub fn run(o: &Args) -> Result<(), Failure> {
-    let class = stability_core::cap::AirplaneClass::IV;
-    let (read, files) = stability_io::files::recording(|| read_set(&o.file, class));
+    let (read, files) = stability_io::files::recording(|| read_set(&o.file, None));
     let (file, control) = read?;
     let read = files;
     let outputs: Vec<Named> = [("--csv", &o.csv), ("--svg", &o.svg)]

@@ -26,8 +26,7 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Result<(), Failure> {
-    let class = stability_core::cap::AirplaneClass::IV;
-    let (input, _) = stability_io::design_point::read_set(&args.file, class)?;
+    let (input, _) = stability_io::design_point::read_set(&args.file, None)?;
     crate::output::warn_all(&input.warnings);
     let analysis = input.analysis()?;
     let out = SensitivityJson::new(&input, &analysis);

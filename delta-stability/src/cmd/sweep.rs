@@ -18,7 +18,7 @@ use stability_core::sweep::{Axes, SweepError};
 use stability_io::config::{Config, overridden};
 use stability_io::diag::{InputError, IoError};
 use stability_io::files::write_error;
-use stability_io::sweep::{Format, Given, Grid, axes, parse_range};
+use stability_io::sweep::{Format, Given, Grid, axes, check_flight_limits, parse_range};
 use std::io::Write as _;
 use std::path::Path;
 
@@ -28,20 +28,36 @@ pub struct Args {
     /// The base design point (TOML).
     pub config: String,
     /// Mach numbers: A:B:STEP (inclusive), a list A,B,… or one value.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mach: String,
     /// Leading-edge sweeps in degrees, A:B:STEP, A,B,… or one value.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub sweep: Option<String>,
     /// c.g. positions h, A:B:STEP, A,B,… or one value.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub cg: Option<String>,
     /// Relative densities μ₁, A:B:STEP, A,B,… or one value.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mu1: Option<String>,
     /// Pitching inertias i_B, A:B:STEP, A,B,… or one value.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub ib: Option<String>,
+    /// Pressure altitudes (1976 standard atmosphere) in the config's units
+    /// (m or ft), A:B:STEP, A,B,… or one value: a physical flight
+    /// condition's `altitude` (the config must give one), each point's μ₁,
+    /// i_B, C_L·M² and speed of sound from it.
+    #[arg(long, allow_hyphen_values = true)]
+    pub altitude: Option<String>,
+    /// Masses in the config's units (kg or slug; in place of its mass or
+    /// weight), A:B:STEP, A,B,… or one value: a physical flight condition
+    /// only.
+    #[arg(long, allow_hyphen_values = true)]
+    pub mass: Option<String>,
+    /// Pitching moments of inertia I_y in the config's units (kg·m² or
+    /// slug·ft²), A:B:STEP, A,B,… or one value: a physical flight
+    /// condition only.
+    #[arg(long = "iy", alias = "I_y", allow_hyphen_values = true)]
+    pub i_y: Option<String>,
     /// The output file, .csv or .json.
     #[arg(short = 'o', long = "output")]
     pub output: String,
@@ -53,8 +69,9 @@ pub struct Args {
     pub model: ModelArgs,
 }
 
-/// The options' flags, in the order of [`Axes::NAMES`].
-const FLAGS: [&str; 5] = ["mach", "sweep", "cg", "mu1", "ib"];
+/// The options' flags, in the order of [`Axes::NAMES`] and
+/// [`Axes::FLIGHT_NAMES`].
+const FLAGS: [&str; 8] = ["mach", "sweep", "cg", "mu1", "ib", "altitude", "mass", "iy"];
 
 /// The grid of the options about the config's design point.
 pub fn grid(o: &Args, cfg: &Config) -> Result<Grid, String> {
@@ -65,13 +82,26 @@ pub fn grid(o: &Args, cfg: &Config) -> Result<Grid, String> {
         cg: range(2, &o.cg).transpose()?,
         mu1: range(3, &o.mu1).transpose()?,
         i_b: range(4, &o.ib).transpose()?,
+        altitude: range(5, &o.altitude).transpose()?,
+        mass: range(6, &o.mass).transpose()?,
+        i_y: range(7, &o.i_y).transpose()?,
     };
     let axes: Axes = axes(given, &cfg.case, cfg.physical.is_some())
         .map_err(|e| format!("--{}: {}", FLAGS[e.axis], e.message))?;
-    Grid::new(cfg.case.clone(), axes, cfg.physical.as_ref()).map_err(|e| match e {
+    let grid = Grid::new(cfg.case.clone(), axes, cfg.physical.as_ref()).map_err(|e| match e {
         SweepError::Planform { sweep_deg, error } => format!("--sweep {sweep_deg}: {error}"),
+        SweepError::FlightAxis { axis, value, error } => {
+            let k = Axes::FLIGHT_NAMES
+                .iter()
+                .position(|n| *n == axis)
+                .unwrap_or(0);
+            format!("--{} {value}: {error}", FLAGS[5 + k])
+        }
+        e @ SweepError::NotPressureAltitude { .. } => format!("--altitude: {e}"),
         e => e.to_string(),
-    })
+    })?;
+    check_flight_limits(&grid.sweep)?;
+    Ok(grid)
 }
 
 /// Whether the output is JSON (`.json`) or CSV (`.csv`).

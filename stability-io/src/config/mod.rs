@@ -35,7 +35,11 @@
 //! # any of x_u x_w x_wdot x_q z_u z_w z_wdot z_q m_u m_w m_wdot m_q (z_ẇ, m_ẇ too)
 //! ```
 //!
-//! An optional `[control]` table gives the control derivatives of
+//! An optional `[aircraft]` table states what the aircraft is: `class =
+//! "IV"` (MIL-F-8785C §1.3: `I`, `II-C`, `II-L`, `III`, `IV`), whose
+//! Category C floors the short-period frequency requirement applies
+//! ([`Config::class`]; a command line's `--class` wins). An optional
+//! `[control]` table gives the control derivatives of
 //! `--state-space` (`[control]`). Each value must lie in its
 //! range ([`limits`]); every error names the file, line and field.
 
@@ -52,6 +56,7 @@ use crate::input::toml_error;
 use crate::limits;
 use raw::{RawConfig, RawModel, RawPlanform};
 use stability_core::aero::{AeroError, AeroModel, AeroModelName};
+use stability_core::cap::AirplaneClass;
 use stability_core::case::{Case, CaseError, DampingModel};
 use stability_core::damping::DampingError;
 use stability_core::display::{Num, sig};
@@ -78,6 +83,8 @@ pub struct Config {
     /// The DATCOM output the model takes its tables from (`[model]
     /// datcom`, `--datcom`).
     pub datcom: Option<Datcom>,
+    /// The MIL-F-8785C class `[aircraft] class` states, if it does.
+    pub class: Option<AirplaneClass>,
     text: String,
     /// Where each value (and table) was written: field and span.
     spans: Vec<(String, Range<usize>)>,
@@ -184,16 +191,44 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
         }
         None => (AeroModel::default(), None),
     };
+    let class = match &raw.aircraft {
+        Some(a) => class(&mut r, a.get_ref())?,
+        None => None,
+    };
     Ok(Config {
         path: path.to_string(),
         case,
         physical,
         tables,
         datcom,
+        class,
         text: text.to_string(),
         spans: r.spans,
         overridden: Vec::new(),
     })
+}
+
+/// `[aircraft] class`, a MIL-F-8785C class by its name.
+fn class(r: &mut Reader<'_>, a: &raw::RawAircraft) -> Result<Option<AirplaneClass>, InputError> {
+    let Some(c) = &a.class else {
+        return Ok(None);
+    };
+    r.spans.push(("[aircraft] class".into(), c.span()));
+    match AirplaneClass::parse(c.get_ref()) {
+        Some(k) => Ok(Some(k)),
+        None => {
+            let names = AirplaneClass::ALL.map(AirplaneClass::name);
+            let m = format!(
+                "unknown MIL-F-8785C class `{}`{}; the classes (§1.3) are {}",
+                quote(c.get_ref()),
+                crate::input::suggest::did_you_mean(c.get_ref(), names),
+                AirplaneClass::ALL
+                    .map(|k| format!("{} ({})", k.name(), k.describe()))
+                    .join(", ")
+            );
+            Err(r.err(c.span(), "[aircraft] class", m))
+        }
+    }
 }
 
 /// The one size given (root chord, span or area), its field and value.

@@ -16,6 +16,16 @@ pub struct RawConfig {
     /// The uncertainty study, read by [`super::uncertainty`].
     #[serde(default)]
     pub uncertainty: Option<toml::Value>,
+    /// What the aircraft is (its MIL-F-8785C class).
+    #[serde(default)]
+    pub aircraft: Option<Spanned<RawAircraft>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawAircraft {
+    /// The MIL-F-8785C class, §1.3: `I`, `II-C`, `II-L`, `III` or `IV`.
+    pub class: Option<Spanned<String>>,
 }
 
 #[derive(Deserialize)]

@@ -40,7 +40,7 @@ impl DerivativeFile {
     pub fn evaluated(
         &self,
         control: Option<&Control>,
-        class: AirplaneClass,
+        class: Option<AirplaneClass>,
     ) -> Result<(Analysis, Engineering), InputError> {
         let analysis = self.analysis()?;
         Engineering::of_report(&self.derivatives, &analysis, self.tau(), control, class)
@@ -87,7 +87,7 @@ impl DimensionalFile {
     /// E⁻¹A in seconds, n/α = −Z_w U₀/g. Every number finite.
     pub fn evaluated(
         &self,
-        class: AirplaneClass,
+        class: Option<AirplaneClass>,
     ) -> Result<(DimensionalAnalysis, Engineering), InputError> {
         let a = self.analysis()?;
         let overflow = || self.error_at(self.most_extreme(), OVERFLOW);

@@ -247,7 +247,13 @@ fn cap(d: &Design) -> Vec<Plate> {
             "CAP (1/(g·s²))",
         )
         .with(d.curve("CAP", |r| spf(r).map(|s| s.cap)));
-    let rs = regions(Category::A, d.class);
+    // Category A's regions are the same for every class (§3.2.2.1.1)
+    let rs = regions(
+        Category::A,
+        d.class
+            .class
+            .unwrap_or(stability_core::cap::AirplaneClass::IV),
+    );
     for (k, r) in rs.iter().take(2).enumerate() {
         let l = k + 1;
         let (lo, hi) = (r.cap_min, r.cap_max);
@@ -273,12 +279,10 @@ fn cap(d: &Design) -> Vec<Plate> {
     );
     for name in ["A", "B", "C"] {
         lv = lv.with(d.curve(&format!("Category {name}"), |r| {
-            spf(r).map(|s| {
-                number(match name {
-                    "A" => s.a,
-                    "B" => s.b,
-                    _ => s.c,
-                })
+            spf(r).and_then(|s| match name {
+                "A" => Some(number(s.a)),
+                "B" => Some(number(s.b)),
+                _ => s.c.map(number),
             })
         }));
     }
@@ -288,8 +292,8 @@ fn cap(d: &Design) -> Vec<Plate> {
             "cap",
             fig,
             format!(
-                "§3.2.2.1.1: n/α = −z_w/C_L (g/rad). The lines bound Category A's Levels 1 and 2 (the ωₙ floors and the other categories are in the levels beside; class {} for Category C).",
-                d.class.name()
+                "§3.2.2.1.1: n/α = −z_w/C_L (g/rad). The lines bound Category A's Levels 1 and 2 (the ωₙ floors and the other categories are in the levels beside; {} for Category C).",
+                d.class.describe("--class")
             ),
         ),
         Plate::named(
@@ -304,10 +308,11 @@ fn margins(d: &Design) -> Vec<Plate> {
     use stability_core::criteria::Margins;
     let m = |r: &Results| {
         let r = &r.result;
-        Margins::of(
+        Margins::at_cg(
             &r.analysis.quartic,
             &r.derivatives,
             r.coefficients.lift_slope.value,
+            d.cfg.case.h,
         )
     };
     let mut fig = d
@@ -318,7 +323,6 @@ fn margins(d: &Design) -> Vec<Plate> {
         .with(d.curve("static margin K_n (eq 42)", |r| m(r).static_margin))
         .with(d.curve("manoeuvre margin H_m (§9)", |r| m(r).manoeuvre_margin));
     fig.reference_lines.push((0.0, "neutral".into()));
-    // the neutral point h_n joins the positions below as one more curve
     let pos = d
         .figure(
             "The aerodynamic centre and the c.g.",
@@ -327,6 +331,7 @@ fn margins(d: &Design) -> Vec<Plate> {
         .with(d.curve("aerodynamic centre H₀", |r| {
             Some(r.result.coefficients.aerodynamic_centre.value)
         }))
+        .with(d.curve("neutral point h_n (m_w = 0)", |r| m(r).neutral_point))
         .with(d.curve("c.g. h", |_| Some(d.cfg.case.h)));
     vec![
         Plate::named(
@@ -338,7 +343,7 @@ fn margins(d: &Design) -> Vec<Plate> {
             "positions",
             pos,
             format!(
-                "H₀ from {}.",
+                "H₀ from {}. The neutral point h_n = h + m_w/z_w is the c.g. at which m_w = 0 at constant speed (the wing alone: h_n = H₀); the static margin is h_n − h; K_n (eq 42) differs from it by the Mach-number term of E.",
                 d.sources(|r| r.result.coefficients.origin.aerodynamic_centre.describe())
             ),
         ),

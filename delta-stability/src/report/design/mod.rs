@@ -17,11 +17,11 @@ pub mod page;
 
 use crate::plot::{Band, Figure, Series};
 use rayon::prelude::*;
-use stability_core::cap::AirplaneClass;
 use stability_core::case::DampingModel;
 use stability_core::geometry::sonic_leading_edge_mach;
 use stability_core::grid::grid;
 use stability_core::modes::Mode;
+use stability_io::class::ClassChoice;
 use stability_io::config::Config;
 use stability_io::design_point::{Results, at_mach};
 
@@ -43,17 +43,17 @@ pub const MAX_MACHS: usize = 2001;
 pub struct Design {
     pub cfg: Config,
     /// The airplane class of the CAP levels (MIL-F-8785C §1.3).
-    pub class: AirplaneClass,
+    pub class: ClassChoice,
     /// Each Mach number with its results, or why it has none.
     pub points: Vec<(f64, Result<Results, String>)>,
 }
 
 impl Design {
     /// `cfg` at each Mach number of `machs` (in parallel).
-    pub fn new(cfg: Config, machs: &[f64], class: AirplaneClass) -> Design {
+    pub fn new(cfg: Config, machs: &[f64], class: ClassChoice) -> Design {
         let points = machs
             .par_iter()
-            .map(|&m| (m, at_mach(&cfg, m, class).map_err(|e| e.to_string())))
+            .map(|&m| (m, at_mach(&cfg, m, class.class).map_err(|e| e.to_string())))
             .collect();
         Design { cfg, class, points }
     }

@@ -57,7 +57,7 @@ fn design(d: &Design) -> String {
         ),
     };
     format!(
-        "<p>The design of <code>{}</code>: leading-edge sweep Λ = {}°, taper {}, aspect ratio {}, c.g. at h = {} of the M.A.C., damping model <code>{}</code> (<a href=\"docs/models.md\">docs/models.md</a>, <a href=\"docs/damping-theories.md\">docs/damping-theories.md</a>), {flight}. Each Mach number is evaluated as <code>delta-stability analyze {} --mach M</code> evaluates it. MIL-F-8785C class {} for Category C. Numbers: <a href=\"summary.json\">summary.json</a>; sources: <a href=\"sources.csv\">sources.csv</a>.</p>",
+        "<p>The design of <code>{}</code>: leading-edge sweep Λ = {}°, taper {}, aspect ratio {}, c.g. at h = {} of the M.A.C., damping model <code>{}</code> (<a href=\"docs/models.md\">docs/models.md</a>, <a href=\"docs/damping-theories.md\">docs/damping-theories.md</a>), {flight}. Each Mach number is evaluated as <code>delta-stability analyze {} --mach M</code> evaluates it. MIL-F-8785C: {} for Category C. Numbers: <a href=\"summary.json\">summary.json</a>; sources: <a href=\"sources.csv\">sources.csv</a>.</p>",
         esc(&d.cfg.path),
         g(p.sweep_le.to_degrees(), 4),
         g(p.taper, 3),
@@ -65,7 +65,7 @@ fn design(d: &Design) -> String {
         g(c.h, 3),
         c.damping.name(),
         esc(&d.cfg.path),
-        d.class.name()
+        d.class.describe("--class")
     )
 }
 
@@ -168,7 +168,7 @@ fn aperiodic(r: &Results) -> String {
 }
 
 /// One Mach number's row of the table.
-fn row(m: f64, r: &Results) -> String {
+fn row(m: f64, r: &Results, h: f64) -> String {
     let a = &r.result.analysis;
     let tau = r.tau();
     let v = Overall::of(a, Timebase::Tau(tau));
@@ -180,17 +180,24 @@ fn row(m: f64, r: &Results) -> String {
     let ph_level = fq.phugoid.map_or("—".into(), |p| lv(p.level));
     let spf = r.engineering.short_period_frequency;
     let cap = spf.map_or("—".into(), |s| {
-        format!("{} ({}/{}/{})", sig(s.cap, 3), lv(s.a), lv(s.b), lv(s.c))
+        format!(
+            "{} ({}/{}/{})",
+            sig(s.cap, 3),
+            lv(s.a),
+            lv(s.b),
+            s.c.map_or("—".into(), lv)
+        )
     });
     let res = &r.result;
-    let mg = stability_core::criteria::Margins::of(
+    let mg = stability_core::criteria::Margins::at_cg(
         &a.quartic,
         &res.derivatives,
         res.coefficients.lift_slope.value,
+        h,
     );
     let word = v.overall.as_str();
     format!(
-        "<tr><td>{}</td><td class=\"{word}\" title=\"{}\">{word}</td>{}{}<td>{}</td><td>{}</td><td>{sp_levels}</td><td>{ph_level}</td><td>{cap}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
+        "<tr><td>{}</td><td class=\"{word}\" title=\"{}\">{word}</td>{}{}<td>{}</td><td>{}</td><td>{sp_levels}</td><td>{ph_level}</td><td>{cap}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>",
         short(m),
         esc(&v.reasons.join("; ")),
         mode_cells(r, short_period(r)),
@@ -200,6 +207,8 @@ fn row(m: f64, r: &Results) -> String {
         n(mg.static_margin),
         n(mg.manoeuvre_margin),
         n(Some(res.coefficients.aerodynamic_centre.value)),
+        n(mg.neutral_point),
+        n(mg.static_margin_pct),
     )
 }
 
@@ -210,13 +219,13 @@ fn table(d: &Design) -> String {
         format!("<th colspan=\"5\">{name}: ζ, ωₙ ({w}), period ({t}), t½ ({t}), cycles to ½</th>")
     };
     let mut s = format!(
-        "<h2 id=\"table\">Every Mach number</h2><p>×2: the mode grows, and doubles in that time or those cycles. Levels: MIL-F-8785C, Categories A/B/C (4: worse than Level 3). CAP with its levels A/B/C (physical flight conditions only). Hover over a verdict for its reasons.</p><div class=\"scroll\"><table><tr><th>M</th><th>verdict</th>{}{}<th>aperiodic roots ({t})</th><th>Δm_θ̇ (eq 41)</th><th>short-period ζ levels</th><th>phugoid level</th><th>CAP (levels)</th><th>K_n (eq 42)</th><th>H_m</th><th>H₀</th></tr>\n",
+        "<h2 id=\"table\">Every Mach number</h2><p>×2: the mode grows, and doubles in that time or those cycles. Levels: MIL-F-8785C, Categories A/B/C (4: worse than Level 3). CAP with its levels A/B/C (physical flight conditions only). Hover over a verdict for its reasons.</p><div class=\"scroll\"><table><tr><th>M</th><th>verdict</th>{}{}<th>aperiodic roots ({t})</th><th>Δm_θ̇ (eq 41)</th><th>short-period ζ levels</th><th>phugoid level</th><th>CAP (levels)</th><th>K_n (eq 42)</th><th>H_m</th><th>H₀</th><th>h_n</th><th>h_n − h (% M.A.C.)</th></tr>\n",
         mode("short period"),
         mode("phugoid")
     );
     for (m, r) in &d.points {
         match r {
-            Ok(r) => s.push_str(&row(*m, r)),
+            Ok(r) => s.push_str(&row(*m, r, d.cfg.case.h)),
             Err(e) => {
                 let _ = write!(
                     s,
