@@ -50,6 +50,7 @@ pub fn uncertainty_run(
             damping,
             aero,
             omega_bar,
+            datcom: None,
         };
         let cfg = overridden(config, None, None, model)?;
         let study = stability_io::config::uncertainty::read(&cfg)
