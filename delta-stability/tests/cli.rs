@@ -691,6 +691,46 @@ fn eigenvalues_of_eqs_2(d: &[f64; 15]) -> Vec<num_complex::Complex64> {
     m.complex_eigenvalues().iter().copied().collect()
 }
 
+/// One sweep row against the eigenvalues of eqs (2) from its own
+/// derivative columns: the short period's root, eq (8)'s cycles and the
+/// overall verdict; the row's cycles to half amplitude.
+fn row_agrees_with_eqs_2(r: &[&str], col: &dyn Fn(&str) -> usize) -> f64 {
+    // the twelve derivatives and c_l, then μ₁ and i_B from the grid's
+    // columns (each column once: issue 19)
+    let d: [f64; 15] = std::array::from_fn(|k| {
+        let c = match k {
+            13 => col("mu1"),
+            14 => col("i_b"),
+            _ => col("x_u") + k,
+        };
+        r[c].parse().unwrap()
+    });
+    let eig = eigenvalues_of_eqs_2(&d);
+    let sp = num_complex::Complex64::new(
+        r[col("sp_re")].parse().unwrap(),
+        r[col("sp_im")].parse().unwrap(),
+    );
+    let nearest = eig
+        .iter()
+        .map(|z| (z - sp).norm())
+        .fold(f64::INFINITY, f64::min);
+    assert!(nearest <= 1e-9 * sp.norm(), "{nearest} {r:?}");
+    // eq (8): cycles to half = 0.11032 s/(−r)
+    let cycles: f64 = r[col("sp_cycles_to_half")].parse().unwrap();
+    assert!((cycles - 0.11032 * sp.im / -sp.re).abs() < 1e-4 * cycles);
+    // the overall verdict from the eigenvalues of eqs (2): divergent
+    // where any root grows, else the §8 standard on the short period
+    let verdict = r[col("verdict")];
+    let grows = eig.iter().any(|z| z.re > 0.0);
+    let expected = match (grows, cycles <= 1.0) {
+        (true, _) => "divergent",
+        (false, true) => "meets",
+        (false, false) => "fails",
+    };
+    assert_eq!(verdict, expected, "{r:?}");
+    cycles
+}
+
 #[test]
 fn sweep_csv_covers_the_grid_and_agrees_with_the_state_matrix() {
     let dir = Scratch::new();
@@ -733,39 +773,7 @@ fn sweep_csv_covers_the_grid_and_agrees_with_the_state_matrix() {
     for r in &rows {
         assert_eq!(r.len(), header.len());
         assert_eq!(r[col("error")], "", "{r:?}");
-        // the twelve derivatives and c_l, then μ₁ and i_B from the grid's
-        // columns (each column once: issue 19)
-        let d: [f64; 15] = std::array::from_fn(|k| {
-            let c = match k {
-                13 => col("mu1"),
-                14 => col("i_b"),
-                _ => col("x_u") + k,
-            };
-            r[c].parse().unwrap()
-        });
-        let eig = eigenvalues_of_eqs_2(&d);
-        let sp = num_complex::Complex64::new(
-            r[col("sp_re")].parse().unwrap(),
-            r[col("sp_im")].parse().unwrap(),
-        );
-        let nearest = eig
-            .iter()
-            .map(|z| (z - sp).norm())
-            .fold(f64::INFINITY, f64::min);
-        assert!(nearest <= 1e-9 * sp.norm(), "{nearest} {r:?}");
-        // eq (8): cycles to half = 0.11032 s/(−r)
-        let cycles: f64 = r[col("sp_cycles_to_half")].parse().unwrap();
-        assert!((cycles - 0.11032 * sp.im / -sp.re).abs() < 1e-4 * cycles);
-        // the overall verdict from the eigenvalues of eqs (2): divergent
-        // where any root grows, else the §8 standard on the short period
-        let verdict = r[col("verdict")];
-        let grows = eig.iter().any(|z| z.re > 0.0);
-        let expected = match (grows, cycles <= 1.0) {
-            (true, _) => "divergent",
-            (false, true) => "meets",
-            (false, false) => "fails",
-        };
-        assert_eq!(verdict, expected, "{r:?}");
+        let cycles = row_agrees_with_eqs_2(r, &col);
         if r[col("mu1")] == "50.0" && cycles <= 1.0 {
             meets_at_50 += 1;
         }
