@@ -38,13 +38,7 @@ fn quartic(file: &str) -> Value {
 
 /// The program's mode `name` (`short_period`, `phugoid`) as (re, im) in 1/s.
 fn mode(v: &Value, name: &str) -> (f64, f64) {
-    let m = v["modes"]
-        .as_array()
-        .expect("modes")
-        .iter()
-        .find(|m| m["name"] == name)
-        .unwrap_or_else(|| panic!("no {name} in {v}"));
-    (m["re_s"].as_f64().unwrap(), m["im_s"].as_f64().unwrap())
+    common::mode_s(v, name)
 }
 
 /// ω_n, ζ, Re λ or Im λ of a root.

@@ -26,13 +26,8 @@ fn quartic(file: &str) -> Value {
 
 /// The upper root of mode `name` in 1/s.
 fn mode(v: &Value, name: &str) -> Complex64 {
-    let m = v["modes"]
-        .as_array()
-        .expect("modes")
-        .iter()
-        .find(|m| m["name"] == name)
-        .unwrap_or_else(|| panic!("no {name} in {v}"));
-    Complex64::new(m["re_s"].as_f64().unwrap(), m["im_s"].as_f64().unwrap())
+    let (re, im) = common::mode_s(v, name);
+    Complex64::new(re, im)
 }
 
 fn text(file: &str) -> String {

@@ -96,3 +96,15 @@ impl Scratch {
 pub fn path(p: &Path) -> &str {
     p.to_str().expect("a UTF-8 path")
 }
+
+/// The mode `name` (`short_period`, `phugoid`) of a `--json` output, as
+/// (re, im) in 1/s.
+pub fn mode_s(v: &serde_json::Value, name: &str) -> (f64, f64) {
+    let m = v["modes"]
+        .as_array()
+        .expect("modes")
+        .iter()
+        .find(|m| m["name"] == name)
+        .unwrap_or_else(|| panic!("no {name} in {v}"));
+    (m["re_s"].as_f64().unwrap(), m["im_s"].as_f64().unwrap())
+}
