@@ -40,6 +40,7 @@ pub mod atmosphere;
 pub mod cap;
 pub mod case;
 pub mod classical;
+pub mod configuration;
 pub mod criteria;
 pub mod damp;
 pub mod damping;
