@@ -121,6 +121,41 @@ impl LatticeSpec {
         }
     }
 
+    /// Above this Mach number [`LatticeSpec::for_mach`] refines the lattice
+    /// chordwise; at and below it, it is [`LatticeSpec::for_wing`] unchanged.
+    pub const REFINED_ABOVE: f64 = 0.9;
+
+    /// The default lattice for `wing` at Mach `mach`: [`LatticeSpec::for_wing`]
+    /// up to M = [`Self::REFINED_ABOVE`], and above it as many more chordwise
+    /// boxes as keep the Prandtl–Glauert stretched box length Δx/β at its
+    /// value at M = 0.9 — N = 12·β(0.9)/β rounded up to a multiple of 4
+    /// (20 at M = 0.95, 28 at 0.98, 40 at 0.99, 56 at 0.995, 84 at 0.998), at
+    /// most [`Self::MAX_BOXES`] on the half wing.
+    ///
+    /// Why Δx ∝ β: the steady kernel is the incompressible one on the
+    /// stretched wing x/β (Albano & Rodden 1969, eq 11), whose chord c/β
+    /// grows as M → 1, and the oscillatory increment's structure near the
+    /// Mach plane, x₀ ≲ βr, shrinks with it (the kernel's u₁ = (MR − x₀)/(β²r),
+    /// [`super::kernel`]). The measured convergence near M = 1 (chordwise
+    /// ratios, `docs/lattice-near-sonic.md`) is what this rule keeps: the
+    /// default Richardson extrapolation at N(M) is within 0.5 % of the
+    /// densest lattice's for the note's wings at M = 0.95 and 0.98,
+    /// ω̄ = 0–0.6.
+    pub fn for_mach(wing: &Trapezoid, mach: f64) -> LatticeSpec {
+        let base = LatticeSpec::for_wing(wing);
+        if !(mach > Self::REFINED_ABOVE && mach < 1.0) {
+            return base;
+        }
+        let beta = (1.0 - mach * mach).sqrt();
+        let beta_09 = (1.0 - Self::REFINED_ABOVE * Self::REFINED_ABOVE).sqrt();
+        let wanted = (base.chordwise as f64 * beta_09 / beta / 4.0).ceil() as usize * 4;
+        let most = Self::MAX_BOXES / base.spanwise / 4 * 4;
+        LatticeSpec {
+            chordwise: wanted.clamp(base.chordwise, most.max(base.chordwise)),
+            ..base
+        }
+    }
+
     /// A single lattice (no extrapolation) with Desmarais' kernel.
     pub fn new(chordwise: usize, spanwise: usize, spacing: Spacing) -> LatticeSpec {
         LatticeSpec {

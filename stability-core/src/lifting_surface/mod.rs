@@ -73,6 +73,7 @@ pub mod doublet_line;
 pub mod frequency;
 pub mod kernel;
 mod lattice;
+pub mod near_sonic;
 mod solve;
 
 pub use crate::geometry::Trapezoid;
@@ -82,6 +83,7 @@ pub use doublet_line::LineRule;
 pub use frequency::FrequencyTable;
 pub use kernel::I1Approximation;
 pub use lattice::{Box, Extrapolation, Lattice, LatticeSpec, Spacing};
+pub use near_sonic::{near_sonic, sonic_limit};
 use serde::Serialize;
 
 /// Below this ω̄ [`Lattice::solve`] returns the quasi-steady limit.
@@ -114,6 +116,14 @@ pub enum LiftingSurfaceError {
     Invalid(#[from] crate::invalid::Invalid<&'static str>),
     #[error("{0}")]
     Planform(String),
+    #[error(
+        "near_sonic covers 0.9 ≤ M ≤ 1, not M = {0} (below 0.9 use Lattice::solve with LatticeSpec::for_wing; above 1 the supersonic theories)"
+    )]
+    NearSonicMach(f64),
+    #[error(
+        "at M = 1 the quasi-steady α̇ derivatives are infinite (they grow like ln(1/β) as M → 1): give the motion's frequency parameter ω̄ > 0, or a Mach number below 1"
+    )]
+    SonicQuasiSteady,
 }
 
 /// One solve of the lattice: the wing's response to incidence and to pitch

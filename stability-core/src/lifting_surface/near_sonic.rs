@@ -1,0 +1,153 @@
+//! The doublet lattice from M = 0.9 to the sonic point M = 1 at a frequency
+//! parameter ω̄ > 0: what the faired damping model can use to narrow its
+//! join around M = 1 (issue 22, items 2 and 4).
+//!
+//! # Below M = 0.99: the lattice, refined
+//! [`near_sonic`] solves the lattice of [`LatticeSpec::for_mach`], whose
+//! chordwise boxes shrink with β = √(1 − M²) (the Prandtl–Glauert stretched
+//! box length Δx/β held at its M = 0.9 value), extrapolated as the default
+//! lattice is. Its convergence at M = 0.95 and 0.98 is tabled in
+//! `docs/lattice-near-sonic.md`.
+//!
+//! # At M = 1: the limit from below, by extrapolation in β²
+//! Linearised unsteady transonic theory is finite at M = 1 when the motion
+//! oscillates (M.T. Landahl, *Unsteady transonic flow*, Pergamon, 1961,
+//! ch. 2): the frequency, not β, then cuts off the far field. In the
+//! subsonic kernel (Landahl, AIAA J. 5(5), 1967; [`super::kernel`]) every
+//! term has a finite limit as β → 0 at fixed κ = ω/V downstream of the
+//! sending element — u₁ → r/2x₀ and the phase κM(R − Mx₀)/β² →
+//! κ(x₀/2 + r²/2x₀) — and vanishes upstream (u₁ → ∞): the sonic kernel, which
+//! has no upstream influence, and whose steady part is the two-dimensional
+//! cross-flow kernel of slender-wing theory (hence (37)–(38) at M = 1 for
+//! any aspect ratio, as the note states). Away from the Mach plane x₀ = 0
+//! the subsonic kernel differs from it by terms in β² (relative order
+//! β²r²/x₀² and β²κx₀), so at fixed ω̄ > 0 the loads approach their sonic
+//! values as X(β) = X(0) + aβ² + bβ⁴ + … once β² is small against the
+//! crossover where the frequency takes over from β as the far field's cut-off
+//! (β² ≈ ω̄/2.4 by the matching of (36) with Mangler's (40),
+//! [`crate::supersonic::transonic::MATCHING_RATIO`]; measured smaller for
+//! slender wings — `docs/lattice-near-sonic.md`).
+//!
+//! Evaluating the lattice *at* M = 1 with the sonic kernel was not done:
+//! near the Mach plane its phase κr²/2x₀ oscillates without bound, which the
+//! quartic line rule across each box does not resolve. Instead, above
+//! [`SONIC_ANCHORS`]`[0]` the solution is the quadratic in β² through the
+//! lattice's solutions at the three [`SONIC_ANCHORS`] (M = 0.99, 0.995,
+//! 0.998), interpolated for M < 0.998 and extrapolated beyond, to M = 1.
+//!
+//! # Accuracy
+//! Measured (`tests/lifting_surface_near_sonic.rs`,
+//! `docs/lattice-near-sonic.md`): on the note's 45° and 60° deltas at
+//! ω̄ = 0.3 and 0.6 the quadratic's value at M = 0.999 is within 1 % (of
+//! each derivative's size) of a direct solve there, and the sonic values
+//! of a linear and a quadratic fit in β² differ by less than 1 %; on a
+//! slender 80° delta at ω̄ = 0.6 and 1 the sonic z_ẇ is within 5 % of
+//! Mangler's low-aspect-ratio theory (39)–(40). Below ω̄ ≈ 0.3 on slender
+//! wings the anchors still lie in the ln(1/β) regime of the α̇ derivatives
+//! and the sonic α̇ derivatives are not reliable; at ω̄ = 0 they are
+//! infinite at M = 1 (an error here). Linear theory itself ignores the
+//! shock waves and nonlinearity of real transonic flow.
+
+use super::derivatives::Extrapolate;
+use super::{
+    Lattice, LatticeSpec, LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution, Trapezoid,
+};
+
+/// The lowest Mach number [`near_sonic`] takes.
+pub const NEAR_SONIC_FROM: f64 = 0.9;
+
+/// The Mach numbers whose lattice solutions the sonic extrapolation
+/// passes through (quadratic in β²).
+pub const SONIC_ANCHORS: [f64; 3] = [0.99, 0.995, 0.998];
+
+/// The wing's [`Solution`] at 0.9 ≤ M ≤ 1 and ω̄ = ωc̄/V: the refined
+/// lattice ([`LatticeSpec::for_mach`]) up to M = 0.99, the quadratic in β²
+/// through its solutions at [`SONIC_ANCHORS`] beyond (see the module's
+/// documentation for the method and its accuracy). ω̄ = 0 is accepted
+/// below M = 1 (a direct quasi-steady solve, whose α̇ derivatives grow like
+/// ln(1/β)); at M = 1 it needs ω̄ > 0.
+pub fn near_sonic(
+    wing: &Trapezoid,
+    mach: f64,
+    omega_bar: f64,
+) -> Result<Solution, LiftingSurfaceError> {
+    if !(mach.is_finite() && (NEAR_SONIC_FROM..=1.0).contains(&mach)) {
+        return Err(LiftingSurfaceError::NearSonicMach(mach));
+    }
+    if !(omega_bar.is_finite() && omega_bar >= 0.0) {
+        return Err(LiftingSurfaceError::Frequency(omega_bar));
+    }
+    if mach <= SONIC_ANCHORS[0] || (omega_bar < OMEGA_BAR_QUASI_STEADY && mach < 1.0) {
+        return Lattice::new(wing, LatticeSpec::for_mach(wing, mach))?.solve(mach, omega_bar);
+    }
+    if omega_bar < OMEGA_BAR_QUASI_STEADY {
+        return Err(LiftingSurfaceError::SonicQuasiSteady);
+    }
+    let solve = |m: f64| Lattice::new(wing, LatticeSpec::for_mach(wing, m))?.solve(m, omega_bar);
+    let [m0, m1, m2] = SONIC_ANCHORS;
+    let (a, b, c) = (solve(m0)?, solve(m1)?, solve(m2)?);
+    let w = quadratic_weights(SONIC_ANCHORS.map(beta2), beta2(mach));
+    let s = a.combine(&b, w[0], w[1]).combine(&c, 1.0, w[2]);
+    Solution::checked(Solution {
+        mach,
+        omega_bar,
+        ..s
+    })
+}
+
+/// The sonic point: [`near_sonic`] at M = 1 (ω̄ > 0).
+pub fn sonic_limit(wing: &Trapezoid, omega_bar: f64) -> Result<Solution, LiftingSurfaceError> {
+    near_sonic(wing, 1.0, omega_bar)
+}
+
+/// β² = 1 − M².
+fn beta2(mach: f64) -> f64 {
+    1.0 - mach * mach
+}
+
+/// Lagrange's weights of the quadratic through x₀, x₁, x₂ at x.
+fn quadratic_weights(x: [f64; 3], at: f64) -> [f64; 3] {
+    std::array::from_fn(|m| {
+        (0..3)
+            .filter(|&k| k != m)
+            .map(|k| (at - x[k]) / (x[m] - x[k]))
+            .product()
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_weights_reproduce_quadratics() {
+        let x = SONIC_ANCHORS.map(beta2);
+        for at in [0.0, 0.004, 0.012, 0.03] {
+            for p in 0..3 {
+                let s: f64 = (0..3)
+                    .map(|m| quadratic_weights(x, at)[m] * x[m].powi(p))
+                    .sum();
+                assert!((s - at.powi(p)).abs() < 1e-12, "{at} {p}: {s}");
+            }
+        }
+    }
+
+    #[test]
+    fn outside_the_range_is_an_error() {
+        let w = Trapezoid::new(1.0, 0.0, 1.0, 45f64.to_radians()).unwrap();
+        for m in [0.5, 1.01, f64::NAN] {
+            assert!(matches!(
+                near_sonic(&w, m, 0.3),
+                Err(LiftingSurfaceError::NearSonicMach(_))
+            ));
+        }
+        assert!(matches!(
+            near_sonic(&w, 1.0, 0.0),
+            Err(LiftingSurfaceError::SonicQuasiSteady)
+        ));
+        assert!(matches!(
+            near_sonic(&w, 0.95, -1.0),
+            Err(LiftingSurfaceError::Frequency(_))
+        ));
+    }
+}
