@@ -8,6 +8,9 @@
 //! `Solution::derivatives` and one interpolation in a solved
 //! `FrequencyTable` (a frequency iteration's cost per iterate).
 //!
+//! Near M = 1: the refined lattice of `LatticeSpec::for_mach` at M = 0.98
+//! against the default at 0.5, and the sonic point (`sonic_limit`).
+//!
 //! `cargo bench -p stability-core --bench lifting_surface`
 
 use divan::{AllocProfiler, Bencher, black_box};
@@ -89,5 +92,31 @@ fn interpolated_per_iterate(bencher: Bencher) {
     bencher.bench_local(|| {
         w = if w > 0.34 { 0.3 } else { w + 1e-4 };
         black_box(&table).at(black_box(w)).unwrap()
+    });
+}
+
+/// Near M = 1 (`LatticeSpec::for_mach`): the harmonic solve (ω̄ = 0.5) at
+/// M = 0.98 on the refined lattice (28 × 16 boxes, extrapolated) against
+/// the same solve at M = 0.5 on the default one (12 × 16), the note's 60°
+/// delta; the ratio of the two is in `docs/lattice-near-sonic.md`.
+#[divan::bench(args = [0.5, 0.98], sample_count = 10)]
+fn harmonic_near_sonic(bencher: Bencher, mach: f64) {
+    let p = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();
+    let wing = Trapezoid::from(&p);
+    let l = Lattice::new(&wing, LatticeSpec::for_mach(&wing, mach)).unwrap();
+    bencher.bench_local(|| all_derivatives(&black_box(&l).solve(mach, black_box(0.5)).unwrap()));
+}
+
+/// The sonic point (`lifting_surface::sonic_limit`: three refined solves at
+/// M = 0.99, 0.995 and 0.998 and the quadratic in β²), the 60° delta at
+/// ω̄ = 0.5.
+#[divan::bench(sample_count = 3)]
+fn sonic_point(bencher: Bencher) {
+    let p = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();
+    let wing = Trapezoid::from(&p);
+    bencher.bench_local(|| {
+        all_derivatives(
+            &stability_core::lifting_surface::sonic_limit(&wing, black_box(0.5)).unwrap(),
+        )
     });
 }

@@ -25,7 +25,12 @@ fn note(deg: f64) -> Trapezoid {
 /// z_θ̇, m_θ̇ (h = 0.25), C_Lα, H₀.
 fn four(s: &Solution) -> [f64; 4] {
     let d = s.derivatives(0.25, 0.0).unwrap();
-    [d.z_thetadot, d.m_thetadot, d.lift_slope, d.aerodynamic_centre]
+    [
+        d.z_thetadot,
+        d.m_thetadot,
+        d.lift_slope,
+        d.aerodynamic_centre,
+    ]
 }
 
 fn convergence() {
@@ -42,20 +47,44 @@ fn convergence() {
                     })
                     .collect();
                 let spec = LatticeSpec::for_mach(&wing, mach);
-                let d = four(&Lattice::new(&wing, spec).unwrap().solve(mach, w).unwrap());
+                let solve = |spec: LatticeSpec| {
+                    four(&Lattice::new(&wing, spec).unwrap().solve(mach, w).unwrap())
+                };
+                let d = solve(spec);
+                let dense_c = solve(LatticeSpec {
+                    chordwise: 96,
+                    ..spec
+                });
+                let dense_s = solve(LatticeSpec {
+                    spanwise: 32,
+                    ..spec
+                });
+                let (nc, ns) = (spec.chordwise, spec.spanwise);
                 println!(
-                    "\n**{deg}° delta, M = {mach}, ω̄ = {w}** (default at this M: {} × {} boxes, extrapolated)\n",
-                    spec.chordwise, spec.spanwise
+                    "\n**{deg}° delta, M = {mach}, ω̄ = {w}** (default here: {nc} × {ns}, extrapolated both ways)\n"
                 );
-                println!("| | N = 12 | 24 | 48 | 96 | p (12–48) | p (24–96) | Richardson 48 | Richardson 96 | default | default − R96 |");
-                println!("|---|---|---|---|---|---|---|---|---|---|---|");
+                println!(
+                    "| | N = 12 | 24 | 48 | 96 | p (12–48) | p (24–96) | R 48 | R 96 | default {nc}×{ns} | 96×{ns} | {nc}×32 |"
+                );
+                println!("|---|---|---|---|---|---|---|---|---|---|---|---|");
                 for (k, name) in names.iter().enumerate() {
                     let v = |i: usize| x[i][k];
-                    let p = |a: usize| ((v(a + 1) - v(a)).abs() / (v(a + 2) - v(a + 1)).abs()).log2();
+                    let p =
+                        |a: usize| ((v(a + 1) - v(a)).abs() / (v(a + 2) - v(a + 1)).abs()).log2();
                     let r = |a: usize| (8.0 * v(a + 2) - 6.0 * v(a + 1) + v(a)) / 3.0;
                     println!(
-                        "| {name} | {:.5} | {:.5} | {:.5} | {:.5} | {:.2} | {:.2} | {:.5} | {:.5} | {:.5} | {:+.1e} |",
-                        v(0), v(1), v(2), v(3), p(0), p(1), r(0), r(1), d[k], d[k] - r(1)
+                        "| {name} | {:.5} | {:.5} | {:.5} | {:.5} | {:.2} | {:.2} | {:.5} | {:.5} | {:.5} | {:+.1e} | {:+.1e} |",
+                        v(0),
+                        v(1),
+                        v(2),
+                        v(3),
+                        p(0),
+                        p(1),
+                        r(0),
+                        r(1),
+                        d[k],
+                        dense_c[k] - d[k],
+                        dense_s[k] - d[k]
                     );
                 }
             }
@@ -75,7 +104,12 @@ fn approach() {
                 let d = s.derivatives(0.25, 0.0).unwrap();
                 println!(
                     "| {mach} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} |",
-                    d.z_thetadot, d.m_thetadot, d.z_wdot, d.m_wdot, d.lift_slope, d.aerodynamic_centre
+                    d.z_thetadot,
+                    d.m_thetadot,
+                    d.z_wdot,
+                    d.m_wdot,
+                    d.lift_slope,
+                    d.aerodynamic_centre
                 );
             }
             let _ = sonic_limit;

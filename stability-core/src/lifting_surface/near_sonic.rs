@@ -38,15 +38,20 @@
 //! # Accuracy
 //! Measured (`tests/lifting_surface_near_sonic.rs`,
 //! `docs/lattice-near-sonic.md`): on the note's 45° and 60° deltas at
-//! ω̄ = 0.3 and 0.6 the quadratic's value at M = 0.999 is within 1 % (of
-//! each derivative's size) of a direct solve there, and the sonic values
-//! of a linear and a quadratic fit in β² differ by less than 1 %; on a
-//! slender 80° delta at ω̄ = 0.6 and 1 the sonic z_ẇ is within 5 % of
-//! Mangler's low-aspect-ratio theory (39)–(40). Below ω̄ ≈ 0.3 on slender
-//! wings the anchors still lie in the ln(1/β) regime of the α̇ derivatives
-//! and the sonic α̇ derivatives are not reliable; at ω̄ = 0 they are
-//! infinite at M = 1 (an error here). Linear theory itself ignores the
-//! shock waves and nonlinearity of real transonic flow.
+//! ω̄ = 0.3 and 0.6 the quadratic at M = 0.999 is within 0.9 % of C_Lα (each
+//! number of the [`Solution`]) of a direct solve there, which it does not
+//! use, and M = 0.995–1 continue the trend of the direct solves at
+//! 0.97–0.99 without a jump; on a slender 80° delta at ω̄ = 0.6 and 1 the
+//! sonic C_Lα, z_ẇ, z_θ̇, m_θ̇ and z_q are within 3 % of Mangler's
+//! low-aspect-ratio theory (38)–(40). Stated accuracy at M = 1: 1 % of C_Lα
+//! on each derivative for the note's wings at 0.3 ≤ ω̄ ≤ 0.6, on top of the
+//! refined lattice's own (2·10⁻², [`LatticeSpec::for_mach`]). Not reliable:
+//! slender wings at small ω̄ (80° at ω̄ = 0.3: the anchors are still in the
+//! ln(1/β) regime of the α̇ derivatives), and ω̄ ≳ 1 on the 45° delta (the
+//! upstream wave, of length 2πβ²V/(ωM(1 + M)), shorter than two boxes at
+//! the anchors). At ω̄ = 0 the α̇ derivatives are infinite at M = 1 (an
+//! error here). Linear theory itself ignores the shock waves and
+//! nonlinearity of real transonic flow.
 
 use super::derivatives::Extrapolate;
 use super::{
