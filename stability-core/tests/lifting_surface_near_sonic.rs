@@ -61,7 +61,7 @@ fn for_mach_is_for_wing_up_to_0_9_and_refines_as_one_over_beta() {
     }
     // capped by the solver's size
     let spec = LatticeSpec::for_mach(&w, 0.999_999);
-    assert!(spec.boxes() <= LatticeSpec::MAX_BOXES && spec.chordwise % 4 == 0);
+    assert!(spec.boxes() <= LatticeSpec::MAX_BOXES && spec.chordwise.is_multiple_of(4));
     assert!(Lattice::new(&w, spec).is_ok());
 }
 
