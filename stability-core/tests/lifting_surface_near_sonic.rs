@@ -263,3 +263,34 @@ fn outside_its_range_near_sonic_says_what_to_do() {
     let e = sonic_limit(&w, 0.0).unwrap_err();
     assert!(e.to_string().contains("ω̄ > 0"), "{e}");
 }
+
+#[test]
+fn the_cache_serves_near_sonic_direct_and_interpolated() {
+    use stability_core::lifting_surface::cache::{self, Harmonic};
+    // Direct: the same numbers as near_sonic, solved once per (wing, M, ω̄)
+    // — the anchors shared by every M above 0.99. Interpolated: the
+    // refined lattices' frequency tables (cubic Lagrange between nodes
+    // 0.4 and 0.5 here) against the direct solution at ω̄ = 0.45, on the
+    // scale of C_Lα (measured: 3.6·10⁻⁵ at M = 0.95, 2.5·10⁻⁴ at M = 1).
+    let wing = delta(60.0);
+    for mach in [0.95, 1.0] {
+        let direct = near_sonic(&wing, mach, 0.45).unwrap();
+        assert_eq!(
+            cache::near_sonic(&wing, mach, 0.45, Harmonic::Direct),
+            Ok(direct)
+        );
+        let before = cache::solves();
+        let again = cache::near_sonic(&wing, mach, 0.45, Harmonic::Direct).unwrap();
+        assert_eq!((again, cache::solves()), (direct, before));
+        let interpolated = cache::near_sonic(&wing, mach, 0.45, Harmonic::Interpolated).unwrap();
+        let (a, b) = (six(&interpolated), six(&direct));
+        let worst = (0..6)
+            .map(|k| (a[k] - b[k]).abs() / b[0].abs())
+            .fold(0.0, f64::max);
+        println!("M = {mach}: interpolated in ω̄ within {worst:.1e} of C_Lα");
+        assert!(worst < 1e-3, "M = {mach}: {worst}");
+    }
+    let sonic = cache::near_sonic(&wing, 1.0, 0.45, Harmonic::Direct).unwrap();
+    let between = cache::near_sonic(&wing, 0.997, 0.45, Harmonic::Direct).unwrap();
+    assert!(between.mach == 0.997 && sonic.mach == 1.0);
+}

@@ -85,19 +85,52 @@ pub fn steady(wing: &Trapezoid, mach: f64) -> Result<Steady, LiftingSurfaceError
 /// nodes are solved as they are asked for).
 pub fn table(wing: &Trapezoid, mach: f64) -> Result<Arc<FrequencyTable>, LiftingSurfaceError> {
     check(mach, 0.0)?;
-    let c = cache();
+    table_in(&cache().tables, wing, mach, lattice)
+}
+
+/// The table of `wing`'s lattice (made by `make`) at `mach` in `map`, made
+/// if it is not there (its nodes are solved as they are asked for).
+fn table_in(
+    map: &RwLock<HashMap<(Shape, u64), Arc<FrequencyTable>>>,
+    wing: &Trapezoid,
+    mach: f64,
+    make: impl FnOnce(&Trapezoid) -> Result<Lattice, LiftingSurfaceError>,
+) -> Result<Arc<FrequencyTable>, LiftingSurfaceError> {
     let key = (shape(wing), mach.to_bits());
-    let read = c.tables.read().unwrap_or_else(PoisonError::into_inner);
+    let read = map.read().unwrap_or_else(PoisonError::into_inner);
     if let Some(t) = read.get(&key) {
         return Ok(t.clone());
     }
     drop(read);
-    let table = Arc::new(FrequencyTable::new(lattice(wing)?, mach)?);
-    let mut write = c.tables.write().unwrap_or_else(PoisonError::into_inner);
+    let table = Arc::new(FrequencyTable::new(make(wing)?, mach)?);
+    let mut write = map.write().unwrap_or_else(PoisonError::into_inner);
     if write.len() >= CAPACITY {
         write.clear();
     }
     Ok(write.entry(key).or_insert(table).clone())
+}
+
+/// [`super::near_sonic`] (0.9 ≤ M ≤ 1) from the cache: each refined
+/// lattice's solution it needs (at M itself up to 0.99, at the
+/// [`super::near_sonic::SONIC_ANCHORS`] beyond) solved once per (wing, M,
+/// ω̄) — or, [`Harmonic::Interpolated`], interpolated in that lattice's
+/// [`FrequencyTable`] (a frequency iteration's path: three tables' nodes
+/// solved once per wing near M = 1, then a few dozen flops per iterate).
+pub fn near_sonic(
+    wing: &Trapezoid,
+    mach: f64,
+    omega_bar: f64,
+    harmonic: Harmonic,
+) -> Result<Solution, LiftingSurfaceError> {
+    let c = cache();
+    let refined = |w: &Trapezoid, m: f64| Lattice::new(w, LatticeSpec::for_mach(w, m));
+    super::near_sonic::near_sonic_by(mach, omega_bar, |m| {
+        if harmonic == Harmonic::Interpolated && omega_bar >= OMEGA_BAR_QUASI_STEADY {
+            return table_in(&c.near_sonic_tables, wing, m, |w| refined(w, m))?.at(omega_bar);
+        }
+        let key = (shape(wing), m.to_bits(), omega_bar.to_bits());
+        get_or_solve(&c.near_sonic, key, || refined(wing, m)?.solve(m, omega_bar))
+    })
 }
 
 /// Empties the cache (and zeroes [`solves`]).
@@ -112,6 +145,14 @@ pub fn clear() {
         .unwrap_or_else(PoisonError::into_inner)
         .clear();
     c.tables
+        .write()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clear();
+    c.near_sonic
+        .write()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clear();
+    c.near_sonic_tables
         .write()
         .unwrap_or_else(PoisonError::into_inner)
         .clear();
@@ -134,6 +175,10 @@ struct Cache {
     solutions: RwLock<HashMap<(Shape, u64, u64), Slot<Solution>>>,
     steady: RwLock<HashMap<(Shape, u64), Slot<Steady>>>,
     tables: RwLock<HashMap<(Shape, u64), Arc<FrequencyTable>>>,
+    /// [`near_sonic`]'s solutions and tables, on the refined lattices of
+    /// [`LatticeSpec::for_mach`] (which differ from the default above 0.9).
+    near_sonic: RwLock<HashMap<(Shape, u64, u64), Slot<Solution>>>,
+    near_sonic_tables: RwLock<HashMap<(Shape, u64), Arc<FrequencyTable>>>,
 }
 
 fn cache() -> &'static Cache {

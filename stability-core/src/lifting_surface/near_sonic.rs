@@ -76,6 +76,19 @@ pub fn near_sonic(
     mach: f64,
     omega_bar: f64,
 ) -> Result<Solution, LiftingSurfaceError> {
+    near_sonic_by(mach, omega_bar, |m| {
+        Lattice::new(wing, LatticeSpec::for_mach(wing, m))?.solve(m, omega_bar)
+    })
+}
+
+/// [`near_sonic`] with the refined lattice's solution at each Mach number
+/// it needs (M itself up to 0.99, else the anchors) from `solve` — a direct
+/// solve, or the cache's ([`super::cache::near_sonic`]).
+pub(super) fn near_sonic_by(
+    mach: f64,
+    omega_bar: f64,
+    solve: impl Fn(f64) -> Result<Solution, LiftingSurfaceError>,
+) -> Result<Solution, LiftingSurfaceError> {
     if !(mach.is_finite() && (NEAR_SONIC_FROM..=1.0).contains(&mach)) {
         return Err(LiftingSurfaceError::NearSonicMach(mach));
     }
@@ -83,12 +96,11 @@ pub fn near_sonic(
         return Err(LiftingSurfaceError::Frequency(omega_bar));
     }
     if mach <= SONIC_ANCHORS[0] || (omega_bar < OMEGA_BAR_QUASI_STEADY && mach < 1.0) {
-        return Lattice::new(wing, LatticeSpec::for_mach(wing, mach))?.solve(mach, omega_bar);
+        return solve(mach);
     }
     if omega_bar < OMEGA_BAR_QUASI_STEADY {
         return Err(LiftingSurfaceError::SonicQuasiSteady);
     }
-    let solve = |m: f64| Lattice::new(wing, LatticeSpec::for_mach(wing, m))?.solve(m, omega_bar);
     let [m0, m1, m2] = SONIC_ANCHORS;
     let (a, b, c) = (solve(m0)?, solve(m1)?, solve(m2)?);
     let w = quadratic_weights(SONIC_ANCHORS.map(beta2), beta2(mach));
