@@ -110,7 +110,7 @@ fn table_in(
     Ok(write.entry(key).or_insert(table).clone())
 }
 
-/// [`super::near_sonic`] (0.9 ≤ M ≤ 1) from the cache: each refined
+/// [`super::near_sonic()`] (0.9 ≤ M ≤ 1) from the cache: each refined
 /// lattice's solution it needs (at M itself up to 0.99, at the
 /// [`super::near_sonic::SONIC_ANCHORS`] beyond) solved once per (wing, M,
 /// ω̄) — or, [`Harmonic::Interpolated`], interpolated in that lattice's

@@ -62,7 +62,7 @@
 //! M = 1 the Prandtl–Glauert stretching needs ever more chordwise boxes
 //! and linear theory itself fails (the note: "invalid near M₁ = 1.0").
 //! [`LatticeSpec::for_mach`] refines the lattice chordwise above M = 0.9,
-//! and [`near_sonic`] (cached: [`cache::near_sonic`]) gives the solution
+//! and [`near_sonic()`] (cached: [`cache::near_sonic`]) gives the solution
 //! from 0.9 to the sonic point M = 1 at ω̄ > 0, with its accuracy
 //! (`docs/lattice-near-sonic.md`).
 //! At frequency the lattice needs boxes short against the wavelength,
