@@ -11,15 +11,15 @@
 //!
 //! # At M = 1: the limit from below, by extrapolation in β²
 //! Linearised unsteady transonic theory is finite at M = 1 when the motion
-//! oscillates (M.T. Landahl, *Unsteady transonic flow*, Pergamon, 1961,
-//! ch. 2): the frequency, not β, then cuts off the far field. In the
+//! oscillates (M.T. Landahl, *Unsteady transonic flow*, Pergamon, 1961):
+//! the frequency, not β, then cuts off the far field. In the
 //! subsonic kernel (Landahl, AIAA J. 5(5), 1967; [`super::kernel`]) every
 //! term has a finite limit as β → 0 at fixed κ = ω/V downstream of the
-//! sending element — u₁ → r/2x₀ and the phase κM(R − Mx₀)/β² →
+//! sending element — u₁ → (r² − x₀²)/2rx₀ and the phase κM(R − Mx₀)/β² →
 //! κ(x₀/2 + r²/2x₀) — and vanishes upstream (u₁ → ∞): the sonic kernel, which
 //! has no upstream influence, and whose steady part is the two-dimensional
 //! cross-flow kernel of slender-wing theory (hence (37)–(38) at M = 1 for
-//! any aspect ratio, as the note states). Away from the Mach plane x₀ = 0
+//! any aspect ratio, within linear theory). Away from the Mach plane x₀ = 0
 //! the subsonic kernel differs from it by terms in β² (relative order
 //! β²r²/x₀² and β²κx₀), so at fixed ω̄ > 0 the loads approach their sonic
 //! values as X(β) = X(0) + aβ² + bβ⁴ + … once β² is small against the
@@ -134,7 +134,9 @@ fn quadratic_weights(x: [f64; 3], at: f64) -> [f64; 3] {
 
 #[cfg(test)]
 mod tests {
+    use super::super::kernel::{self, I1Approximation, KernelFlow, i1_by_quadrature};
     use super::*;
+    use num_complex::Complex64;
 
     #[test]
     fn the_weights_reproduce_quadratics() {
@@ -146,6 +148,51 @@ mod tests {
                     .sum();
                 assert!((s - at.powi(p)).abs() < 1e-12, "{at} {p}: {s}");
             }
+        }
+    }
+
+    /// The sonic numerator in closed form (x₀ > 0): with
+    /// u_s = (r² − x₀²)/2rx₀, √(1 + u_s²) = (r² + x₀²)/2rx₀, so
+    /// N_s = −[e^{−iκx₀} I₁(u_s, κr) + e^{−iκ(x₀/2 + r²/2x₀)}·2r²/(r² + x₀²)];
+    /// zero upstream. I₁ by quadrature.
+    fn sonic_numerator(x0: f64, r: f64, kappa: f64) -> Complex64 {
+        if x0 <= 0.0 {
+            return Complex64::new(0.0, 0.0);
+        }
+        let u = (r * r - x0 * x0) / (2.0 * r * x0);
+        let lag = Complex64::from_polar(1.0, -kappa * x0);
+        let both = Complex64::from_polar(1.0, -kappa * (0.5 * x0 + r * r / (2.0 * x0)));
+        -(lag * i1_by_quadrature(u, kappa * r) + both * (2.0 * r * r / (r * r + x0 * x0)))
+    }
+
+    #[test]
+    fn the_subsonic_kernel_tends_to_the_sonic_one() {
+        // the module's claim: finite downstream, zero upstream, and the
+        // difference O(β²) away from the Mach plane
+        for (x0, r, kappa) in [
+            (0.5, 0.3, 0.9),
+            (1.2, 0.1, 0.45),
+            (0.2, 0.6, 1.5),
+            (-0.4, 0.3, 0.9),
+        ] {
+            let at = |beta2: f64| {
+                let flow =
+                    KernelFlow::new((1.0 - beta2).sqrt(), kappa, I1Approximation::Quadrature);
+                kernel::numerator(x0, r, &flow)
+            };
+            let exact = sonic_numerator(x0, r, kappa);
+            let (e1, e2) = ((at(1e-3) - exact).norm(), (at(1e-4) - exact).norm());
+            assert!(
+                e2 < 2e-3,
+                "{x0} {r} {kappa}: {} against {exact}: {e2}",
+                at(1e-4)
+            );
+            // ten times closer for β² ten times smaller
+            assert!(e2 < 0.2 * e1, "{x0} {r} {kappa}: {e1} {e2}");
+            // and the steady part is the cross-flow kernel, −2 behind
+            let n0 = kernel::steady_numerator(x0, r, 1e-8);
+            let cross = if x0 > 0.0 { -2.0 } else { 0.0 };
+            assert!((n0 - cross).abs() < 1e-6, "{n0}");
         }
     }
 
