@@ -10,7 +10,7 @@
 //! the default lattice at that Mach number (`LatticeSpec::for_mach`, its
 //! own extrapolation) against the N = 96 estimate.
 //!
-//! `cargo run --release -p stability-core --example lifting_surface_near_sonic [convergence|approach]`
+//! `cargo run --release -p stability-core --example lifting_surface_near_sonic [convergence|approach|spanwise]`
 
 use stability_core::geometry::Trapezoid;
 use stability_core::lifting_surface::{Lattice, LatticeSpec, Solution, Spacing, near_sonic};
@@ -114,9 +114,57 @@ fn approach() {
     }
 }
 
+/// The sonic point with the anchors on 16 strips (the default) and on 32:
+/// the spanwise uncertainty of `sonic_limit`.
+fn spanwise() {
+    let anchors = stability_core::lifting_surface::near_sonic::SONIC_ANCHORS;
+    let b2 = anchors.map(|m| 1.0 - m * m);
+    // Lagrange's weights at β² = 0
+    let w: [f64; 3] = std::array::from_fn(|m| {
+        (0..3)
+            .filter(|&k| k != m)
+            .map(|k| (0.0 - b2[k]) / (b2[m] - b2[k]))
+            .product()
+    });
+    println!("| wing | ω̄ | strips | z_θ̇ | m_θ̇ | z_ẇ | m_ẇ | C_Lα | H₀ |");
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for deg in [45.0, 60.0] {
+        let wing = note(deg);
+        for om in [0.3, 0.6] {
+            for strips in [16, 32] {
+                let mut sum = [0.0; 6];
+                for (m, wm) in anchors.iter().zip(w) {
+                    let spec = LatticeSpec {
+                        spanwise: strips,
+                        ..LatticeSpec::for_mach(&wing, *m)
+                    };
+                    let s = Lattice::new(&wing, spec).unwrap().solve(*m, om).unwrap();
+                    let d = s.derivatives(0.25, 0.0).unwrap();
+                    let v = [
+                        d.z_thetadot,
+                        d.m_thetadot,
+                        d.z_wdot,
+                        d.m_wdot,
+                        d.lift_slope,
+                        d.aerodynamic_centre,
+                    ];
+                    for k in 0..6 {
+                        sum[k] += wm * v[k];
+                    }
+                }
+                println!(
+                    "| {deg}° | {om} | {strips} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} |",
+                    sum[0], sum[1], sum[2], sum[3], sum[4], sum[5]
+                );
+            }
+        }
+    }
+}
+
 fn main() {
     match std::env::args().nth(1).as_deref() {
         Some("approach") => approach(),
+        Some("spanwise") => spanwise(),
         _ => convergence(),
     }
 }

@@ -45,7 +45,9 @@
 //! sonic C_Lα, z_ẇ, z_θ̇, m_θ̇ and z_q are within 3 % of Mangler's
 //! low-aspect-ratio theory (38)–(40). Stated accuracy at M = 1: 1 % of C_Lα
 //! on each derivative for the note's wings at 0.3 ≤ ω̄ ≤ 0.6, on top of the
-//! refined lattice's own (2·10⁻², [`LatticeSpec::for_mach`]). Not reliable:
+//! refined lattice's own, 3·10⁻² absolute (chordwise, [`LatticeSpec::for_mach`];
+//! spanwise: the anchors on 32 strips move the sonic values by at most
+//! 2.7·10⁻²). Not reliable:
 //! slender wings at small ω̄ (80° at ω̄ = 0.3: the anchors are still in the
 //! ln(1/β) regime of the α̇ derivatives), and ω̄ ≳ 1 on the 45° delta (the
 //! upstream wave, of length 2πβ²V/(ωM(1 + M)), shorter than two boxes at
