@@ -10,7 +10,7 @@
 //! the default lattice at that Mach number (`LatticeSpec::for_mach`, its
 //! own extrapolation) against the N = 96 estimate.
 //!
-//! `cargo run --release -p stability-core --example lifting_surface_near_sonic [convergence|approach|spanwise]`
+//! `cargo run --release -p stability-core --example lifting_surface_near_sonic [convergence|approach|spanwise|crossover]`
 
 use stability_core::geometry::Trapezoid;
 use stability_core::lifting_surface::{Lattice, LatticeSpec, Solution, Spacing, near_sonic};
@@ -161,8 +161,35 @@ fn spanwise() {
     }
 }
 
+/// z_ẇ of the 45° and 60° deltas against M at small ω̄: the ln(1/β)
+/// growth of the quasi-steady limit, cut off where β² falls below about
+/// ω̄/2.4.
+fn crossover() {
+    let machs = [0.9, 0.95, 0.97, 0.98, 0.99, 0.995, 0.998];
+    for deg in [45.0, 60.0] {
+        let wing = note(deg);
+        println!("\n**{deg}° delta, z_ẇ**\n");
+        println!("| ω̄ | M = 0.9 | 0.95 | 0.97 | 0.98 | 0.99 | 0.995 | 0.998 |");
+        println!("|---|---|---|---|---|---|---|---|");
+        for om in [0.0, 0.05, 0.1, 0.3] {
+            let z: Vec<String> = machs
+                .iter()
+                .map(|&m| {
+                    let d = near_sonic(&wing, m, om)
+                        .unwrap()
+                        .derivatives(0.25, 0.0)
+                        .unwrap();
+                    format!("{:.3}", d.z_wdot)
+                })
+                .collect();
+            println!("| {om} | {} |", z.join(" | "));
+        }
+    }
+}
+
 fn main() {
     match std::env::args().nth(1).as_deref() {
+        Some("crossover") => crossover(),
         Some("approach") => approach(),
         Some("spanwise") => spanwise(),
         _ => convergence(),

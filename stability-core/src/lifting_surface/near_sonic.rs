@@ -22,11 +22,11 @@
 //! any aspect ratio, within linear theory). Away from the Mach plane x₀ = 0
 //! the subsonic kernel differs from it by terms in β² (relative order
 //! β²r²/x₀² and β²κx₀), so at fixed ω̄ > 0 the loads approach their sonic
-//! values as X(β) = X(0) + aβ² + bβ⁴ + … once β² is small against the
-//! crossover where the frequency takes over from β as the far field's cut-off
-//! (β² ≈ ω̄/2.4 by the matching of (36) with Mangler's (40),
-//! [`crate::supersonic::transonic::MATCHING_RATIO`]; measured smaller for
-//! slender wings — `docs/lattice-near-sonic.md`).
+//! values as X(β) = X(0) + aβ² + bβ⁴ + … once β² is past the crossover
+//! where the frequency takes over from β as the far field's cut-off (the
+//! matching of (36) with Mangler's (40) puts its middle at β² = ω̄/2.4,
+//! [`crate::supersonic::transonic::MATCHING_RATIO`]; measured, it ends near
+//! β² ≈ ω̄/10, later still for slender wings — `docs/lattice-near-sonic.md`).
 //!
 //! Evaluating the lattice *at* M = 1 with the sonic kernel was not done:
 //! near the Mach plane its phase κr²/2x₀ oscillates without bound, which the
@@ -47,9 +47,9 @@
 //! on each derivative for the note's wings at 0.3 ≤ ω̄ ≤ 0.6, on top of the
 //! refined lattice's own, 3·10⁻² absolute (chordwise, [`LatticeSpec::for_mach`];
 //! spanwise: the anchors on 32 strips move the sonic values by at most
-//! 2.7·10⁻²). Not reliable:
-//! slender wings at small ω̄ (80° at ω̄ = 0.3: the anchors are still in the
-//! ln(1/β) regime of the α̇ derivatives), and ω̄ ≳ 1 on the 45° delta (the
+//! 2.7·10⁻²). Not reliable: ω̄ < [`SONIC_OMEGA_BAR_MIN`] (the anchors are
+//! still in the ln(1/β) regime of the α̇ derivatives), slender wings at
+//! larger ω̄ too (80° at ω̄ = 0.3), and ω̄ ≳ 1 on the 45° delta (the
 //! upstream wave, of length 2πβ²V/(ωM(1 + M)), shorter than two boxes at
 //! the anchors). At ω̄ = 0 the α̇ derivatives are infinite at M = 1 (an
 //! error here). Linear theory itself ignores the shock waves and
@@ -66,6 +66,14 @@ pub const NEAR_SONIC_FROM: f64 = 0.9;
 /// The Mach numbers whose lattice solutions the sonic extrapolation
 /// passes through (quadratic in β²).
 pub const SONIC_ANCHORS: [f64; 3] = [0.99, 0.995, 0.998];
+
+/// The smallest ω̄ at which the sonic values (M > 0.99) were verified on
+/// the note's wings: at smaller ω̄ the α̇ derivatives at the anchors still
+/// follow the quasi-steady ln(1/β), which they leave only once β² < ω̄/10
+/// (measured, `docs/lattice-near-sonic.md`), and the extrapolation to M = 1
+/// is not their sonic limit. Not enforced: a caller below it should fall
+/// back to a fairing (Mangler's theory at M = 1, say).
+pub const SONIC_OMEGA_BAR_MIN: f64 = 0.3;
 
 /// The wing's [`Solution`] at 0.9 ≤ M ≤ 1 and ω̄ = ωc̄/V: the refined
 /// lattice ([`LatticeSpec::for_mach`]) up to M = 0.99, the quadratic in β²
