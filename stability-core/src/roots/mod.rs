@@ -74,12 +74,14 @@
 //! The results are always finite.
 
 mod aberth;
+mod batch;
 pub(crate) mod binary;
 mod factor;
 mod horner;
 mod wide;
 
 use crate::display::Num;
+pub use batch::solve_quartics;
 pub use num_complex::Complex64;
 
 /// The largest backward error of a root returned (see the module
@@ -218,6 +220,13 @@ impl Scaling {
                 return None;
             }
         }
+        self.scale_back(x)
+    }
+
+    /// The roots x of the scaled quartic as roots λ = 2^σ·x of the given
+    /// one; `None` where one leaves f64's range.
+    #[inline]
+    fn scale_back(&self, x: [Complex64; 4]) -> Option<[Complex64; 4]> {
         let roots = x.map(|z| binary::ldexp_c(z, self.sigma));
         // The scaled roots lie in 2⁻⁹⁷³ ≤ |x| < 9 (Cauchy's bounds with
         // |a|, |b|, |c|, |d| < 8 and |d| ≥ 2⁻⁹⁶⁹), so the roots scaled

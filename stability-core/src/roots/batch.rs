@@ -1,0 +1,280 @@
+//! Many quartics at once: steps 1–4 of the module documentation on four
+//! quartics per SIMD vector (`wide::f64x4`, one quartic per lane), with
+//! the acceptance test of the scalar path; a quartic that the vector path
+//! does not settle is solved by [`solve_quartic`] instead.
+//!
+//! Every lane performs the scalar path's operations in the scalar path's
+//! order (IEEE arithmetic, no fused multiply-add, sqrt and division
+//! correctly rounded in both), with its branches turned into masks:
+//! Halley's iteration on the resolvent (Orellana & De Michele, Algorithm
+//! 1010, ACM TOMS 46(2), 2020, as in `factor`) and Newton's method on the
+//! Vieta equations stop per lane exactly where the scalar loops break, and
+//! the loops end when no lane is left moving. A lane is accepted only when
+//! both quadratics' roots are *settled* — residual within 8ε of rounding
+//! and condition number κ ≤ 16 — which is where the scalar path accepts
+//! the same roots from its first candidate. So an accepted lane carries
+//! the scalar path's roots bit for bit, and every other lane (Cardano's
+//! single resolvent root, a repair or polish needed, a quartic outside the
+//! scaled range, an error) is [`solve_quartic`]'s answer itself:
+//! [`solve_quartics`] returns exactly what [`solve_quartic`] returns, at a
+//! lower cost per quartic (`tests/roots_batch.rs` holds it to that).
+
+use super::{Complex64, RootsError, Scaling, solve_quartic, sort_roots};
+use wide::f64x4;
+
+type V = f64x4;
+const LANES: usize = 4;
+
+/// The roots of many quartics: `roots[i]` = [`solve_quartic`]`(coeffs[i])`,
+/// bit for bit, for `i` below the shorter slice's length, which is returned
+/// (the rest of `roots` is left as it was). Pass slices of equal length.
+///
+/// Quartics are solved four at a time on SIMD vectors where the
+/// factorization settles at once (the usual stability quartic: two complex
+/// pairs), which costs less per quartic than one call each; no allocation.
+pub fn solve_quartics(
+    coeffs: &[[f64; 5]],
+    roots: &mut [Result<[Complex64; 4], RootsError>],
+) -> usize {
+    let n = coeffs.len().min(roots.len());
+    for (c, r) in coeffs[..n]
+        .chunks(LANES)
+        .zip(roots[..n].chunks_mut(LANES))
+    {
+        solve_chunk(c, r);
+    }
+    n
+}
+
+/// The scaled quartic of a lane without one of its own (a short chunk, or
+/// a quartic that `Scaling` declines): (x² + 1)(x² + 4), harmless.
+const FILLER: [f64; 5] = [1.0, 0.0, 5.0, 0.0, 4.0];
+
+/// Up to four quartics, one per lane.
+fn solve_chunk(c: &[[f64; 5]], out: &mut [Result<[Complex64; 4], RootsError>]) {
+    let scalings: [Option<Scaling>; LANES] =
+        std::array::from_fn(|l| c.get(l).and_then(Scaling::of));
+    let exact: [V; 5] = std::array::from_fn(|k| {
+        V::new(std::array::from_fn(|l| {
+            scalings[l].as_ref().map_or(FILLER[k], |s| s.exact[k])
+        }))
+    });
+    let monic = |k: usize| {
+        V::new(std::array::from_fn(|l| {
+            scalings[l].as_ref().map_or(FILLER[k + 1], |s| s.monic[k])
+        }))
+    };
+    let m = Monic::new(monic(0), monic(1), monic(2), monic(3));
+    let (y, three_real) = largest_resolvent_root(&m);
+    let (al, be, ga, de) = newton_factor(from_resolvent(y, &m), &m);
+    let (z1, z2, s1) = settled_quadratic(al, be, &exact);
+    let (z3, z4, s2) = settled_quadratic(ga, de, &exact);
+    let accepted = (three_real & s1 & s2).to_bitmask();
+    let lanes = [z1, z2, z3, z4].map(|(re, im)| (re.to_array(), im.to_array()));
+    for (l, (q, o)) in c.iter().zip(out.iter_mut()).enumerate() {
+        let fast = scalings[l]
+            .as_ref()
+            .filter(|_| accepted >> l & 1 == 1)
+            .and_then(|s| s.scale_back(lanes.map(|(re, im)| Complex64::new(re[l], im[l]))));
+        *o = match fast {
+            Some(mut r) => {
+                sort_roots(&mut r);
+                Ok(r)
+            }
+            None => solve_quartic(*q),
+        };
+    }
+}
+
+/// `factor::Monic` on four lanes: the scaled monic quartic and the
+/// reciprocals of its coefficients (0 for a zero coefficient).
+struct Monic {
+    a: V,
+    b: V,
+    c: V,
+    d: V,
+    inv: [V; 4],
+}
+
+impl Monic {
+    #[inline]
+    fn new(a: V, b: V, c: V, d: V) -> Monic {
+        let zero = V::splat(0.0);
+        let r = |x: V| x.simd_ne(zero).select(V::splat(1.0) / x, zero);
+        Monic {
+            a,
+            b,
+            c,
+            d,
+            inv: [r(a), r(b), r(c), r(d)],
+        }
+    }
+
+    /// `factor::Monic::backward_error`: Σ|residualₖ/coefₖ|.
+    #[inline]
+    fn backward_error(&self, (al, be, ga, de): (V, V, V, V)) -> V {
+        let zero = V::splat(0.0);
+        let rel = |got: V, want: V, inv: V| {
+            let r = got - want;
+            inv.simd_ne(zero).select((r * inv).abs(), r.abs())
+        };
+        rel(al + ga, self.a, self.inv[0])
+            + rel(be + de + al * ga, self.b, self.inv[1])
+            + rel(al * de + be * ga, self.c, self.inv[2])
+            + rel(be * de, self.d, self.inv[3])
+    }
+}
+
+/// `factor::largest_cubic_root` of Ferrari's resolvent
+/// y³ − by² + (ac − 4d)y + (4bd − a²d − c²) where it has three real roots
+/// (Halley's iteration from above); the mask is those lanes (the others,
+/// Cardano's, go to the scalar path).
+#[inline]
+fn largest_resolvent_root(m: &Monic) -> (V, V) {
+    let (a, b, c, d) = (m.a, m.b, m.c, m.d);
+    let s = V::splat;
+    let (e2, e1, e0) = (-b, a * c - s(4.0) * d, s(4.0) * b * d - a * a * d - c * c);
+    let sh = e2 / s(3.0);
+    let p = e1 - e2 * sh;
+    let q = e0 - sh * e1 + s(2.0) * sh * sh * sh;
+    let (h, k) = (q / s(2.0), p / s(3.0));
+    let three_real = (h * h + k * k * k).simd_lt(s(0.0));
+    let mut t = s(2.0) * (-p / s(3.0)).sqrt();
+    let tb = s(-2.0) * sh;
+    let from_b = tb.simd_lt(t)
+        & (s(3.0) * tb * tb).simd_ge(-p)
+        & tb.simd_gt(s(0.0))
+        & ((tb * tb + p) * tb + q).simd_gt(s(0.0));
+    t = from_b.select(tb, t);
+    let mut moving = three_real;
+    for _ in 0..8 {
+        let f = (t * t + p) * t + q;
+        let df = s(3.0) * t * t + p;
+        let den = s(2.0) * df * df - f * s(6.0) * t;
+        let next = t - s(2.0) * f * df / den;
+        // the scalar loop's breaks: f ≤ 0, den ≤ 0, no descent, NaN
+        let step = moving & f.simd_gt(s(0.0)) & den.simd_gt(s(0.0)) & next.simd_lt(t);
+        let settled = (t - next).simd_le(s(1e-6) * next.abs());
+        t = step.select(next, t);
+        moving = step & !settled;
+        if !moving.any() {
+            break;
+        }
+    }
+    (t - sh, three_real)
+}
+
+/// `factor::from_resolvent`: (x² + ax/2 + y/2)² − (px + q)².
+#[inline]
+fn from_resolvent(y: V, m: &Monic) -> (V, V, V, V) {
+    let (a, b, c, d) = (m.a, m.b, m.c, m.d);
+    let s = V::splat;
+    let p = (a * a / s(4.0) + y - b).max(s(0.0)).sqrt();
+    let q = (y * y / s(4.0) - d).max(s(0.0)).sqrt();
+    let q = (a * y / s(4.0) - c / s(2.0)).simd_lt(s(0.0)).select(-q, q);
+    (a / s(2.0) + p, y / s(2.0) + q, a / s(2.0) - p, y / s(2.0) - q)
+}
+
+/// a₁(b₂c₃ − b₃c₂) − a₂(b₁c₃ − b₃c₁) + a₃(b₁c₂ − b₂c₁).
+#[inline]
+#[allow(clippy::too_many_arguments)]
+fn det3(a1: V, a2: V, a3: V, b1: V, b2: V, b3: V, c1: V, c2: V, c3: V) -> V {
+    a1 * (b2 * c3 - b3 * c2) - a2 * (b1 * c3 - b3 * c1) + a3 * (b1 * c2 - b2 * c1)
+}
+
+/// `factor::newton_factor` per lane: Newton's method on the four Vieta
+/// equations, each lane stopping where the scalar loop breaks.
+#[inline]
+fn newton_factor(mut f: (V, V, V, V), m: &Monic) -> (V, V, V, V) {
+    let (a, b, c, d) = (m.a, m.b, m.c, m.d);
+    let zero = V::splat(0.0);
+    let mut err = m.backward_error(f);
+    let mut moving = V::splat(0.0).simd_eq(zero);
+    for _ in 0..16 {
+        moving &= !err.simd_le(V::splat(2.0 * f64::EPSILON));
+        if !moving.any() {
+            break;
+        }
+        let (al, be, ga, de) = f;
+        let r = [
+            al + ga - a,
+            be + de + al * ga - b,
+            al * de + be * ga - c,
+            be * de - d,
+        ];
+        let (m11, m12, m13, k1) = (ga - al, V::splat(1.0), V::splat(1.0), r[1] - al * r[0]);
+        let (m21, m22, m23, k2) = (de - be, ga, al, r[2] - be * r[0]);
+        let (m31, m32, m33, k3) = (zero, de, be, r[3]);
+        let det = det3(m11, m12, m13, m21, m22, m23, m31, m32, m33);
+        let inv = V::splat(1.0) / det;
+        let x1 = det3(k1, m12, m13, k2, m22, m23, k3, m32, m33) * inv;
+        let x2 = det3(m11, k1, m13, m21, k2, m23, m31, k3, m33) * inv;
+        let x4 = det3(m11, m12, k1, m21, m22, k2, m31, m32, k3) * inv;
+        let next = (al - x1, be - x2, ga - (r[0] - x1), de - x4);
+        let next_err = m.backward_error(next);
+        // the scalar loop's breaks: det = 0 or not finite, no decrease, NaN
+        let step = moving
+            & det.simd_ne(zero)
+            & det.is_finite()
+            & !next_err.simd_ge(err)
+            & !next_err.is_nan();
+        f = (
+            step.select(next.0, f.0),
+            step.select(next.1, f.1),
+            step.select(next.2, f.2),
+            step.select(next.3, f.3),
+        );
+        err = step.select(next_err, err);
+        moving = step;
+    }
+    f
+}
+
+/// `super::quadratic`'s roots of x² + px + q per lane, and whether both
+/// are settled as `factor::check_pair` judges (residual within 8ε of its
+/// rounding scale, κ ≤ 16) on the scaled quartic `c`.
+#[inline]
+fn settled_quadratic(p: V, q: V, c: &[V; 5]) -> ((V, V), (V, V), V) {
+    let zero = V::splat(0.0);
+    let h = -p / V::splat(2.0);
+    let disc = h * h - q;
+    let real = disc.simd_ge(zero);
+    let sd = disc.max(zero).sqrt();
+    let big = h.simd_eq(zero).select(sd, h + sd.copysign(h));
+    let small = big.simd_ne(zero).select(q / big, zero);
+    let w = (-disc).sqrt();
+    let z1 = (real.select(big, h), real.select(zero, w));
+    let z2 = (real.select(small, h), real.select(zero, -w));
+    // the first root in complex arithmetic (exact for a real one); the
+    // second in real arithmetic, needed only when real
+    let first = settled_at(c, z1.0, z1.1);
+    let second = settled_at(c, z2.0, zero);
+    (z1, z2, first & (second | !real))
+}
+
+/// `factor::check_pair` at one root z = x + iy: |P(z)|₁ ≤ 8ε Σ|cₖ||z|₁^(4−k)
+/// (the sum at least the smallest normal) and κ ≤ 16, i.e.
+/// Σ|cₖ||z|₁^(4−k) ≤ 16|z|₁|P′(z)|₁ or z = 0; with |·|₁ = |re| + |im|.
+#[inline]
+fn settled_at(c: &[V; 5], x: V, y: V) -> V {
+    let s = V::splat;
+    let n = x.abs() + y.abs();
+    // P(z) = (((z c₀ + c₁) z + c₂) z + c₃) z + c₄, as num-complex does it
+    let (mut pr, mut pi) = (x * c[0] + c[1], y * c[0]);
+    for &ck in &c[2..] {
+        (pr, pi) = (pr * x - pi * y + ck, pr * y + pi * x);
+    }
+    // P′(z) = ((z·4c₀ + 3c₁) z + 2c₂) z + c₃
+    let (mut dr, mut di) = (x * (s(4.0) * c[0]) + s(3.0) * c[1], y * (s(4.0) * c[0]));
+    for ck in [s(2.0) * c[2], c[3]] {
+        (dr, di) = (dr * x - di * y + ck, dr * y + di * x);
+    }
+    let mut sum = s(0.0);
+    for &ck in c {
+        sum = sum * n + ck.abs();
+    }
+    let sum = sum.max(s(f64::MIN_POSITIVE));
+    let residual = (pr.abs() + pi.abs()).simd_le(s(8.0 * f64::EPSILON) * sum);
+    let conditioned = n.simd_eq(s(0.0)) | sum.simd_le(s(16.0) * n * (dr.abs() + di.abs()));
+    residual & conditioned
+}
