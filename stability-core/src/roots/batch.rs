@@ -37,10 +37,7 @@ pub fn solve_quartics(
     roots: &mut [Result<[Complex64; 4], RootsError>],
 ) -> usize {
     let n = coeffs.len().min(roots.len());
-    for (c, r) in coeffs[..n]
-        .chunks(LANES)
-        .zip(roots[..n].chunks_mut(LANES))
-    {
+    for (c, r) in coeffs[..n].chunks(LANES).zip(roots[..n].chunks_mut(LANES)) {
         solve_chunk(c, r);
     }
     n
@@ -54,6 +51,26 @@ const FILLER: [f64; 5] = [1.0, 0.0, 5.0, 0.0, 4.0];
 fn solve_chunk(c: &[[f64; 5]], out: &mut [Result<[Complex64; 4], RootsError>]) {
     let scalings: [Option<Scaling>; LANES] =
         std::array::from_fn(|l| c.get(l).and_then(Scaling::of));
+    let (accepted, lanes) = factored_lanes(&scalings);
+    for (l, (q, o)) in c.iter().zip(out.iter_mut()).enumerate() {
+        let fast = scalings[l]
+            .as_ref()
+            .filter(|_| accepted >> l & 1 == 1)
+            .and_then(|s| s.scale_back(lanes[l]));
+        *o = match fast {
+            Some(mut r) => {
+                sort_roots(&mut r);
+                Ok(r)
+            }
+            None => solve_quartic(*q),
+        };
+    }
+}
+
+/// Steps 2–4 on the scaled quartics of four lanes: the roots of each
+/// lane's two quadratic factors (of the scaled quartic) and the bit mask
+/// of the lanes whose roots are settled (bit l for lane l).
+fn factored_lanes(scalings: &[Option<Scaling>; LANES]) -> (u32, [[Complex64; 4]; LANES]) {
     let exact: [V; 5] = std::array::from_fn(|k| {
         V::new(std::array::from_fn(|l| {
             scalings[l].as_ref().map_or(FILLER[k], |s| s.exact[k])
@@ -69,21 +86,12 @@ fn solve_chunk(c: &[[f64; 5]], out: &mut [Result<[Complex64; 4], RootsError>]) {
     let (al, be, ga, de) = newton_factor(from_resolvent(y, &m), &m);
     let (z1, z2, s1) = settled_quadratic(al, be, &exact);
     let (z3, z4, s2) = settled_quadratic(ga, de, &exact);
-    let accepted = (three_real & s1 & s2).to_bitmask();
-    let lanes = [z1, z2, z3, z4].map(|(re, im)| (re.to_array(), im.to_array()));
-    for (l, (q, o)) in c.iter().zip(out.iter_mut()).enumerate() {
-        let fast = scalings[l]
-            .as_ref()
-            .filter(|_| accepted >> l & 1 == 1)
-            .and_then(|s| s.scale_back(lanes.map(|(re, im)| Complex64::new(re[l], im[l]))));
-        *o = match fast {
-            Some(mut r) => {
-                sort_roots(&mut r);
-                Ok(r)
-            }
-            None => solve_quartic(*q),
-        };
-    }
+    let present = std::array::from_fn(|l| if scalings[l].is_some() { -1.0 } else { 0.0 });
+    let present = V::new(present).simd_ne(V::splat(0.0));
+    let accepted = (present & three_real & s1 & s2).to_bitmask();
+    let parts = [z1, z2, z3, z4].map(|(re, im)| (re.to_array(), im.to_array()));
+    let roots = std::array::from_fn(|l| parts.map(|(re, im)| Complex64::new(re[l], im[l])));
+    (accepted, roots)
 }
 
 /// `factor::Monic` on four lanes: the scaled monic quartic and the
@@ -172,7 +180,12 @@ fn from_resolvent(y: V, m: &Monic) -> (V, V, V, V) {
     let p = (a * a / s(4.0) + y - b).max(s(0.0)).sqrt();
     let q = (y * y / s(4.0) - d).max(s(0.0)).sqrt();
     let q = (a * y / s(4.0) - c / s(2.0)).simd_lt(s(0.0)).select(-q, q);
-    (a / s(2.0) + p, y / s(2.0) + q, a / s(2.0) - p, y / s(2.0) - q)
+    (
+        a / s(2.0) + p,
+        y / s(2.0) + q,
+        a / s(2.0) - p,
+        y / s(2.0) - q,
+    )
 }
 
 /// a₁(b₂c₃ − b₃c₂) − a₂(b₁c₃ − b₃c₁) + a₃(b₁c₂ − b₂c₁).
@@ -277,4 +290,54 @@ fn settled_at(c: &[V; 5], x: V, y: V) -> V {
     let residual = (pr.abs() + pi.abs()).simd_le(s(8.0 * f64::EPSILON) * sum);
     let conditioned = n.simd_eq(s(0.0)) | sum.simd_le(s(16.0) * n * (dr.abs() + di.abs()));
     residual & conditioned
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The stability quartics of `benches/roots.rs`: short period and
+    /// phugoid pairs of a tailless delta, A = 1 + small.
+    fn stability_quartics() -> Vec<[f64; 5]> {
+        (0..256)
+            .map(|i| {
+                let t = i as f64;
+                let w = |k: f64| 0.3 + (t * 0.37 + k * 1.91).sin().abs();
+                let (p1, q1) = (4.0 * w(1.0), 40.0 + 400.0 * w(2.0));
+                let (p2, q2) = (0.02 * w(3.0), 0.004 + 0.05 * w(4.0));
+                let a = 1.0 + 0.01 * w(5.0);
+                [
+                    a,
+                    a * (p1 + p2),
+                    a * (q1 + q2 + p1 * p2),
+                    a * (p1 * q2 + p2 * q1),
+                    a * q1 * q2,
+                ]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_vector_path_settles_every_stability_quartic_as_the_scalar_path_does() {
+        for chunk in stability_quartics().chunks(LANES) {
+            let scalings: [Option<Scaling>; LANES] =
+                std::array::from_fn(|l| chunk.get(l).and_then(Scaling::of));
+            let (accepted, lanes) = factored_lanes(&scalings);
+            // the vector path, not the fallback, answers every lane
+            assert_eq!(accepted, 0b1111);
+            for (l, q) in chunk.iter().enumerate() {
+                let s = scalings[l].as_ref().unwrap();
+                let [a, b, c, d] = s.monic;
+                let (scalar, settled) = super::super::factor::factored_roots(a, b, c, d, &s.exact);
+                assert!(settled);
+                assert_eq!(lanes[l], scalar, "{q:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn empty_and_filler_lanes_are_never_accepted() {
+        let none: [Option<Scaling>; LANES] = std::array::from_fn(|_| None);
+        assert_eq!(factored_lanes(&none).0, 0);
+    }
 }
