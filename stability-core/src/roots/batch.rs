@@ -82,13 +82,19 @@ fn factored_lanes(scalings: &[Option<Scaling>; LANES]) -> (u32, [[Complex64; 4];
         }))
     };
     let m = Monic::new(monic(0), monic(1), monic(2), monic(3));
+    let present = std::array::from_fn(|l| if scalings[l].is_some() { -1.0 } else { 0.0 });
+    let present = V::new(present).simd_ne(V::splat(0.0));
     let (y, three_real) = largest_resolvent_root(&m);
+    let candidates = present & three_real;
+    if !candidates.any() {
+        // every lane goes to the scalar path (Cardano's resolvent: two
+        // real roots and a pair, say)
+        return (0, [[Complex64::new(0.0, 0.0); 4]; LANES]);
+    }
     let (al, be, ga, de) = newton_factor(from_resolvent(y, &m), &m);
     let (z1, z2, s1) = settled_quadratic(al, be, &exact);
     let (z3, z4, s2) = settled_quadratic(ga, de, &exact);
-    let present = std::array::from_fn(|l| if scalings[l].is_some() { -1.0 } else { 0.0 });
-    let present = V::new(present).simd_ne(V::splat(0.0));
-    let accepted = (present & three_real & s1 & s2).to_bitmask();
+    let accepted = (candidates & s1 & s2).to_bitmask();
     let parts = [z1, z2, z3, z4].map(|(re, im)| (re.to_array(), im.to_array()));
     let roots = std::array::from_fn(|l| parts.map(|(re, im)| Complex64::new(re[l], im[l])));
     (accepted, roots)
@@ -261,6 +267,11 @@ fn settled_quadratic(p: V, q: V, c: &[V; 5]) -> ((V, V), (V, V), V) {
     // the first root in complex arithmetic (exact for a real one); the
     // second in real arithmetic, needed only when real
     let first = settled_at(c, z1.0, z1.1);
+    if !real.any() {
+        // two complex pairs (the usual stability quartic): the conjugate
+        // shares the first root's check
+        return (z1, z2, first);
+    }
     let second = settled_at(c, z2.0, zero);
     (z1, z2, first & (second | !real))
 }
