@@ -14,7 +14,39 @@ mod support;
 use num_complex::Complex64;
 use proptest::prelude::*;
 use stability_core::roots::{RootsError, solve_quartic, solve_quartics};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
 use support::{case_error, cases};
+
+/// A global allocator that counts the allocations of a thread that asks
+/// (as in `no_alloc.rs`: the harness's other threads allocate freely).
+struct Counting;
+
+thread_local! {
+    static COUNTED: Cell<Option<usize>> = const { Cell::new(None) };
+}
+
+// SAFETY: forwards to the system allocator, counting the calls made on a
+// thread that counts them.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let _ = COUNTED.try_with(|c| {
+            if let Some(n) = c.get() {
+                c.set(Some(n + 1));
+            }
+        });
+        // SAFETY: same contract as the caller's.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: same contract as the caller's.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static ALLOC: Counting = Counting;
 
 type Answer = Result<[Complex64; 4], RootsError>;
 
@@ -107,6 +139,26 @@ fn slices_of_different_lengths_solve_the_shorter_and_leave_the_rest() {
     assert!(out[..3].iter().all(|a| *a == solve_quartic(coeffs[0])));
     assert!(out[3..].iter().all(|a| *a == Err(RootsError::LeadingZero)));
     assert_eq!(solve_quartics(&coeffs[..0], &mut out), 0);
+}
+
+#[test]
+fn a_batch_allocates_nothing() {
+    // settled lanes, fallbacks to the scalar path (Cardano's resolvent,
+    // the polish, the wide path) and errors, in one batch
+    let coeffs = [
+        [1.0, 10.1, 455.4, 40.9, 8.1],
+        [1.0, -10.0, 35.0, -50.0, 24.0],
+        [1.0, -4000.0, 6e6, -4e9, 1e12],
+        [1.0, -1.0e160, 7.0, 0.1, 1.0],
+        [0.0, 1.0, 2.0, 3.0, 4.0],
+        [2.0, 0.04, 0.5, 0.0021, 0.0003],
+    ];
+    let mut out = [Err(RootsError::LeadingZero); 6];
+    COUNTED.with(|c| c.set(Some(0)));
+    let n = solve_quartics(std::hint::black_box(&coeffs), &mut out);
+    let allocations = COUNTED.with(|c| c.take()).unwrap_or(0);
+    assert_eq!((n, allocations), (6, 0));
+    assert!(out[0].is_ok() && out[3].is_ok());
 }
 
 /// (λ² + p₁λ + q₁)(λ² + p₂λ + q₂)·A with the pairs' sizes apart by up to
