@@ -13,8 +13,8 @@
 //! both quadratics' roots are *settled* — residual within 8ε of rounding
 //! and condition number κ ≤ 16 — which is where the scalar path accepts
 //! the same roots from its first candidate. So an accepted lane carries
-//! the scalar path's roots bit for bit, and every other lane (Cardano's
-//! single resolvent root, a repair or polish needed, a quartic outside the
+//! the scalar path's roots bit for bit, and every other lane (a repair, a
+//! second resolvent root or the polish needed, a quartic outside the
 //! scaled range, an error) is [`solve_quartic`]'s answer itself:
 //! [`solve_quartics`] returns exactly what [`solve_quartic`] returns, at a
 //! lower cost per quartic (`tests/roots_batch.rs` holds it to that).
@@ -84,11 +84,9 @@ fn factored_lanes(scalings: &[Option<Scaling>; LANES]) -> (u32, [[Complex64; 4];
     let m = Monic::new(monic(0), monic(1), monic(2), monic(3));
     let present = std::array::from_fn(|l| if scalings[l].is_some() { -1.0 } else { 0.0 });
     let present = V::new(present).simd_ne(V::splat(0.0));
-    let (y, three_real) = largest_resolvent_root(&m);
-    let candidates = present & three_real;
+    let (y, resolved) = largest_resolvent_root(&m);
+    let candidates = present & resolved;
     if !candidates.any() {
-        // every lane goes to the scalar path (Cardano's resolvent: two
-        // real roots and a pair, say)
         return (0, [[Complex64::new(0.0, 0.0); 4]; LANES]);
     }
     let (al, be, ga, de) = newton_factor(from_resolvent(y, &m), &m);
@@ -140,9 +138,9 @@ impl Monic {
 }
 
 /// `factor::largest_cubic_root` of Ferrari's resolvent
-/// y³ − by² + (ac − 4d)y + (4bd − a²d − c²) where it has three real roots
-/// (Halley's iteration from above); the mask is those lanes (the others,
-/// Cardano's, go to the scalar path).
+/// y³ − by² + (ac − 4d)y + (4bd − a²d − c²): Halley's iteration from above
+/// where it has three real roots, Cardano's formula where it has one; the
+/// mask is the lanes that have either (not those with a NaN).
 #[inline]
 fn largest_resolvent_root(m: &Monic) -> (V, V) {
     let (a, b, c, d) = (m.a, m.b, m.c, m.d);
@@ -152,7 +150,9 @@ fn largest_resolvent_root(m: &Monic) -> (V, V) {
     let p = e1 - e2 * sh;
     let q = e0 - sh * e1 + s(2.0) * sh * sh * sh;
     let (h, k) = (q / s(2.0), p / s(3.0));
-    let three_real = (h * h + k * k * k).simd_lt(s(0.0));
+    let disc = h * h + k * k * k;
+    let three_real = disc.simd_lt(s(0.0));
+    let one_real = disc.simd_ge(s(0.0));
     let mut t = s(2.0) * (-p / s(3.0)).sqrt();
     let tb = s(-2.0) * sh;
     let from_b = tb.simd_lt(t)
@@ -175,7 +175,35 @@ fn largest_resolvent_root(m: &Monic) -> (V, V) {
             break;
         }
     }
-    (t - sh, three_real)
+    let t = if one_real.any() {
+        one_real.select(cardano(p, q, disc, one_real), t)
+    } else {
+        t
+    };
+    (t - sh, three_real | one_real)
+}
+
+/// `factor::largest_cubic_root`'s single real root t of t³ + pt + q by
+/// Cardano's formula, in the lanes of `one_real` (disc ≥ 0), with the
+/// scalar `f64::cbrt` on each of those lanes (as the scalar path takes it).
+#[inline(never)]
+fn cardano(p: V, q: V, disc: V, one_real: V) -> V {
+    let s = V::splat;
+    let sq = disc.sqrt();
+    let arg = -q / s(2.0) + q.simd_le(s(0.0)).select(sq, -sq);
+    let (arg, p, q) = (arg.to_array(), p.to_array(), q.to_array());
+    let lanes = one_real.to_bitmask();
+    V::new(std::array::from_fn(|l| {
+        if lanes >> l & 1 == 0 {
+            return 0.0;
+        }
+        let u = arg[l].cbrt();
+        if u != 0.0 {
+            u - p[l] / (3.0 * u)
+        } else {
+            (-q[l]).cbrt()
+        }
+    }))
 }
 
 /// `factor::from_resolvent`: (x² + ax/2 + y/2)² − (px + q)².
@@ -344,6 +372,47 @@ mod tests {
                 assert_eq!(lanes[l], scalar, "{q:?}");
             }
         }
+    }
+
+    /// The mixed quartics of `benches/roots.rs`: every root structure.
+    fn mixed_quartics() -> Vec<[f64; 5]> {
+        (0..256)
+            .map(|i| {
+                let t = i as f64;
+                let w = |k: f64| (t * 0.731 + k * 2.17).sin();
+                [
+                    1.0 + w(0.0).abs(),
+                    3.0 * w(1.0),
+                    5.0 * w(2.0),
+                    2.0 * w(3.0),
+                    4.0 * w(4.0),
+                ]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn mixed_quartics_settle_in_lanes_with_either_resolvent_formula() {
+        let mut accepted_count = 0;
+        for chunk in mixed_quartics().chunks(LANES) {
+            let scalings: [Option<Scaling>; LANES] =
+                std::array::from_fn(|l| chunk.get(l).and_then(Scaling::of));
+            let (accepted, lanes) = factored_lanes(&scalings);
+            for (l, s) in scalings.iter().enumerate() {
+                if accepted >> l & 1 == 1 {
+                    let s = s.as_ref().unwrap();
+                    let [a, b, c, d] = s.monic;
+                    let (scalar, settled) =
+                        super::super::factor::factored_roots(a, b, c, d, &s.exact);
+                    assert!(settled);
+                    assert_eq!(lanes[l], scalar, "{:?}", chunk[l]);
+                    accepted_count += 1;
+                }
+            }
+        }
+        // 255 of the 256 settle on the scalar path's first candidate; 181
+        // of them from Cardano's formula (one real resolvent root)
+        assert_eq!(accepted_count, 255);
     }
 
     #[test]
