@@ -6,10 +6,13 @@
 //! Every lane performs the scalar path's operations in the scalar path's
 //! order (IEEE arithmetic, no fused multiply-add, sqrt and division
 //! correctly rounded in both), with its branches turned into masks:
-//! Halley's iteration on the resolvent (Orellana & De Michele, Algorithm
-//! 1010, ACM TOMS 46(2), 2020, as in `factor`) and Newton's method on the
-//! Vieta equations stop per lane exactly where the scalar loops break, and
-//! the loops end when no lane is left moving. A lane is accepted only when
+//! the largest root of Ferrari's resolvent by Halley's iteration where it
+//! has three real roots and by Cardano's formula where it has one (the
+//! cube root per lane, by the scalar `f64::cbrt`), the factorization from
+//! it and its refinement by Newton's method on the Vieta equations
+//! (Orellana & De Michele, Algorithm 1010, ACM TOMS 46(2), 2020, as in
+//! `factor`). The iterations stop per lane exactly where the scalar loops
+//! break, and end when no lane is left moving. A lane is accepted only when
 //! both quadratics' roots are *settled* — residual within 8ε of rounding
 //! and condition number κ ≤ 16 — which is where the scalar path accepts
 //! the same roots from its first candidate. So an accepted lane carries

@@ -62,7 +62,25 @@
 //! holds the solver to this over f64's whole range.)
 //!
 //! Modules: `binary` (exact scaling), `factor` (steps 2–4), `aberth`
-//! (step 5), `horner` (evaluation), `wide` (any scale).
+//! (step 5), `horner` (evaluation), `wide` (any scale), `batch` (many
+//! quartics at once).
+//!
+//! # Many quartics at once
+//! [`solve_quartics`] returns, for a slice of quartics, exactly what
+//! [`solve_quartic`] returns for each (bit for bit, errors included), four
+//! at a time: steps 1–4 run on SIMD vectors of four lanes (`wide::f64x4`),
+//! each lane doing the scalar path's operations in the same order with its
+//! branches turned into masks, and a lane whose first factorization does
+//! not settle is handed to [`solve_quartic`]. Measured with divan
+//! (`cargo bench -p stability-core --bench roots`, 256 quartics a batch,
+//! three runs, medians; ratios within one run, on a shared 2-core AMD EPYC
+//! with SSE2 code): on the stability set (two complex pairs)
+//! [`solve_quartics`] takes 0.12 of the time of nalgebra's
+//! companion-matrix eigenvalues (8.4× faster; about 92 ns a quartic here)
+//! and 0.53 of the time of one [`solve_quartic`] call each (1.9×); on the
+//! mixed set (every root structure) 0.18 of nalgebra's time and 0.73 of
+//! the scalar calls'. The scalar path alone is 4.4× faster than nalgebra
+//! on the stability set.
 //!
 //! # Multiple roots
 //! A root of multiplicity m is ill-conditioned: a perturbation ε of the
