@@ -22,7 +22,8 @@
 //! [`solve_quartics`] returns exactly what [`solve_quartic`] returns, at a
 //! lower cost per quartic (`tests/roots_batch.rs` holds it to that).
 
-use super::{Complex64, RootsError, Scaling, solve_quartic, sort_roots};
+use super::binary::{exponent, pow2};
+use super::{Complex64, RootsError, scale_back, scale_exponent, solve_quartic, sort_roots};
 use wide::f64x4;
 
 type V = f64x4;
@@ -52,14 +53,12 @@ const FILLER: [f64; 5] = [1.0, 0.0, 5.0, 0.0, 4.0];
 
 /// Up to four quartics, one per lane.
 fn solve_chunk(c: &[[f64; 5]], out: &mut [Result<[Complex64; 4], RootsError>]) {
-    let scalings: [Option<Scaling>; LANES] =
-        std::array::from_fn(|l| c.get(l).and_then(Scaling::of));
-    let (accepted, lanes) = factored_lanes(&scalings);
+    let scaled = Scaled::of(c);
+    let (accepted, lanes) = factored_lanes(&scaled);
     for (l, (q, o)) in c.iter().zip(out.iter_mut()).enumerate() {
-        let fast = scalings[l]
-            .as_ref()
-            .filter(|_| accepted >> l & 1 == 1)
-            .and_then(|s| s.scale_back(lanes[l]));
+        let fast = (accepted >> l & 1 == 1)
+            .then(|| scale_back(scaled.sigma[l], lanes[l]))
+            .flatten();
         *o = match fast {
             Some(mut r) => {
                 sort_roots(&mut r);
@@ -70,31 +69,94 @@ fn solve_chunk(c: &[[f64; 5]], out: &mut [Result<[Complex64; 4], RootsError>]) {
     }
 }
 
+/// Step 1 (`Scaling::of`) on four lanes: the quartics scaled by λ = 2^σ·x
+/// and divided by 2^(e₀ + 4σ), where that is a single exact multiplication
+/// by a power of two in range (else the lane is absent and the scalar path
+/// takes it, as it takes a short chunk's empty lanes).
+struct Scaled {
+    /// The lanes that hold a scaled quartic.
+    present: V,
+    sigma: [i32; LANES],
+    /// x⁴ + ax³ + bx² + cx + d.
+    monic: [V; 4],
+    /// The given coefficients scaled.
+    exact: [V; 5],
+}
+
+impl Scaled {
+    /// `Scaling::of`'s operations and conditions lane by lane, with the
+    /// scalar `scale_exponent` and `exponent` for σ and e₀.
+    #[inline]
+    fn of(q: &[[f64; 5]]) -> Scaled {
+        let s = V::splat;
+        let c: [V; 5] = std::array::from_fn(|k| {
+            V::new(std::array::from_fn(|l| {
+                q.get(l).map_or(FILLER[k], |q| q[k])
+            }))
+        });
+        let m: [V; 4] = std::array::from_fn(|k| c[k + 1] / c[0]);
+        let (ma, ca) = (m.map(V::to_array), c.map(V::to_array));
+        let mut sigma = [0; LANES];
+        let mut ok = [0.0; LANES];
+        let mut to_monic = [[1.0; LANES]; 4];
+        let mut to_exact = [[1.0; LANES]; 5];
+        for l in 0..q.len().min(LANES) {
+            let lane_m = [ma[0][l], ma[1][l], ma[2][l], ma[3][l]];
+            let valid = ca[4][l] != 0.0
+                && (0..4).all(|k| {
+                    lane_m[k].is_finite()
+                        && (lane_m[k].abs() >= f64::MIN_POSITIVE || ca[k + 1][l] == 0.0)
+                });
+            if !valid {
+                continue;
+            }
+            let sg = scale_exponent(&lane_m);
+            let e0 = exponent(ca[0][l]);
+            let n_monic: [i32; 4] = std::array::from_fn(|k| -(k as i32 + 1) * sg);
+            let n_exact: [i32; 5] = std::array::from_fn(|k| -(k as i32) * sg - e0);
+            let in_range = |n: &i32| (-1022..=1023).contains(n);
+            if !(n_monic.iter().all(in_range) && n_exact.iter().all(in_range)) {
+                continue;
+            }
+            (0..4).for_each(|k| to_monic[k][l] = pow2(n_monic[k]));
+            (0..5).for_each(|k| to_exact[k][l] = pow2(n_exact[k]));
+            sigma[l] = sg;
+            ok[l] = 1.0;
+        }
+        let monic: [V; 4] = std::array::from_fn(|k| m[k] * V::new(to_monic[k]));
+        let exact: [V; 5] = std::array::from_fn(|k| c[k] * V::new(to_exact[k]));
+        let mut present = V::new(ok).simd_ne(s(0.0));
+        let smallest = s(pow2(-969));
+        for k in 0..4 {
+            present = present
+                & (monic[k].abs().simd_ge(smallest) | m[k].simd_eq(s(0.0)))
+                & (exact[k + 1].abs().simd_ge(smallest) | c[k + 1].simd_eq(s(0.0)));
+        }
+        // an absent lane holds the harmless filler, not what it computed
+        Scaled {
+            present,
+            sigma,
+            monic: std::array::from_fn(|k| present.select(monic[k], s(FILLER[k + 1]))),
+            exact: std::array::from_fn(|k| present.select(exact[k], s(FILLER[k]))),
+        }
+    }
+}
+
 /// Steps 2–4 on the scaled quartics of four lanes: the roots of each
 /// lane's two quadratic factors (of the scaled quartic) and the bit mask
 /// of the lanes whose roots are settled (bit l for lane l).
-fn factored_lanes(scalings: &[Option<Scaling>; LANES]) -> (u32, [[Complex64; 4]; LANES]) {
-    let exact: [V; 5] = std::array::from_fn(|k| {
-        V::new(std::array::from_fn(|l| {
-            scalings[l].as_ref().map_or(FILLER[k], |s| s.exact[k])
-        }))
-    });
-    let monic = |k: usize| {
-        V::new(std::array::from_fn(|l| {
-            scalings[l].as_ref().map_or(FILLER[k + 1], |s| s.monic[k])
-        }))
-    };
-    let m = Monic::new(monic(0), monic(1), monic(2), monic(3));
-    let present = std::array::from_fn(|l| if scalings[l].is_some() { -1.0 } else { 0.0 });
-    let present = V::new(present).simd_ne(V::splat(0.0));
+fn factored_lanes(scaled: &Scaled) -> (u32, [[Complex64; 4]; LANES]) {
+    let [a, b, c, d] = scaled.monic;
+    let m = Monic::new(a, b, c, d);
     let (y, resolved) = largest_resolvent_root(&m);
-    let candidates = present & resolved;
+    let candidates = scaled.present & resolved;
     if !candidates.any() {
         return (0, [[Complex64::new(0.0, 0.0); 4]; LANES]);
     }
+    let exact = &scaled.exact;
     let (al, be, ga, de) = newton_factor(from_resolvent(y, &m), &m);
-    let (z1, z2, s1) = settled_quadratic(al, be, &exact);
-    let (z3, z4, s2) = settled_quadratic(ga, de, &exact);
+    let (z1, z2, s1) = settled_quadratic(al, be, exact);
+    let (z3, z4, s2) = settled_quadratic(ga, de, exact);
     let accepted = (candidates & s1 & s2).to_bitmask();
     let parts = [z1, z2, z3, z4].map(|(re, im)| (re.to_array(), im.to_array()));
     let roots = std::array::from_fn(|l| parts.map(|(re, im)| Complex64::new(re[l], im[l])));
@@ -336,6 +398,7 @@ fn settled_at(c: &[V; 5], x: V, y: V) -> V {
 
 #[cfg(test)]
 mod tests {
+    use super::super::Scaling;
     use super::*;
 
     /// The stability quartics of `benches/roots.rs`: short period and
@@ -359,22 +422,36 @@ mod tests {
             .collect()
     }
 
-    #[test]
-    fn the_vector_path_settles_every_stability_quartic_as_the_scalar_path_does() {
-        for chunk in stability_quartics().chunks(LANES) {
-            let scalings: [Option<Scaling>; LANES] =
-                std::array::from_fn(|l| chunk.get(l).and_then(Scaling::of));
-            let (accepted, lanes) = factored_lanes(&scalings);
-            // the vector path, not the fallback, answers every lane
-            assert_eq!(accepted, 0b1111);
+    /// The lanes' scaled quartics and roots, each accepted lane checked
+    /// against the scalar path (`Scaling::of`, `factor::factored_roots`)
+    /// bit for bit; returns the number accepted.
+    fn accepted_as_the_scalar_path(quartics: &[[f64; 5]]) -> u32 {
+        let mut count = 0;
+        for chunk in quartics.chunks(LANES) {
+            let scaled = Scaled::of(chunk);
+            let (accepted, lanes) = factored_lanes(&scaled);
             for (l, q) in chunk.iter().enumerate() {
-                let s = scalings[l].as_ref().unwrap();
+                if accepted >> l & 1 == 0 {
+                    continue;
+                }
+                let s = Scaling::of(q).unwrap();
+                assert_eq!(scaled.sigma[l], s.sigma);
+                let monic = scaled.monic.map(|v| v.to_array()[l]);
+                let exact = scaled.exact.map(|v| v.to_array()[l]);
+                assert_eq!((monic, exact), (s.monic, s.exact), "{q:?}");
                 let [a, b, c, d] = s.monic;
                 let (scalar, settled) = super::super::factor::factored_roots(a, b, c, d, &s.exact);
                 assert!(settled);
                 assert_eq!(lanes[l], scalar, "{q:?}");
+                count += 1;
             }
         }
+        count
+    }
+
+    #[test]
+    fn the_vector_path_settles_every_stability_quartic_as_the_scalar_path_does() {
+        assert_eq!(accepted_as_the_scalar_path(&stability_quartics()), 256);
     }
 
     /// The mixed quartics of `benches/roots.rs`: every root structure.
@@ -396,31 +473,36 @@ mod tests {
 
     #[test]
     fn mixed_quartics_settle_in_lanes_with_either_resolvent_formula() {
-        let mut accepted_count = 0;
-        for chunk in mixed_quartics().chunks(LANES) {
-            let scalings: [Option<Scaling>; LANES] =
-                std::array::from_fn(|l| chunk.get(l).and_then(Scaling::of));
-            let (accepted, lanes) = factored_lanes(&scalings);
-            for (l, s) in scalings.iter().enumerate() {
-                if accepted >> l & 1 == 1 {
-                    let s = s.as_ref().unwrap();
-                    let [a, b, c, d] = s.monic;
-                    let (scalar, settled) =
-                        super::super::factor::factored_roots(a, b, c, d, &s.exact);
-                    assert!(settled);
-                    assert_eq!(lanes[l], scalar, "{:?}", chunk[l]);
-                    accepted_count += 1;
-                }
-            }
-        }
         // 255 of the 256 settle on the scalar path's first candidate; 181
         // of them from Cardano's formula (one real resolvent root)
-        assert_eq!(accepted_count, 255);
+        assert_eq!(accepted_as_the_scalar_path(&mixed_quartics()), 255);
     }
 
     #[test]
-    fn empty_and_filler_lanes_are_never_accepted() {
-        let none: [Option<Scaling>; LANES] = std::array::from_fn(|_| None);
-        assert_eq!(factored_lanes(&none).0, 0);
+    fn scaled_quartics_far_from_one_are_scaled_as_the_scalar_path_does() {
+        // the stability quartics with λ scaled by 2^±200 and A by 2^±100:
+        // σ, the monic and the exact coefficients bit for bit
+        let mut quartics = Vec::new();
+        for q in stability_quartics().iter().take(16) {
+            for (rho, alpha) in [(200, 100), (-200, -100), (200, -100), (-200, 100)] {
+                let f = |k: usize| pow2(alpha) * pow2(rho * k as i32);
+                quartics.push(std::array::from_fn(|k| q[k] * f(k)));
+            }
+        }
+        assert_eq!(accepted_as_the_scalar_path(&quartics), 64);
+    }
+
+    #[test]
+    fn empty_and_invalid_lanes_are_never_accepted() {
+        assert_eq!(factored_lanes(&Scaled::of(&[])).0, 0);
+        let invalid = [
+            [0.0, 1.0, 2.0, 3.0, 4.0],
+            [1.0, f64::NAN, 2.0, 3.0, 4.0],
+            [1.0, 1.0, 2.0, 3.0, 0.0],
+            [1e-300, 1e300, 1.0, 1.0, 1.0],
+        ];
+        let scaled = Scaled::of(&invalid);
+        assert!(!scaled.present.any());
+        assert_eq!(factored_lanes(&scaled).0, 0);
     }
 }

@@ -245,19 +245,25 @@ impl Scaling {
     /// one; `None` where one leaves f64's range.
     #[inline]
     fn scale_back(&self, x: [Complex64; 4]) -> Option<[Complex64; 4]> {
-        let roots = x.map(|z| binary::ldexp_c(z, self.sigma));
-        // The scaled roots lie in 2⁻⁹⁷³ ≤ |x| < 9 (Cauchy's bounds with
-        // |a|, |b|, |c|, |d| < 8 and |d| ≥ 2⁻⁹⁶⁹), so the roots scaled
-        // back are normal unless σ is extreme.
-        if (-49..=1019).contains(&self.sigma) {
-            return Some(roots);
-        }
-        let representable = |z: &Complex64| {
-            let m = z.re.abs().max(z.im.abs());
-            m.is_finite() && m >= f64::MIN_POSITIVE
-        };
-        roots.iter().all(representable).then_some(roots)
+        scale_back(self.sigma, x)
     }
+}
+
+/// [`Scaling::scale_back`] for a given σ.
+#[inline]
+fn scale_back(sigma: i32, x: [Complex64; 4]) -> Option<[Complex64; 4]> {
+    let roots = x.map(|z| binary::ldexp_c(z, sigma));
+    // The scaled roots lie in 2⁻⁹⁷³ ≤ |x| < 9 (Cauchy's bounds with
+    // |a|, |b|, |c|, |d| < 8 and |d| ≥ 2⁻⁹⁶⁹), so the roots scaled
+    // back are normal unless σ is extreme.
+    if (-49..=1019).contains(&sigma) {
+        return Some(roots);
+    }
+    let representable = |z: &Complex64| {
+        let m = z.re.abs().max(z.im.abs());
+        m.is_finite() && m >= f64::MIN_POSITIVE
+    };
+    roots.iter().all(representable).then_some(roots)
 }
 
 /// Every non-real root has its exact conjugate among the others (counted
