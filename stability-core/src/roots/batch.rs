@@ -48,7 +48,7 @@ pub fn solve_quartics(
 }
 
 /// The scaled quartic of a lane without one of its own (a short chunk, or
-/// a quartic that `Scaling` declines): (x² + 1)(x² + 4), harmless.
+/// a quartic that `Scaled::of` declines): (x² + 1)(x² + 4), harmless.
 const FILLER: [f64; 5] = [1.0, 0.0, 5.0, 0.0, 4.0];
 
 /// Up to four quartics, one per lane.

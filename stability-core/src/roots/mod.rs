@@ -72,15 +72,16 @@
 //! each lane doing the scalar path's operations in the same order with its
 //! branches turned into masks, and a lane whose first factorization does
 //! not settle is handed to [`solve_quartic`]. Measured with divan
-//! (`cargo bench -p stability-core --bench roots`, 256 quartics a batch,
-//! three runs, medians; ratios within one run, on a shared 2-core AMD EPYC
-//! with SSE2 code): on the stability set (two complex pairs)
-//! [`solve_quartics`] takes 0.12 of the time of nalgebra's
-//! companion-matrix eigenvalues (8.4× faster; about 92 ns a quartic here)
-//! and 0.53 of the time of one [`solve_quartic`] call each (1.9×); on the
-//! mixed set (every root structure) 0.18 of nalgebra's time and 0.73 of
-//! the scalar calls'. The scalar path alone is 4.4× faster than nalgebra
-//! on the stability set.
+//! (`cargo bench -p stability-core --bench roots`, 256 quartics a batch;
+//! ratios within one run, medians of three runs, on a shared 2-core AMD
+//! EPYC with SSE2 code): on the stability set (two complex pairs)
+//! [`solve_quartics`] takes 0.116 of the time of nalgebra's
+//! companion-matrix eigenvalues (8.6× faster; about 90 ns a quartic here,
+//! up to ~105 ns in runs disturbed by other jobs) and 0.55 of the time of
+//! one [`solve_quartic`] call each (1.8×); on the mixed set (every root
+//! structure; 255 of its 256 settle in the lanes) 0.18 of nalgebra's time
+//! and 0.72 of the scalar calls'. The scalar path alone is 4.7× faster
+//! than nalgebra on the stability set.
 //!
 //! # Multiple roots
 //! A root of multiplicity m is ill-conditioned: a perturbation ε of the
