@@ -351,10 +351,11 @@ fn settled_quadratic(p: V, q: V, c: &[V; 5]) -> ((V, V), (V, V), V) {
     let h = -p / V::splat(2.0);
     let disc = h * h - q;
     let real = disc.simd_ge(zero);
-    let sd = disc.max(zero).sqrt();
+    // √|disc|: √disc in the real lanes, √(−disc) in the complex ones
+    let sd = disc.abs().sqrt();
     let big = h.simd_eq(zero).select(sd, h + sd.copysign(h));
     let small = big.simd_ne(zero).select(q / big, zero);
-    let w = (-disc).sqrt();
+    let w = sd;
     let z1 = (real.select(big, h), real.select(zero, w));
     let z2 = (real.select(small, h), real.select(zero, -w));
     // the first root in complex arithmetic (exact for a real one); the
