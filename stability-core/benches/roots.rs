@@ -1,6 +1,9 @@
 //! All four roots of the stability quartic, side by side in one run:
 //!
-//! - `solve_quartic`: this crate's solver (`roots`);
+//! - `solve_quartic_roots`: this crate's solver (`roots::solve_quartic`), one
+//!   call per quartic;
+//! - `solve_quartics_batch`: the same answers from `roots::solve_quartics`,
+//!   four quartics per SIMD vector;
 //! - `companion_eigenvalues`: nalgebra's eigenvalues of the companion matrix
 //!   (the route of numpy.roots, MATLAB's roots and most tools);
 //! - `classical_eq7`: the report's eq (7) and its successive approximation
@@ -14,7 +17,7 @@
 use divan::{AllocProfiler, Bencher, black_box};
 use nalgebra::Matrix4;
 use stability_core::classical::{first_approximation, refine};
-use stability_core::roots::solve_quartic;
+use stability_core::roots::{Complex64, RootsError, solve_quartic, solve_quartics};
 
 #[global_allocator]
 static ALLOC: AllocProfiler = AllocProfiler::system();
@@ -96,6 +99,24 @@ fn solve_quartic_roots(b: Bencher, set: &str) {
             if let Ok(r) = solve_quartic(*q) {
                 acc += r[0].re + r[3].im;
             }
+        }
+        acc
+    });
+}
+
+#[divan::bench(args = ["stability", "mixed"])]
+fn solve_quartics_batch(b: Bencher, set: &str) {
+    let qs = if set == "stability" {
+        stability_quartics()
+    } else {
+        mixed_quartics()
+    };
+    let mut out: Vec<Result<[Complex64; 4], RootsError>> = vec![Err(RootsError::LeadingZero); N];
+    b.bench_local(|| {
+        solve_quartics(black_box(&qs), &mut out);
+        let mut acc = 0.0;
+        for r in out.iter().flatten() {
+            acc += r[0].re + r[3].im;
         }
         acc
     });
