@@ -1,0 +1,164 @@
+//! The Mach box's march and the loads from the potential.
+//!
+//! A box's centre sees only the boxes of earlier rows in its forward Mach
+//! cone and its own forward half, so the potential is swept row by row
+//! (Pines, Dugundji & Neuringer 1955): in each row the diaphragm boxes
+//! first, whose normalwash makes the potential at their centres vanish,
+//! then the wing boxes, whose potential follows. A box cut by an edge
+//! carries f·w̄ on its wing part and (1 − f) times its diaphragm
+//! neighbour's normalwash on the rest.
+//!
+//! The loads, by parts along each strip (ΔC_p = 4(iκφ̂ + ∂φ̂/∂x),
+//! φ̂ = φ/V, κ = ω/V, φ̂ = 0 on the leading edge):
+//! ∫ΔC_p dx = 4(iκ∫φ̂ dx + φ̂_TE), ∫(x − x̄)ΔC_p dx =
+//! 4(iκ∫(x − x̄)φ̂ dx + (x_TE − x̄)φ̂_TE − ∫φ̂ dx), φ̂ piecewise linear
+//! through the wing boxes' centres, from zero at the leading edge and
+//! extrapolated linearly to the trailing edge.
+
+use super::grid::{Grid, Kind};
+use super::influence::Influence;
+use crate::geometry::Trapezoid;
+use num_complex::Complex64;
+use std::f64::consts::PI;
+
+/// The two right-hand sides: unit incidence, unit rate (x − x̄)/c̄.
+pub type Pair = [Complex64; 2];
+
+/// The potentials φ̂ at the box centres (zero off the wing) for the two
+/// normalwash distributions.
+pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence) -> Vec<Pair> {
+    let n = grid.cells.len();
+    let mut source = vec![[Complex64::default(); 2]; n];
+    let mut wash = vec![[Complex64::default(); 2]; n];
+    let mut phi = vec![[Complex64::default(); 2]; n];
+    let (x_mac, mac) = (wing.x_mac(), wing.mac());
+    let scale = grid.dy / PI;
+    let c00 = table.get(0, 0);
+    for i in 0..grid.rows {
+        for pass in [Kind::Diaphragm, Kind::Wing, Kind::Wake] {
+            for j in 0..grid.columns {
+                let k = i * grid.columns + j;
+                let cell = grid.cells[k];
+                if cell.kind != pass {
+                    continue;
+                }
+                let f = cell.fraction;
+                let known = [1.0, (cell.x_wing - x_mac) / mac].map(|w| w * f);
+                match pass {
+                    Kind::Diaphragm => {
+                        let before = upstream(grid, table, &source, i, j);
+                        for r in 0..2 {
+                            source[k][r] = -before[r] / c00;
+                            wash[k][r] = (source[k][r] - known[r]) / (1.0 - f).max(1e-9);
+                        }
+                    }
+                    Kind::Wing => {
+                        let beside = neighbour_wash(grid, &wash, i, j);
+                        let before = upstream(grid, table, &source, i, j);
+                        for r in 0..2 {
+                            source[k][r] = known[r] + beside[r] * (1.0 - f);
+                            phi[k][r] = (before[r] + source[k][r] * c00) * scale;
+                        }
+                    }
+                    Kind::Wake => {
+                        source[k] = known.map(|v| Complex64::new(v, 0.0));
+                    }
+                }
+            }
+        }
+    }
+    phi
+}
+
+/// The diaphragm normalwash beside a cut wing box: of the box outboard in
+/// its row, else of the box ahead, else none.
+fn neighbour_wash(grid: &Grid, wash: &[Pair], i: usize, j: usize) -> Pair {
+    let diaphragm = |ii: usize, jj: usize| grid.cells[ii * grid.columns + jj].kind == Kind::Diaphragm;
+    if j + 1 < grid.columns && diaphragm(i, j + 1) {
+        wash[i * grid.columns + j + 1]
+    } else if i > 0 && diaphragm(i - 1, j) {
+        wash[(i - 1) * grid.columns + j]
+    } else {
+        [Complex64::default(); 2]
+    }
+}
+
+/// Σ sources × C over the earlier rows, with the mirror image of each box
+/// (the half wing's symmetric motion).
+fn upstream(grid: &Grid, table: &Influence, source: &[Pair], i: usize, j: usize) -> Pair {
+    let mut sum = [Complex64::default(); 2];
+    for ip in 0..i {
+        let m = i - ip;
+        let row = &source[ip * grid.columns..(ip + 1) * grid.columns];
+        let lo = j.saturating_sub(m);
+        let hi = (j + m).min(grid.columns - 1);
+        for (jp, s) in row.iter().enumerate().take(hi + 1).skip(lo) {
+            let c = table.get(m, j.abs_diff(jp));
+            sum[0] += s[0] * c;
+            sum[1] += s[1] * c;
+        }
+        // mirror images at −j′, j′ ≥ 1: offset j + j′ ≤ m
+        for (jp, s) in row.iter().enumerate().take(m.saturating_sub(j) + 1).skip(1) {
+            let c = table.get(m, j + jp);
+            sum[0] += s[0] * c;
+            sum[1] += s[1] * c;
+        }
+    }
+    sum
+}
+
+/// C_L and C_m (about the M.A.C.'s leading edge, on c̄) of the two
+/// potentials, at κ = ω/V.
+pub fn loads(wing: &Trapezoid, grid: &Grid, phi: &[Pair], kappa: f64) -> [Pair; 2] {
+    let (x_mac, mac) = (wing.x_mac(), wing.mac());
+    let half_area = 0.5 * wing.area();
+    let ik = Complex64::new(0.0, kappa);
+    let mut out = [[Complex64::default(); 2]; 2];
+    for j in 0..grid.strips {
+        let width = if j == 0 { 0.5 * grid.dy } else { grid.dy };
+        let y = j as f64 * grid.dy;
+        let (le, te) = (wing.leading_edge_at(y), wing.leading_edge_at(y) + wing.chord_at(y));
+        for r in 0..2 {
+            let [i0, i1, phi_te] = strip(grid, phi, j, r, le, te, x_mac);
+            out[0][r] += (ik * i0 + phi_te) * (4.0 * width / half_area);
+            out[1][r] -= (ik * i1 + phi_te * (te - x_mac) - i0) * (4.0 * width / (half_area * mac));
+        }
+    }
+    out
+}
+
+/// ∫φ̂ dx, ∫(x − x̄)φ̂ dx and φ̂_TE along strip j, right-hand side r.
+fn strip(grid: &Grid, phi: &[Pair], j: usize, r: usize, le: f64, te: f64, x_mac: f64) -> [Complex64; 3] {
+    let zero = Complex64::default();
+    let mut prev = (le, zero);
+    let mut last = None;
+    let (mut i0, mut i1) = (zero, zero);
+    for i in 0..grid.rows {
+        let k = i * grid.columns + j;
+        if grid.cells[k].kind != Kind::Wing {
+            continue;
+        }
+        let here = (grid.centre(i, j).0, phi[k][r]);
+        let [a, b] = segment(prev, here, x_mac);
+        i0 += a;
+        i1 += b;
+        last = Some(prev);
+        prev = here;
+    }
+    let Some(before) = last else {
+        return [zero; 3];
+    };
+    let slope = (prev.1 - before.1) / (prev.0 - before.0);
+    let end = (te, prev.1 + slope * (te - prev.0));
+    let [a, b] = segment(prev, end, x_mac);
+    [i0 + a, i1 + b, end.1]
+}
+
+/// ∫φ dx and ∫(x − x̄)φ dx over one segment of a piecewise-linear φ (exact).
+fn segment(p: (f64, Complex64), q: (f64, Complex64), x_mac: f64) -> [Complex64; 2] {
+    let h = q.0 - p.0;
+    let (g0, g1) = (p.0 - x_mac, q.0 - x_mac);
+    let i0 = (p.1 + q.1) * (0.5 * h);
+    let i1 = (p.1 * (g0 / 3.0 + g1 / 6.0) + q.1 * (g0 / 6.0 + g1 / 3.0)) * h;
+    [i0, i1]
+}
