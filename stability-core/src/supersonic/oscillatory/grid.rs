@@ -21,7 +21,11 @@ use arrayvec::ArrayVec;
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Kind {
     Wing,
+    /// Off the wing, in the disturbed region: normalwash unknown, φ = 0.
     Diaphragm,
+    /// Off the wing, outside every aft Mach cone of the wing (ahead of a
+    /// supersonic edge): undisturbed, normalwash zero.
+    Undisturbed,
     Wake,
 }
 
@@ -93,11 +97,27 @@ impl Grid {
     }
 }
 
+/// Where the disturbed region begins at station y ≥ 0: the least
+/// LE(η) + β|y − η| over the leading edge |η| ≤ s (the most forward wing
+/// point whose aft Mach cone holds (x, y); piecewise linear in η, so a
+/// vertex: η = 0, min(y, s) or s).
+fn disturbed_from(w: &Trapezoid, beta: f64, y: f64) -> f64 {
+    [0.0, y.min(w.semi_span), w.semi_span]
+        .iter()
+        .map(|&eta| w.leading_edge_at(eta) + beta * (y - eta).abs())
+        .fold(f64::INFINITY, f64::min)
+}
+
 fn cell(w: &Trapezoid, edges: &[(f64, f64, f64); 3], dx: f64, dy: f64, i: usize, j: usize) -> Cell {
+    let beta = dx / dy;
     let (xc, yc) = ((i as f64 + 0.5) * dx, j as f64 * dy);
     let le = w.leading_edge_at(yc);
     let kind = if yc > w.semi_span || xc < le {
-        Kind::Diaphragm
+        if xc >= disturbed_from(w, beta, yc) {
+            Kind::Diaphragm
+        } else {
+            Kind::Undisturbed
+        }
     } else if xc > le + w.chord_at(yc) {
         Kind::Wake
     } else {

@@ -4,9 +4,10 @@
 //! cone and its own forward half, so the potential is swept row by row
 //! (Pines, Dugundji & Neuringer 1955): in each row the diaphragm boxes
 //! first, whose normalwash makes the potential at their centres vanish,
-//! then the wing boxes, whose potential follows. A box cut by an edge
-//! carries f·w̄ on its wing part and (1 − f) times its diaphragm
-//! neighbour's normalwash on the rest.
+//! then the wing boxes, whose potential follows. The wing's own part of
+//! every potential is exact ([`super::direct`]); the boxes carry the
+//! diaphragm's normalwash on the part of their area off the wing (a wing
+//! box cut by a subsonic edge: its diaphragm neighbour's normalwash).
 //!
 //! The loads, by parts along each strip (ΔC_p = 4(iκφ̂ + ∂φ̂/∂x),
 //! φ̂ = φ/V, κ = ω/V, φ̂ = 0 on the leading edge):
@@ -16,6 +17,7 @@
 //! extrapolated linearly to the trailing edge.
 
 use super::grid::{Grid, Kind};
+use super::direct::{Flow, wing_potential};
 use super::influence::Influence;
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
@@ -25,43 +27,44 @@ use std::f64::consts::PI;
 pub type Pair = [Complex64; 2];
 
 /// The potentials φ̂ at the box centres (zero off the wing) for the two
-/// normalwash distributions.
-pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence) -> Vec<Pair> {
+/// normalwash distributions: the wing's own part exactly
+/// ([`super::direct`]), the diaphragm's by its boxes.
+pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> Vec<Pair> {
     let n = grid.cells.len();
-    let mut source = vec![[Complex64::default(); 2]; n];
-    let mut wash = vec![[Complex64::default(); 2]; n];
-    let mut phi = vec![[Complex64::default(); 2]; n];
-    let (x_mac, mac) = (wing.x_mac(), wing.mac());
+    let zero = [Complex64::default(); 2];
+    let mut source = vec![zero; n];
+    let mut wash = vec![zero; n];
+    let mut phi = vec![zero; n];
     let scale = grid.dy / PI;
     let c00 = table.get(0, 0);
+    let mut any_diaphragm = false;
     for i in 0..grid.rows {
-        for pass in [Kind::Diaphragm, Kind::Wing, Kind::Wake] {
+        for pass in [Kind::Diaphragm, Kind::Wing] {
             for j in 0..grid.columns {
                 let k = i * grid.columns + j;
                 let cell = grid.cells[k];
                 if cell.kind != pass {
                     continue;
                 }
-                let f = cell.fraction;
-                let known = [1.0, (cell.x_wing - x_mac) / mac].map(|w| w * f);
-                match pass {
-                    Kind::Diaphragm => {
-                        let before = upstream(grid, table, &source, i, j);
-                        for r in 0..2 {
-                            source[k][r] = -before[r] / c00;
-                            wash[k][r] = (source[k][r] - known[r]) / (1.0 - f).max(1e-9);
-                        }
+                let (x, y) = grid.centre(i, j);
+                let own = wing_potential(wing, flow, x, y);
+                let rest = 1.0 - cell.fraction;
+                let before = if any_diaphragm {
+                    upstream(grid, table, &source, i, j)
+                } else {
+                    zero
+                };
+                if pass == Kind::Diaphragm {
+                    for r in 0..2 {
+                        source[k][r] = -(before[r] + own[r] / scale) / c00;
+                        wash[k][r] = source[k][r] / rest.max(1e-9);
                     }
-                    Kind::Wing => {
-                        let beside = neighbour_wash(grid, &wash, i, j);
-                        let before = upstream(grid, table, &source, i, j);
-                        for r in 0..2 {
-                            source[k][r] = known[r] + beside[r] * (1.0 - f);
-                            phi[k][r] = (before[r] + source[k][r] * c00) * scale;
-                        }
-                    }
-                    Kind::Wake => {
-                        source[k] = known.map(|v| Complex64::new(v, 0.0));
+                    any_diaphragm |= source[k].iter().any(|s| s.norm() > 0.0);
+                } else {
+                    let beside = neighbour_wash(grid, &wash, i, j);
+                    for r in 0..2 {
+                        source[k][r] = beside[r] * rest;
+                        phi[k][r] = own[r] + (before[r] + source[k][r] * c00) * scale;
                     }
                 }
             }

@@ -50,6 +50,7 @@
 //! 10⁻⁸).
 
 pub mod cache;
+pub mod direct;
 pub mod grid;
 pub mod influence;
 pub mod march;
@@ -188,7 +189,14 @@ fn solve_grid(wing: &Trapezoid, mach: f64, beta: f64, omega_bar: f64, strips: us
     let kappa = omega_bar / wing.mac();
     let (sigma, nu) = (kappa * mach * mach / (beta * beta), kappa * mach / (beta * beta));
     let table = influence::Influence::new(grid.rows, sigma * grid.dx, nu * grid.dx);
-    let phi = march::march(wing, &grid, &table);
+    let flow = direct::Flow {
+        beta,
+        sigma,
+        nu,
+        x_mac: wing.x_mac(),
+        mac: wing.mac(),
+    };
+    let phi = march::march(wing, &grid, &table, &flow);
     let [lift, moment]: [[Complex64; 2]; 2] = march::loads(wing, &grid, &phi, kappa);
     Solution {
         mach,
