@@ -27,12 +27,19 @@ static SOLVES: AtomicUsize = AtomicUsize::new(0);
 /// The solution of `wing` at (`mach`, `omega_bar`), from the cache or
 /// solved into it.
 pub fn solution(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<Solution, MachBoxError> {
-    let omega_bar = if omega_bar.is_finite() && omega_bar < OMEGA_BAR_QUASI_STEADY && omega_bar >= 0.0 {
-        0.0
-    } else {
-        omega_bar
-    };
-    let shape = [wing.root_chord, wing.tip_chord, wing.semi_span, wing.sweep_le].map(f64::to_bits);
+    let omega_bar =
+        if omega_bar.is_finite() && omega_bar < OMEGA_BAR_QUASI_STEADY && omega_bar >= 0.0 {
+            0.0
+        } else {
+            omega_bar
+        };
+    let shape = [
+        wing.root_chord,
+        wing.tip_chord,
+        wing.semi_span,
+        wing.sweep_le,
+    ]
+    .map(f64::to_bits);
     let key = (shape, mach.to_bits(), omega_bar.to_bits());
     let read = map().read().unwrap_or_else(PoisonError::into_inner);
     if let Some(done) = read.get(&key).and_then(|slot| slot.get()) {
@@ -60,6 +67,9 @@ pub fn solves() -> usize {
 
 /// Empties the cache (and zeroes [`solves`]).
 pub fn clear() {
-    map().write().unwrap_or_else(PoisonError::into_inner).clear();
+    map()
+        .write()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clear();
     SOLVES.store(0, Ordering::SeqCst);
 }

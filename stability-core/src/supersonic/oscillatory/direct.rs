@@ -74,8 +74,7 @@ pub fn wing_potential(w: &Trapezoid, f: &Flow, x: f64, y: f64) -> Pair {
     }
     // y ± r = ±s on the tip
     cuts.extend([x - b * (s - y), x - b * (s + y), x - b * (y - s)]);
-    let mut cuts: arrayvec::ArrayVec<f64, 12> =
-        cuts.into_iter().map(|c| c.clamp(0.0, x)).collect();
+    let mut cuts: arrayvec::ArrayVec<f64, 12> = cuts.into_iter().map(|c| c.clamp(0.0, x)).collect();
     cuts.sort_by(f64::total_cmp);
     let mut sum = zero;
     for pair in cuts.windows(2) {

@@ -145,13 +145,16 @@ mod tests {
     fn an_oscillatory_row_is_the_bessel_kernel() {
         let (s, nu) = (0.3, 0.4);
         let table = Influence::new(3, s, nu);
-        let row: Complex64 = (-3i64..=3).map(|n| table.get(3, n.unsigned_abs() as usize)).sum();
+        let row: Complex64 = (-3i64..=3)
+            .map(|n| table.get(3, n.unsigned_abs() as usize))
+            .sum();
         let j0 = |z: f64| {
-            (0..30).fold((0.0, 1.0), |(sum, term), k| {
-                let next = -term * z * z / (4.0 * ((k + 1) * (k + 1)) as f64);
-                (sum + term, next)
-            })
-            .0
+            (0..30)
+                .fold((0.0, 1.0), |(sum, term), k| {
+                    let next = -term * z * z / (4.0 * ((k + 1) * (k + 1)) as f64);
+                    (sum + term, next)
+                })
+                .0
         };
         // Simpson over [2.5, 3.5] with 200 intervals
         let n = 200;
@@ -159,7 +162,13 @@ mod tests {
         let want: Complex64 = (0..=n)
             .map(|k| {
                 let x = 2.5 + k as f64 * h;
-                let w = if k == 0 || k == n { 1.0 } else if k % 2 == 1 { 4.0 } else { 2.0 };
+                let w = if k == 0 || k == n {
+                    1.0
+                } else if k % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
                 Complex64::from_polar(1.0, -s * x) * (w * h / 3.0 * PI * j0(nu * x))
             })
             .sum();

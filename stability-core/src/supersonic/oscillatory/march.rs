@@ -16,8 +16,8 @@
 //! through the wing boxes' centres, from zero at the leading edge and
 //! extrapolated linearly to the trailing edge.
 
-use super::grid::{Grid, Kind};
 use super::direct::{Flow, wing_potential};
+use super::grid::{Grid, Kind};
 use super::influence::Influence;
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
@@ -76,7 +76,8 @@ pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> V
 /// The diaphragm normalwash beside a cut wing box: of the box outboard in
 /// its row, else of the box ahead, else none.
 fn neighbour_wash(grid: &Grid, wash: &[Pair], i: usize, j: usize) -> Pair {
-    let diaphragm = |ii: usize, jj: usize| grid.cells[ii * grid.columns + jj].kind == Kind::Diaphragm;
+    let diaphragm =
+        |ii: usize, jj: usize| grid.cells[ii * grid.columns + jj].kind == Kind::Diaphragm;
     if j + 1 < grid.columns && diaphragm(i, j + 1) {
         wash[i * grid.columns + j + 1]
     } else if i > 0 && diaphragm(i - 1, j) {
@@ -120,7 +121,10 @@ pub fn loads(wing: &Trapezoid, grid: &Grid, phi: &[Pair], kappa: f64) -> [Pair; 
     for j in 0..grid.strips {
         let width = if j == 0 { 0.5 * grid.dy } else { grid.dy };
         let y = j as f64 * grid.dy;
-        let (le, te) = (wing.leading_edge_at(y), wing.leading_edge_at(y) + wing.chord_at(y));
+        let (le, te) = (
+            wing.leading_edge_at(y),
+            wing.leading_edge_at(y) + wing.chord_at(y),
+        );
         for r in 0..2 {
             let [i0, i1, phi_te] = strip(grid, phi, j, r, le, te, x_mac);
             out[0][r] += (ik * i0 + phi_te) * (4.0 * width / half_area);
@@ -131,7 +135,15 @@ pub fn loads(wing: &Trapezoid, grid: &Grid, phi: &[Pair], kappa: f64) -> [Pair; 
 }
 
 /// ∫φ̂ dx, ∫(x − x̄)φ̂ dx and φ̂_TE along strip j, right-hand side r.
-fn strip(grid: &Grid, phi: &[Pair], j: usize, r: usize, le: f64, te: f64, x_mac: f64) -> [Complex64; 3] {
+fn strip(
+    grid: &Grid,
+    phi: &[Pair],
+    j: usize,
+    r: usize,
+    le: f64,
+    te: f64,
+    x_mac: f64,
+) -> [Complex64; 3] {
     let zero = Complex64::default();
     let mut prev = (le, zero);
     let mut last = None;
