@@ -243,6 +243,15 @@ fn what_it_refuses() {
         richardson: true,
     };
     assert_eq!(solve(&d, 1.5, 0.1, odd), Err(MachBoxError::Strips(33)));
+    // near M = 1 the default grid is too long; for_wing shortens it
+    // (45° delta, M = 1.05: β = 0.32, 128 strips would make 399 rows)
+    let e = solve(&d, 1.05, 0.1, MachBoxSpec::default()).unwrap_err();
+    assert!(
+        matches!(e, MachBoxError::TooManyRows { rows: 399, .. }),
+        "{e}"
+    );
+    let spec = MachBoxSpec::for_wing(&d, 1.05);
+    assert_eq!(spec.strips, 96);
     // trailing edge swept 60°: subsonic below M = 1/cos 60° = 2
     let swept_te = Trapezoid::new(1.0, 1.0, 1.0, 60f64.to_radians()).unwrap();
     let e = solve(&swept_te, 1.5, 0.1, MachBoxSpec::default()).unwrap_err();
@@ -262,5 +271,9 @@ fn the_cache_solves_once() {
     let b = cache::solution(&d, 2.0, 0.3).unwrap();
     assert_eq!(a, b);
     assert_eq!(cache::solves(), before + 1);
-    assert_eq!(a, solve(&d, 2.0, 0.3, MachBoxSpec::default()).unwrap());
+    assert_eq!(
+        a,
+        solve(&d, 2.0, 0.3, MachBoxSpec::for_wing(&d, 2.0)).unwrap()
+    );
+    assert_eq!(MachBoxSpec::for_wing(&d, 2.0), MachBoxSpec::default());
 }

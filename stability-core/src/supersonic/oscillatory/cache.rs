@@ -1,7 +1,7 @@
 //! One Mach box solve per (wing, M, ω̄) per process, as the doublet
 //! lattice's [`crate::lifting_surface::cache`]: keyed by the wing's shape
 //! (a [`Trapezoid`] of root chord 1, [`crate::lifting_surface::cache::unit_wing`])
-//! and the bits of M and ω̄, at the default grid ([`MachBoxSpec::default`]).
+//! and the bits of M and ω̄, on the grid [`MachBoxSpec::for_wing`].
 //! A hit takes a read lock and copies the [`Solution`]: no allocation.
 
 use super::{MachBoxError, MachBoxSpec, OMEGA_BAR_QUASI_STEADY, solve};
@@ -55,7 +55,7 @@ pub fn solution(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<Solution,
     };
     slot.get_or_init(|| {
         SOLVES.fetch_add(1, Ordering::SeqCst);
-        solve(wing, mach, omega_bar, MachBoxSpec::default())
+        solve(wing, mach, omega_bar, MachBoxSpec::for_wing(wing, mach))
     })
     .clone()
 }
