@@ -27,12 +27,11 @@ static SOLVES: AtomicUsize = AtomicUsize::new(0);
 /// The solution of `wing` at (`mach`, `omega_bar`), from the cache or
 /// solved into it.
 pub fn solution(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<Solution, MachBoxError> {
-    let omega_bar =
-        if omega_bar.is_finite() && omega_bar < OMEGA_BAR_QUASI_STEADY && omega_bar >= 0.0 {
-            0.0
-        } else {
-            omega_bar
-        };
+    let omega_bar = if (0.0..OMEGA_BAR_QUASI_STEADY).contains(&omega_bar) {
+        0.0
+    } else {
+        omega_bar
+    };
     let shape = [
         wing.root_chord,
         wing.tip_chord,

@@ -117,7 +117,7 @@ pub fn loads(wing: &Trapezoid, grid: &Grid, phi: &[Pair], kappa: f64) -> [Pair; 
     let (x_mac, mac) = (wing.x_mac(), wing.mac());
     let half_area = 0.5 * wing.area();
     let ik = Complex64::new(0.0, kappa);
-    let mut out = [[Complex64::default(); 2]; 2];
+    let (mut lift, mut moment) = ([Complex64::default(); 2], [Complex64::default(); 2]);
     for j in 0..grid.strips {
         let width = if j == 0 { 0.5 * grid.dy } else { grid.dy };
         let y = j as f64 * grid.dy;
@@ -125,13 +125,13 @@ pub fn loads(wing: &Trapezoid, grid: &Grid, phi: &[Pair], kappa: f64) -> [Pair; 
             wing.leading_edge_at(y),
             wing.leading_edge_at(y) + wing.chord_at(y),
         );
-        for r in 0..2 {
+        for (r, (l, m)) in lift.iter_mut().zip(moment.iter_mut()).enumerate() {
             let [i0, i1, phi_te] = strip(grid, phi, j, r, le, te, x_mac);
-            out[0][r] += (ik * i0 + phi_te) * (4.0 * width / half_area);
-            out[1][r] -= (ik * i1 + phi_te * (te - x_mac) - i0) * (4.0 * width / (half_area * mac));
+            *l += (ik * i0 + phi_te) * (4.0 * width / half_area);
+            *m -= (ik * i1 + phi_te * (te - x_mac) - i0) * (4.0 * width / (half_area * mac));
         }
     }
-    out
+    [lift, moment]
 }
 
 /// ∫φ̂ dx, ∫(x − x̄)φ̂ dx and φ̂_TE along strip j, right-hand side r.

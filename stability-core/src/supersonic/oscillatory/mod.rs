@@ -181,7 +181,7 @@ pub fn solve(
     let beta = check(wing, mach, omega_bar)?;
     let n = spec.strips;
     let multiple = if spec.richardson { 2 } else { 1 };
-    if !(4..=MAX_STRIPS).contains(&n) || n % multiple != 0 {
+    if !(4..=MAX_STRIPS).contains(&n) || !n.is_multiple_of(multiple) {
         return Err(MachBoxError::Strips(n));
     }
     let r = rows(wing, beta, n);
