@@ -35,6 +35,7 @@
 pub mod coefficients;
 pub mod eq36;
 pub mod evvard;
+pub mod oscillatory;
 pub mod quadrature;
 pub mod source;
 pub mod strip;
