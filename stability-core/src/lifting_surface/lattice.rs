@@ -293,7 +293,7 @@ pub struct Lattice {
 /// One lattice: its boxes, strip by strip (`chordwise` to a strip, from the
 /// leading edge).
 #[derive(Debug, Clone, PartialEq)]
-pub(super) struct Grid {
+pub(crate) struct Grid {
     pub boxes: Vec<Box>,
     pub chordwise: usize,
 }
@@ -337,7 +337,7 @@ impl Lattice {
     }
 
     /// Every lattice solved, finest first.
-    pub(super) fn grids(&self) -> &[Grid] {
+    pub(crate) fn grids(&self) -> &[Grid] {
         &self.grids
     }
 }
