@@ -98,9 +98,12 @@ pub fn steady(line: &DoubletLine, x: f64, y: f64, z0: f64, beta: f64) -> f64 {
 pub struct Radial2 {
     r: f64,
     k1: f64,
-    p: Vec<f64>,
-    w: Vec<Complex64>,
-    v: Vec<Complex64>,
+    /// e^{−pₙu} = qₙ from q₀ by squaring (Desmarais: pₙ = 2ⁿ⁺¹b) or by
+    /// powers (Laschka: pₙ = (n + 1)c); Laschka's eleven terms padded.
+    squaring: bool,
+    p0: f64,
+    w: [Complex64; 12],
+    v: [Complex64; 12],
     re_at_zero: f64,
     /// The planar kernel's factors at the same r (for K₁).
     radial: Radial,
@@ -109,28 +112,29 @@ pub struct Radial2 {
 impl Radial2 {
     pub fn new(r: f64, flow: &KernelFlow) -> Radial2 {
         let k1 = flow.kappa * r;
-        let (a, p): (Vec<f64>, Vec<f64>) = match flow.approx {
-            I1Approximation::Laschka => LASCHKA_A
-                .iter()
-                .enumerate()
-                .map(|(n, &a)| (a, (n + 1) as f64 * LASCHKA_C))
-                .unzip(),
-            _ => DESMARAIS_A
-                .iter()
-                .enumerate()
-                .map(|(n, &a)| (a, 2f64.powi(n as i32 + 1) * DESMARAIS_B))
-                .unzip(),
-        };
-        let w: Vec<Complex64> = a
-            .iter()
-            .zip(&p)
-            .map(|(&a, &p)| a / Complex64::new(p, k1))
-            .collect();
-        let v = w.iter().zip(&p).map(|(w, &p)| w / Complex64::new(p, k1)).collect();
+        let mut a = [0.0; 12];
+        let mut p = [0.0; 12];
+        let squaring = flow.approx != I1Approximation::Laschka;
+        if squaring {
+            a = DESMARAIS_A;
+            let mut pn = 2.0 * DESMARAIS_B;
+            for slot in &mut p {
+                *slot = pn;
+                pn *= 2.0;
+            }
+        } else {
+            a[..LASCHKA_A.len()].copy_from_slice(&LASCHKA_A);
+            for (n, slot) in p.iter_mut().enumerate() {
+                *slot = (n + 1) as f64 * LASCHKA_C;
+            }
+        }
+        let w: [Complex64; 12] = std::array::from_fn(|n| a[n] / Complex64::new(p[n], k1));
+        let v: [Complex64; 12] = std::array::from_fn(|n| w[n] / Complex64::new(p[n], k1));
         let mut out = Radial2 {
             r,
             k1,
-            p,
+            squaring,
+            p0: p[0],
             w,
             v,
             re_at_zero: 0.0,
@@ -144,10 +148,12 @@ impl Radial2 {
     fn j2(&self, u: f64) -> Complex64 {
         let k = self.k1;
         let (mut s0, mut s1) = (Complex64::new(0.0, 0.0), Complex64::new(0.0, 0.0));
-        for ((&p, w), v) in self.p.iter().zip(&self.w).zip(&self.v) {
-            let q = (-p * u).exp();
+        let step = (-self.p0 * u).exp();
+        let mut q = step;
+        for (w, v) in self.w.iter().zip(&self.v) {
             s0 += w * q;
             s1 += (v + w * u) * q;
+            q = if self.squaring { q * q } else { q * step };
         }
         let q3 = (1.0 + u * u).powf(1.5);
         let g = one_minus_u_over_root(u);
