@@ -125,11 +125,23 @@ fn configuration(name: &str) -> ConfigurationLattice {
 #[divan::bench(args = CONFIGURATIONS, sample_count = 10)]
 fn configuration_harmonic(bencher: Bencher, name: &str) {
     let l = configuration(name);
-    bencher.bench_local(|| black_box(&l).solve(0.5, black_box(0.5)).unwrap().total.lift_alpha);
+    bencher.bench_local(|| {
+        black_box(&l)
+            .solve(0.5, black_box(0.5))
+            .unwrap()
+            .total
+            .lift_alpha
+    });
 }
 
 #[divan::bench(args = CONFIGURATIONS, sample_count = 10)]
 fn configuration_quasi_steady(bencher: Bencher, name: &str) {
     let l = configuration(name);
-    bencher.bench_local(|| black_box(&l).solve(0.5, black_box(0.0)).unwrap().total.lift_alpha);
+    bencher.bench_local(|| {
+        black_box(&l)
+            .solve(0.5, black_box(0.0))
+            .unwrap()
+            .total
+            .lift_alpha
+    });
 }

@@ -25,12 +25,13 @@ use stability_core::geometry::Trapezoid;
 
 #[test]
 fn steady_derivatives_agree_with_avl() {
-    let avl: Value =
-        serde_json::from_str(include_str!("fixtures/avl_configuration.json")).unwrap();
+    let avl: Value = serde_json::from_str(include_str!("fixtures/avl_configuration.json")).unwrap();
     let w = &avl["wing"];
     let g = |v: &Value, k: &str| v[k].as_f64().unwrap();
     let wing = Trapezoid::new(1.0, 0.0, g(w, "semi_span"), g(w, "sweep_deg").to_radians()).unwrap();
-    assert!((wing.mac() - g(w, "mac")).abs() < 1e-12 && (wing.x_mac() - g(w, "x_mac")).abs() < 1e-12);
+    assert!(
+        (wing.mac() - g(w, "mac")).abs() < 1e-12 && (wing.x_mac() - g(w, "x_mac")).abs() < 1e-12
+    );
     let s = &avl["surface"];
     let shape = Trapezoid::new(
         g(s, "root_chord"),
@@ -48,7 +49,13 @@ fn steady_derivatives_agree_with_avl() {
             "tailplane" => SurfaceKind::Tailplane,
             _ => SurfaceKind::Foreplane,
         };
-        let surface = Surface { kind, shape, x: g(layout, "x"), z: g(layout, "z"), incidence: 0.0 };
+        let surface = Surface {
+            kind,
+            shape,
+            x: g(layout, "x"),
+            z: g(layout, "z"),
+            incidence: 0.0,
+        };
         let cfg = Configuration {
             tailplane: (kind == SurfaceKind::Tailplane).then_some(surface),
             foreplane: (kind == SurfaceKind::Foreplane).then_some(surface),
@@ -56,7 +63,12 @@ fn steady_derivatives_agree_with_avl() {
         };
         for run in layout["runs"].as_array().unwrap() {
             let r = |k: &str| run[k].as_f64().unwrap();
-            let d = cfg.solve_subsonic(r("mach"), 0.0).unwrap().total.derivatives(0.0, 0.0).unwrap();
+            let d = cfg
+                .solve_subsonic(r("mach"), 0.0)
+                .unwrap()
+                .total
+                .derivatives(0.0, 0.0)
+                .unwrap();
             let hn_avl = (r("Xnp") - wing.x_mac()) / wing.mac();
             let pairs = [
                 (d.lift_slope, r("CLa")),
@@ -75,8 +87,16 @@ fn steady_derivatives_agree_with_avl() {
                 ours_coplanar = d.lift_slope;
             }
             for (k, (ours, theirs)) in pairs.into_iter().enumerate() {
-                let err = if k == 1 { (ours - theirs).abs() } else { (ours / theirs - 1.0).abs() };
-                let w = if is_coplanar { &mut coplanar } else { &mut worst };
+                let err = if k == 1 {
+                    (ours - theirs).abs()
+                } else {
+                    (ours / theirs - 1.0).abs()
+                };
+                let w = if is_coplanar {
+                    &mut coplanar
+                } else {
+                    &mut worst
+                };
                 w[k] = w[k].max(err);
             }
         }
@@ -88,10 +108,16 @@ fn steady_derivatives_agree_with_avl() {
         100.0 * worst[2],
         100.0 * worst[3]
     );
-    assert!(worst[0] < 0.03 && worst[2] < 0.03 && worst[3] < 0.03, "{worst:?}");
+    assert!(
+        worst[0] < 0.03 && worst[2] < 0.03 && worst[3] < 0.03,
+        "{worst:?}"
+    );
     assert!(worst[1] < 0.01, "{worst:?}");
     println!("coplanar: {coplanar:?}");
-    assert!(coplanar[0] < 0.04 && coplanar[2] < 0.04 && coplanar[3] < 0.04, "{coplanar:?}");
+    assert!(
+        coplanar[0] < 0.04 && coplanar[2] < 0.04 && coplanar[3] < 0.04,
+        "{coplanar:?}"
+    );
     assert!(coplanar[1] < 0.05, "{coplanar:?}");
     let avl_sequence: Vec<f64> = avl["coplanar_convergence"]
         .as_array()
@@ -99,5 +125,10 @@ fn steady_derivatives_agree_with_avl() {
         .iter()
         .map(|c| g(c, "CLa"))
         .collect();
-    assert!(avl_sequence.windows(2).all(|p| p[1] < p[0] && p[1] > ours_coplanar), "{avl_sequence:?}");
+    assert!(
+        avl_sequence
+            .windows(2)
+            .all(|p| p[1] < p[0] && p[1] > ours_coplanar),
+        "{avl_sequence:?}"
+    );
 }

@@ -16,11 +16,24 @@ use stability_core::configuration::{Configuration, Surface, SurfaceKind};
 use stability_core::geometry::Trapezoid;
 use stability_core::lifting_surface::{LatticeSpec, LineRule, Solution, Spacing};
 
-const KEYS: [&str; 6] =
-    ["lift_alpha", "moment_alpha", "lift_alphadot", "moment_alphadot", "lift_q", "moment_q"];
+const KEYS: [&str; 6] = [
+    "lift_alpha",
+    "moment_alpha",
+    "lift_alphadot",
+    "moment_alphadot",
+    "lift_q",
+    "moment_q",
+];
 
 fn numbers(s: &Solution) -> [f64; 6] {
-    [s.lift_alpha, s.moment_alpha, s.lift_alphadot, s.moment_alphadot, s.lift_q, s.moment_q]
+    [
+        s.lift_alpha,
+        s.moment_alpha,
+        s.lift_alphadot,
+        s.moment_alphadot,
+        s.lift_q,
+        s.moment_q,
+    ]
 }
 
 #[test]
@@ -44,8 +57,14 @@ fn the_oscillatory_solution_agrees_with_panelaero() {
         z: g(t, "z"),
         incidence: 0.0,
     };
-    let cfg = Configuration { tailplane: Some(tail), ..Configuration::wing_alone(wing) };
-    let (nc, ns) = (fx["chordwise"].as_u64().unwrap() as usize, fx["spanwise"].as_u64().unwrap() as usize);
+    let cfg = Configuration {
+        tailplane: Some(tail),
+        ..Configuration::wing_alone(wing)
+    };
+    let (nc, ns) = (
+        fx["chordwise"].as_u64().unwrap() as usize,
+        fx["spanwise"].as_u64().unwrap() as usize,
+    );
     let lattice = ConfigurationLattice::with_spec(&cfg, |_| {
         LatticeSpec::new(nc, ns, Spacing::Auto).with_line_rule(LineRule::Quartic)
     })

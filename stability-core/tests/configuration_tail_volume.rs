@@ -33,10 +33,24 @@ fn a_distant_tail_follows_the_tail_volume_formulas() {
     let shape = Trapezoid::new(0.3, 0.15, 0.35, 30f64.to_radians()).unwrap();
     let h = 0.25;
     for (mach, z) in [(0.0, 0.0), (0.0, 0.3), (0.6, 0.0)] {
-        let tail = Surface { kind: SurfaceKind::Tailplane, shape, x: 3.0, z, incidence: 0.0 };
-        let cfg = Configuration { tailplane: Some(tail), ..Configuration::wing_alone(wing) };
+        let tail = Surface {
+            kind: SurfaceKind::Tailplane,
+            shape,
+            x: 3.0,
+            z,
+            incidence: 0.0,
+        };
+        let cfg = Configuration {
+            tailplane: Some(tail),
+            ..Configuration::wing_alone(wing)
+        };
         let s = cfg.solve_subsonic(mach, 0.0).unwrap();
-        let t = s.parts.iter().find(|p| p.part == Part::Tailplane).unwrap().solution;
+        let t = s
+            .parts
+            .iter()
+            .find(|p| p.part == Part::Tailplane)
+            .unwrap()
+            .solution;
         let d = t.derivatives(h, 0.0).unwrap();
         // the isolated tail's lift slope on its own area
         let a_t = Lattice::new(&shape, LatticeSpec::for_wing(&shape))
@@ -58,6 +72,10 @@ fn a_distant_tail_follows_the_tail_volume_formulas() {
         );
         assert!(l > 3.0 && deps > 0.1 && deps < 0.9);
         assert!((d.m_q / m_q - 1.0).abs() < 0.10, "m_q: {} {m_q}", d.m_q);
-        assert!((d.m_wdot / m_wdot - 1.0).abs() < 0.10, "m_ẇ: {} {m_wdot}", d.m_wdot);
+        assert!(
+            (d.m_wdot / m_wdot - 1.0).abs() < 0.10,
+            "m_ẇ: {} {m_wdot}",
+            d.m_wdot
+        );
     }
 }

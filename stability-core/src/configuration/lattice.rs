@@ -55,9 +55,7 @@ use crate::geometry::Trapezoid;
 use crate::lifting_surface::derivatives::Extrapolate;
 use crate::lifting_surface::kernel::KernelFlow;
 use crate::lifting_surface::solve::{check_mach, complex_solve};
-use crate::lifting_surface::{
-    LatticeSpec, LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution,
-};
+use crate::lifting_surface::{LatticeSpec, LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution};
 use layout::{Block, Member};
 use nalgebra::{DMatrix, Dyn, LU};
 
@@ -264,9 +262,7 @@ impl ConfigurationLattice {
             omega_bar: 0.0,
         };
         let lu: LU<f64, Dyn, Dyn> = assemble::steady(blocks, beta2.sqrt()).lu();
-        let f0 = lu
-            .solve(&self.normalwash(blocks))
-            .ok_or(singular.clone())?;
+        let f0 = lu.solve(&self.normalwash(blocks)).ok_or(singular.clone())?;
         let d1 = assemble::first_order(blocks, beta2, self.spec.line_rule) / self.wing.mac();
         let f1 = lu.solve(&(-(d1 * f0.column(0)))).ok_or(singular)?;
         let alpha = self.loads(blocks, |i| f0[(i, 0)]);

@@ -250,7 +250,11 @@ pub(crate) fn complex_solve(d: &DMatrix<Complex64>, w: &DMatrix<f64>) -> faer::M
 }
 
 /// The harmonic Dᵢⱼ, steady plus oscillatory.
-pub(crate) fn harmonic_matrix(grid: &Grid, flow: &KernelFlow, rule: LineRule) -> DMatrix<Complex64> {
+pub(crate) fn harmonic_matrix(
+    grid: &Grid,
+    flow: &KernelFlow,
+    rule: LineRule,
+) -> DMatrix<Complex64> {
     let beta = flow.beta2.sqrt();
     let mut d = matrix(&grid.boxes, |line, x, y| {
         Complex64::new(line.steady(x, y, beta), 0.0)

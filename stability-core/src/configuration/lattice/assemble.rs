@@ -40,7 +40,8 @@ fn assemble<T: nalgebra::Scalar + Default>(
             } else {
                 Pair::NonPlanar(r, s, r.z - s.z)
             };
-            d.view_mut((ro, so), (sizes[i], sizes[j])).copy_from(&fill(&pair));
+            d.view_mut((ro, so), (sizes[i], sizes[j]))
+                .copy_from(&fill(&pair));
             so += sizes[j];
         }
         ro += sizes[i];
@@ -164,8 +165,12 @@ pub(super) fn first_order(blocks: &[Block], beta2: f64, rule: LineRule) -> DMatr
         Pair::Planar(r, s) => pairwise(&r.grid.boxes, &s.grid.boxes, |line, x, y| {
             line.first_order(x, y, beta2, rule)
         }),
-        Pair::NonPlanar(r, s, z0) => {
-            nonplanar_lines(r, s, z0, |rr| rr, |x0, &rr| nonplanar::first_order(x0, rr, beta2))
-        }
+        Pair::NonPlanar(r, s, z0) => nonplanar_lines(
+            r,
+            s,
+            z0,
+            |rr| rr,
+            |x0, &rr| nonplanar::first_order(x0, rr, beta2),
+        ),
     })
 }

@@ -88,7 +88,11 @@ fn plan_overlap(a: &Trapezoid, xa: f64, b: &Trapezoid, xb: f64) -> f64 {
     let gap = |y: f64| te(a, xa, y).min(te(b, xb, y)) - le(a, xa, y).max(le(b, xb, y));
     let cross = |f: &dyn Fn(&Trapezoid, f64, f64) -> f64| {
         let (d0, d1) = (f(a, xa, 0.0) - f(b, xb, 0.0), f(a, xa, s) - f(b, xb, s));
-        if d0 != d1 { (d0 / (d0 - d1)).clamp(0.0, 1.0) * s } else { 0.0 }
+        if d0 != d1 {
+            (d0 / (d0 - d1)).clamp(0.0, 1.0) * s
+        } else {
+            0.0
+        }
     };
     [0.0, s, cross(&le), cross(&te)]
         .into_iter()
@@ -144,8 +148,13 @@ pub(super) fn members(
     spec_for: impl Fn(&Trapezoid) -> LatticeSpec,
 ) -> Result<Vec<Member>, ConfigurationError> {
     let wing = cfg.wing;
-    Trapezoid::new(wing.root_chord, wing.tip_chord, wing.semi_span, wing.sweep_le)
-        .map_err(|e| ConfigurationError::Geometry(format!("the wing's planform: {e}")))?;
+    Trapezoid::new(
+        wing.root_chord,
+        wing.tip_chord,
+        wing.semi_span,
+        wing.sweep_le,
+    )
+    .map_err(|e| ConfigurationError::Geometry(format!("the wing's planform: {e}")))?;
     let mut out = vec![Member {
         part: Part::Wing,
         shape: wing,

@@ -195,7 +195,8 @@ pub fn second_numerator(x0: f64, radial: &Radial2, flow: &KernelFlow) -> Complex
     let u1 = (m * big_r - x0) / (b2 * r);
     let inv_q = b2 * r / r_minus;
     let k = radial.k1;
-    let bracket = r_minus * r_minus / (b2 * big_r * big_r) + 2.0 + m * (m * big_r - x0) / (b2 * big_r);
+    let bracket =
+        r_minus * r_minus / (b2 * big_r * big_r) + 2.0 + m * (m * big_r - x0) / (b2 * big_r);
     let b = m * r / big_r * bracket * inv_q * inv_q * inv_q;
     let term2 = Complex64::new(0.0, k * m * m * r * r * inv_q / (big_r * big_r));
     let both = Complex64::from_polar(1.0, -kappa * m * r_minus / b2); // e^{−ik₁u₁ − iκx₀}
@@ -276,7 +277,8 @@ pub fn moments(ybar: f64, e: f64, z: f64) -> ([f64; 5], [f64; 5]) {
     let mut w2 = [0.0; 5];
     for n in 0..5 {
         for j in 0..=n {
-            let f = BINOMIAL[n][j] * ybar.powi((n - j) as i32) * if j % 2 == 0 { 1.0 } else { -1.0 };
+            let f =
+                BINOMIAL[n][j] * ybar.powi((n - j) as i32) * if j % 2 == 0 { 1.0 } else { -1.0 };
             w1[n] += f * c[j];
             w2[n] += f * z2 * a[j];
         }
@@ -339,7 +341,10 @@ mod tests {
             let planar = horseshoe(x, y, a, b);
             assert!((horseshoe_3d(x, y, 0.0, a, b) - planar).abs() < 1e-12 * (1.0 + planar.abs()));
             let near = horseshoe_3d(x, y, 1e-7, a, b);
-            assert!((near - planar).abs() < 1e-5 * (1.0 + planar.abs()), "{near} {planar}");
+            assert!(
+                (near - planar).abs() < 1e-5 * (1.0 + planar.abs()),
+                "{near} {planar}"
+            );
         }
     }
 
@@ -357,13 +362,24 @@ mod tests {
         };
         for m in [0.0, 0.6] {
             let beta2: f64 = 1.0 - m * m;
-            for (x, y, z0) in [(0.6, 0.2, 0.1), (0.3, 0.33, 0.02), (-0.4, 0.25, 0.3), (1.5, -0.3, 0.5)] {
+            for (x, y, z0) in [
+                (0.6, 0.2, 0.1),
+                (0.3, 0.33, 0.02),
+                (-0.4, 0.25, 0.3),
+                (1.5, -0.3, 0.5),
+            ] {
                 let exact = horseshoe_3d(
                     x / beta2.sqrt(),
                     y,
                     z0,
-                    ((line.xi - line.e * line.tan_sweep) / beta2.sqrt(), line.eta - line.e),
-                    ((line.xi + line.e * line.tan_sweep) / beta2.sqrt(), line.eta + line.e),
+                    (
+                        (line.xi - line.e * line.tan_sweep) / beta2.sqrt(),
+                        line.eta - line.e,
+                    ),
+                    (
+                        (line.xi + line.e * line.tan_sweep) / beta2.sqrt(),
+                        line.eta + line.e,
+                    ),
                 );
                 let pieces = 400;
                 let h = line.e / pieces as f64;
@@ -379,7 +395,10 @@ mod tests {
                         sum += s.w1 * k10 + s.w2 * q0;
                     }
                 }
-                assert!((sum - exact).abs() < 1e-6 * (1.0 + exact.abs()), "{m} ({x}, {y}, {z0}): {sum} {exact}");
+                assert!(
+                    (sum - exact).abs() < 1e-6 * (1.0 + exact.abs()),
+                    "{m} ({x}, {y}, {z0}): {sum} {exact}"
+                );
             }
         }
     }
@@ -390,7 +409,10 @@ mod tests {
             let planar = moment_integrals(ybar, e);
             let (w1, w2) = moments(ybar, e, 1e-7);
             for n in 0..5 {
-                assert!((w1[n] - planar[n]).abs() < 1e-5 * (1.0 + planar[n].abs()), "{n}");
+                assert!(
+                    (w1[n] - planar[n]).abs() < 1e-5 * (1.0 + planar[n].abs()),
+                    "{n}"
+                );
                 assert!(w2[n].abs() < 1e-5);
             }
         }
@@ -415,7 +437,12 @@ mod tests {
                 }
             }
             for k in 0..5 {
-                assert!((w1[k] - q1[k]).abs() < 1e-6 * (1.0 + q1[k].abs()), "{k} {} {}", w1[k], q1[k]);
+                assert!(
+                    (w1[k] - q1[k]).abs() < 1e-6 * (1.0 + q1[k].abs()),
+                    "{k} {} {}",
+                    w1[k],
+                    q1[k]
+                );
                 assert!((w2[k] - q2[k]).abs() < 1e-6 * (1.0 + q2[k].abs()), "{k}");
             }
         }
