@@ -23,11 +23,13 @@ use serde_json::Value;
 use stability_core::configuration::{Configuration, Surface, SurfaceKind};
 use stability_core::geometry::Trapezoid;
 
-#[test]
-fn steady_derivatives_agree_with_avl() {
-    let avl: Value = serde_json::from_str(include_str!("fixtures/avl_configuration.json")).unwrap();
+fn g(v: &Value, k: &str) -> f64 {
+    v[k].as_f64().unwrap()
+}
+
+/// The fixture's wing and other surface's planform.
+fn planforms(avl: &Value) -> (Trapezoid, Trapezoid) {
     let w = &avl["wing"];
-    let g = |v: &Value, k: &str| v[k].as_f64().unwrap();
     let wing = Trapezoid::new(1.0, 0.0, g(w, "semi_span"), g(w, "sweep_deg").to_radians()).unwrap();
     assert!(
         (wing.mac() - g(w, "mac")).abs() < 1e-12 && (wing.x_mac() - g(w, "x_mac")).abs() < 1e-12
@@ -40,80 +42,90 @@ fn steady_derivatives_agree_with_avl() {
         g(s, "sweep_deg").to_radians(),
     )
     .unwrap();
+    (wing, shape)
+}
+
+/// One layout's configuration.
+fn configuration(layout: &Value, wing: Trapezoid, shape: Trapezoid) -> Configuration {
+    let kind = match layout["kind"].as_str().unwrap() {
+        "tailplane" => SurfaceKind::Tailplane,
+        _ => SurfaceKind::Foreplane,
+    };
+    let surface = Surface {
+        kind,
+        shape,
+        x: g(layout, "x"),
+        z: g(layout, "z"),
+        incidence: 0.0,
+    };
+    Configuration {
+        tailplane: (kind == SurfaceKind::Tailplane).then_some(surface),
+        foreplane: (kind == SurfaceKind::Foreplane).then_some(surface),
+        ..Configuration::wing_alone(wing)
+    }
+}
+
+/// (C_Lα, h_n, z_q, m_q), ours and AVL's, of one run.
+fn pairs(cfg: &Configuration, run: &Value) -> [(f64, f64); 4] {
+    let r = |k: &str| g(run, k);
+    let d = cfg
+        .solve_subsonic(r("mach"), 0.0)
+        .unwrap()
+        .total
+        .derivatives(0.0, 0.0)
+        .unwrap();
+    let hn_avl = (r("Xnp") - cfg.wing.x_mac()) / cfg.wing.mac();
+    [
+        (d.lift_slope, r("CLa")),
+        (d.aerodynamic_centre, hn_avl),
+        (d.z_q, -r("CLq") / 2.0),
+        (d.m_q, r("Cmq") / 2.0),
+    ]
+}
+
+#[test]
+fn steady_derivatives_agree_with_avl() {
+    let avl: Value = serde_json::from_str(include_str!("fixtures/avl_configuration.json")).unwrap();
+    let (wing, shape) = planforms(&avl);
     let mut worst = [0.0f64; 4];
     let mut coplanar = [0.0f64; 4];
     let mut ours_coplanar = 0.0;
     println!("layout | M | C_Lα ours/AVL | h_n ours/AVL | z_q ours/AVL | m_q ours/AVL");
     for layout in avl["layouts"].as_array().unwrap() {
-        let kind = match layout["kind"].as_str().unwrap() {
-            "tailplane" => SurfaceKind::Tailplane,
-            _ => SurfaceKind::Foreplane,
-        };
-        let surface = Surface {
-            kind,
-            shape,
-            x: g(layout, "x"),
-            z: g(layout, "z"),
-            incidence: 0.0,
-        };
-        let cfg = Configuration {
-            tailplane: (kind == SurfaceKind::Tailplane).then_some(surface),
-            foreplane: (kind == SurfaceKind::Foreplane).then_some(surface),
-            ..Configuration::wing_alone(wing)
-        };
+        let cfg = configuration(layout, wing, shape);
+        let is_coplanar = g(layout, "z") == 0.0;
         for run in layout["runs"].as_array().unwrap() {
-            let r = |k: &str| run[k].as_f64().unwrap();
-            let d = cfg
-                .solve_subsonic(r("mach"), 0.0)
-                .unwrap()
-                .total
-                .derivatives(0.0, 0.0)
-                .unwrap();
-            let hn_avl = (r("Xnp") - wing.x_mac()) / wing.mac();
-            let pairs = [
-                (d.lift_slope, r("CLa")),
-                (d.aerodynamic_centre, hn_avl),
-                (d.z_q, -r("CLq") / 2.0),
-                (d.m_q, r("Cmq") / 2.0),
-            ];
+            let pairs = pairs(&cfg, run);
             println!(
                 "{} | {} | {}",
                 layout["name"].as_str().unwrap(),
-                r("mach"),
+                g(run, "mach"),
                 pairs.map(|(a, b)| format!("{a:.4}/{b:.4}")).join(" | ")
             );
-            let is_coplanar = g(layout, "z") == 0.0;
-            if is_coplanar && r("mach") == 0.0 {
-                ours_coplanar = d.lift_slope;
+            if is_coplanar && g(run, "mach") == 0.0 {
+                ours_coplanar = pairs[0].0;
             }
+            let w = if is_coplanar {
+                &mut coplanar
+            } else {
+                &mut worst
+            };
             for (k, (ours, theirs)) in pairs.into_iter().enumerate() {
                 let err = if k == 1 {
                     (ours - theirs).abs()
                 } else {
                     (ours / theirs - 1.0).abs()
                 };
-                let w = if is_coplanar {
-                    &mut coplanar
-                } else {
-                    &mut worst
-                };
                 w[k] = w[k].max(err);
             }
         }
     }
-    println!(
-        "largest differences: C_Lα {:.2} %, h_n {:.4}, z_q {:.2} %, m_q {:.2} %",
-        100.0 * worst[0],
-        worst[1],
-        100.0 * worst[2],
-        100.0 * worst[3]
-    );
+    println!("largest differences (C_Lα, h_n, z_q, m_q): {worst:?}; coplanar {coplanar:?}");
     assert!(
         worst[0] < 0.03 && worst[2] < 0.03 && worst[3] < 0.03,
         "{worst:?}"
     );
     assert!(worst[1] < 0.01, "{worst:?}");
-    println!("coplanar: {coplanar:?}");
     assert!(
         coplanar[0] < 0.04 && coplanar[2] < 0.04 && coplanar[3] < 0.04,
         "{coplanar:?}"
