@@ -24,6 +24,13 @@
 //!   quartic (J. Aircraft 35(5), 1998): see [`nonplanar`]. It tends
 //!   continuously to the planar line as z₀ → 0 (tested).
 //!
+//! A surface no wider than the wing and nearer its plane than the width of
+//! its strips lies in the wing's discrete wake: its strips are then the
+//! wing's within its span, so that the wing's trailing legs lie on its
+//! strip edges and never beside its collocation points (`layout.rs`, AVL's
+//! advice for a tail behind a wing); otherwise each surface has strips of
+//! its own ([`LatticeSpec::for_wing`] of its planform).
+//!
 //! The right-hand sides are the wing lattice's: unit incidence (normalwash
 //! 1 on every surface) and unit pitch rate about the wing M.A.C.'s leading
 //! edge, normalwash (x − x̄)/c̄ with x from the wing's apex — so every number
@@ -43,7 +50,18 @@
 //! wavelength (Δx·ω/V ≲ 0.5), which 12 boxes per chord give for
 //! ω̄ ≲ 2c̄/c_r of each surface. Surfaces in one plane must not overlap in
 //! plan (an error names them); surfaces very close in height over one
-//! another need strips narrow against their distance.
+//! another need strips narrow against their distance. A tailplane in the
+//! wing's plane, in its wake, is where lattices converge slowly: AVL's
+//! C_Lα of such a layout falls by 3 % from 8 to 48 strips towards this
+//! lattice's, still 3.5 % above it (`tests/configuration_lattice_avl.rs`).
+//!
+//! # Checks
+//! `tests/configuration_lattice*.rs` and `tests/configuration_tail_volume.rs`:
+//! the wing alone is the wing's lattice to rounding; a tail far above is
+//! the two isolated surfaces; the non-planar kernel tends to the planar one
+//! as z → 0; panelaero's non-planar doublet lattice on the same boxes to
+//! 0.001 % (M = 0.5, ω̄ = 0.3 and M = 0, ω̄ = 0.6); AVL within 0.35 % (tail
+//! above, foreplane); the tail-volume formulas for m_q and m_ẇ within 4 %.
 
 mod assemble;
 pub mod cache;
