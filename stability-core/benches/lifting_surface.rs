@@ -11,9 +11,14 @@
 //! Near M = 1: the refined lattice of `LatticeSpec::for_mach` at M = 0.98
 //! against the default at 0.5, and the sonic point (`sonic_limit`).
 //!
+//! And the configuration lattice: a wing with a tailplane against the wing
+//! alone at the same density.
+//!
 //! `cargo bench -p stability-core --bench lifting_surface`
 
 use divan::{AllocProfiler, Bencher, black_box};
+use stability_core::configuration::lattice::ConfigurationLattice;
+use stability_core::configuration::{Configuration, Surface, SurfaceKind};
 use stability_core::geometry::{Planform, Size, Trapezoid};
 use stability_core::lifting_surface::{FrequencyTable, Lattice, LatticeSpec, Solution};
 
@@ -118,5 +123,58 @@ fn sonic_point(bencher: Bencher) {
         all_derivatives(
             &stability_core::lifting_surface::sonic_limit(&wing, black_box(0.5)).unwrap(),
         )
+    });
+}
+
+/// The configuration lattice (issue 21): the note's 60° delta with a
+/// tailplane 0.3c_r above its plane (root 0.3, tip 0.15, semi-span 0.35,
+/// 30° sweep; 12 × 16 boxes per surface, extrapolated) against the wing
+/// alone at the same box density (`ConfigurationLattice` of the wing alone,
+/// which is `Lattice::solve`): the cost ratio of the whole configuration,
+/// harmonic (M = 0.5, ω̄ = 0.5) and quasi-steady (M = 0.5). Measured (two
+/// runs on a shared two-core machine, medians): harmonic 206 / 24 ms and
+/// 263 / 51 ms (5–9 times the wing alone, for twice its boxes: the dense
+/// LU's n³ and the non-planar cross blocks), quasi-steady 30 / 7.9 ms and
+/// 39 / 8.1 ms (4–5 times).
+const CONFIGURATIONS: [&str; 2] = ["wing alone", "wing + tailplane"];
+
+fn configuration(name: &str) -> ConfigurationLattice {
+    let p = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();
+    let wing = Trapezoid::from(&p);
+    let tail = Surface {
+        kind: SurfaceKind::Tailplane,
+        shape: Trapezoid::new(0.3, 0.15, 0.35, 30f64.to_radians()).unwrap(),
+        x: 1.3,
+        z: 0.3,
+        incidence: 0.0,
+    };
+    let cfg = Configuration {
+        tailplane: (name != "wing alone").then_some(tail),
+        ..Configuration::wing_alone(wing)
+    };
+    ConfigurationLattice::new(&cfg).unwrap()
+}
+
+#[divan::bench(args = CONFIGURATIONS, sample_count = 10)]
+fn configuration_harmonic(bencher: Bencher, name: &str) {
+    let l = configuration(name);
+    bencher.bench_local(|| {
+        black_box(&l)
+            .solve(0.5, black_box(0.5))
+            .unwrap()
+            .total
+            .lift_alpha
+    });
+}
+
+#[divan::bench(args = CONFIGURATIONS, sample_count = 10)]
+fn configuration_quasi_steady(bencher: Bencher, name: &str) {
+    let l = configuration(name);
+    bencher.bench_local(|| {
+        black_box(&l)
+            .solve(0.5, black_box(0.0))
+            .unwrap()
+            .total
+            .lift_alpha
     });
 }

@@ -50,7 +50,7 @@ impl LiftingSurfaceDerivatives {
 
 /// What the lattice's extrapolation combines number by number
 /// ([`super::Extrapolation`]).
-pub(super) trait Extrapolate: Sized {
+pub(crate) trait Extrapolate: Sized {
     /// a·self + b·other, number by number.
     fn combine(&self, other: &Self, a: f64, b: f64) -> Self;
 

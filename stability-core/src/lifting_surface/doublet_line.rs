@@ -118,7 +118,15 @@ fn far_moment_integrals(ybar: f64, e: f64) -> [f64; 5] {
 /// D = −2(p₀ − 2p₁ + 2p₃ − p₄)/3e³, E = 2(p₀ − 4p₁ + 6p₂ − 4p₃ + p₄)/3e⁴,
 /// Q = C + Bη′ + Aη′² + Dη′³ + Eη′⁴, integrated by [`moment_integrals`].
 pub fn quartic_weights(ybar: f64, e: f64) -> [f64; 5] {
-    let [i0, i1, i2, i3, i4] = moment_integrals(ybar, e);
+    quartic_weights_of(moment_integrals(ybar, e), e)
+}
+
+/// The weights wₖ with ∫ Q(η′)W(η′) dη′ = Σ wₖ pₖ for the quartic Q through
+/// the samples pₖ at the five stations, from the moments ∫ η′ⁿW(η′) dη′,
+/// n = 0…4, of any weight W ([`quartic_weights`] for W = 1/(ȳ − η′)²; the
+/// non-planar lattice of `crate::configuration` for its two weights).
+pub fn quartic_weights_of(moments: [f64; 5], e: f64) -> [f64; 5] {
+    let [i0, i1, i2, i3, i4] = moments;
     let b = i1 / (6.0 * e);
     let a = i2 / (6.0 * e * e);
     let d = 2.0 * i3 / (3.0 * e * e * e);

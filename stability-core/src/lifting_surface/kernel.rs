@@ -35,7 +35,7 @@ use num_complex::Complex64;
 /// sum is 1.0000185, so the fit is off by 2·10⁻⁵ at u = 0; its largest
 /// error on u ≥ 0 is 1.3·10⁻³, near u = 15, where the exponentials have
 /// died away faster than 1/(2u²) (tested).
-const LASCHKA_A: [f64; 11] = [
+pub(crate) const LASCHKA_A: [f64; 11] = [
     0.241_861_98,
     -2.791_802_7,
     24.991_079,
@@ -48,7 +48,7 @@ const LASCHKA_A: [f64; 11] = [
     328.727_55,
     -64.279_511,
 ];
-const LASCHKA_C: f64 = 0.372;
+pub(crate) const LASCHKA_C: f64 = 0.372;
 
 /// R.N. Desmarais' twelve-term approximation
 /// u/√(1 + u²) ≈ 1 − Σ aₙ e^{−2ⁿbu}, b = 0.009054814793: R.N. Desmarais,
@@ -59,7 +59,7 @@ const LASCHKA_C: f64 = 0.372;
 /// 1998, pp. 720–727, use it. Its largest error on u ≥ 0 is 2.5·10⁻⁵
 /// (tested), fifty times smaller than Laschka's; the exponents are powers
 /// of two, so the twelve exponentials come from one by squaring.
-const DESMARAIS_A: [f64; 12] = [
+pub(crate) const DESMARAIS_A: [f64; 12] = [
     0.000_319_759_140,
     -0.000_055_461_471,
     0.002_726_074_362,
@@ -73,7 +73,7 @@ const DESMARAIS_A: [f64; 12] = [
     -0.012_677_284_771,
     0.001_787_032_960,
 ];
-const DESMARAIS_B: f64 = 0.009_054_814_793;
+pub(crate) const DESMARAIS_B: f64 = 0.009_054_814_793;
 
 /// How the kernel's integral I₁ is evaluated: both replace
 /// 1 − u/√(1 + u²) by a sum of exponentials, which makes I₁ closed-form
@@ -93,7 +93,7 @@ pub enum I1Approximation {
 
 /// 1 − u/√(1 + u²) for u ≥ 0 without cancellation:
 /// 1/(√(1 + u²)(√(1 + u²) + u)).
-fn one_minus_u_over_root(u: f64) -> f64 {
+pub(crate) fn one_minus_u_over_root(u: f64) -> f64 {
     let q = (1.0 + u * u).sqrt();
     1.0 / (q * (q + u))
 }
@@ -118,7 +118,7 @@ pub fn i1(u1: f64, k1: f64, approx: I1Approximation) -> Complex64 {
 
 /// Gauss–Legendre nodes and weights on [0, 1], n = 64 (Newton's method on
 /// P₆₄ from Tricomi's initial guesses; computed once).
-fn gauss_legendre_64() -> &'static [(f64, f64)] {
+pub(crate) fn gauss_legendre_64() -> &'static [(f64, f64)] {
     static RULE: std::sync::OnceLock<Vec<(f64, f64)>> = std::sync::OnceLock::new();
     RULE.get_or_init(|| {
         let n = 64;

@@ -280,10 +280,22 @@ pub struct Box {
 /// spaced as `spec` says.
 fn boxes(wing: &Trapezoid, spec: &LatticeSpec, chordwise: usize, strips: usize) -> Vec<Box> {
     let (edges, centres) = spec.strips(wing.semi_span, strips);
+    let strips: Vec<Strip> = edges
+        .windows(2)
+        .zip(&centres)
+        .map(|(pair, &yc)| (pair[0], pair[1], yc))
+        .collect();
+    boxes_on(wing, &strips, chordwise)
+}
+
+/// A strip: its edges y₀ < y₁ and its collocation station.
+pub(crate) type Strip = (f64, f64, f64);
+
+/// The boxes of `wing` with `chordwise` boxes on each of the given strips.
+fn boxes_on(wing: &Trapezoid, strips: &[Strip], chordwise: usize) -> Vec<Box> {
     let n = chordwise as f64;
-    let mut boxes = Vec::with_capacity(chordwise * strips);
-    for (pair, &yc) in edges.windows(2).zip(&centres) {
-        let (y0, y1) = (pair[0], pair[1]);
+    let mut boxes = Vec::with_capacity(chordwise * strips.len());
+    for &(y0, y1, yc) in strips {
         let (ym, e) = (0.5 * (y0 + y1), 0.5 * (y1 - y0));
         let (c0, c1, cm, cc) = (
             wing.chord_at(y0),
@@ -329,7 +341,7 @@ pub struct Lattice {
 /// One lattice: its boxes, strip by strip (`chordwise` to a strip, from the
 /// leading edge).
 #[derive(Debug, Clone, PartialEq)]
-pub(super) struct Grid {
+pub(crate) struct Grid {
     pub boxes: Vec<Box>,
     pub chordwise: usize,
 }
@@ -358,6 +370,33 @@ impl Lattice {
         })
     }
 
+    /// The lattice of `wing` at density `spec` but on the strips `strips`
+    /// gives for each of its levels (finest first, as [`Lattice::new`]
+    /// makes them: level k has `spec.chordwise / c` boxes per strip for the
+    /// (c, s) of [`Extrapolation`]'s levels) — a configuration's surface
+    /// aligned with another's strips (`crate::configuration::lattice`).
+    pub(crate) fn on_strips(
+        wing: &Trapezoid,
+        spec: LatticeSpec,
+        strips: impl Fn(usize) -> Vec<Strip>,
+    ) -> Result<Lattice, LiftingSurfaceError> {
+        let mut lattice = Lattice::new(wing, spec)?;
+        for (k, grid) in lattice.grids.iter_mut().enumerate() {
+            grid.boxes = boxes_on(wing, &strips(k), grid.chordwise);
+        }
+        Ok(lattice)
+    }
+
+    /// The strips of level `k` (finest first).
+    pub(crate) fn strips_of(&self, k: usize) -> Vec<Strip> {
+        let g = &self.grids[k];
+        g.boxes
+            .iter()
+            .step_by(g.chordwise)
+            .map(|b| (b.line.eta - b.line.e, b.line.eta + b.line.e, b.y_c))
+            .collect()
+    }
+
     pub fn wing(&self) -> &Trapezoid {
         &self.wing
     }
@@ -373,7 +412,7 @@ impl Lattice {
     }
 
     /// Every lattice solved, finest first.
-    pub(super) fn grids(&self) -> &[Grid] {
+    pub(crate) fn grids(&self) -> &[Grid] {
         &self.grids
     }
 }

@@ -72,13 +72,13 @@
 //! ω̄ = 0 for quasi-steady values, which are exact.
 
 pub mod cache;
-mod derivatives;
+pub(crate) mod derivatives;
 pub mod doublet_line;
 pub mod frequency;
 pub mod kernel;
-mod lattice;
+pub(crate) mod lattice;
 pub mod near_sonic;
-mod solve;
+pub(crate) mod solve;
 
 pub use crate::geometry::Trapezoid;
 pub use cache::Harmonic;

@@ -229,7 +229,7 @@ impl Lattice {
 }
 
 /// 0 ≤ M < 1, or the error.
-fn check_mach(mach: f64) -> Result<(), LiftingSurfaceError> {
+pub(crate) fn check_mach(mach: f64) -> Result<(), LiftingSurfaceError> {
     if mach.is_finite() && (0.0..1.0).contains(&mach) {
         Ok(())
     } else {
@@ -241,7 +241,7 @@ fn check_mach(mach: f64) -> Result<(), LiftingSurfaceError> {
 /// (measured 2.7 times faster than nalgebra's at 192 boxes, one core). A
 /// singular D shows as a non-finite solution, which [`Solution::checked`]
 /// turns into an error.
-fn complex_solve(d: &DMatrix<Complex64>, w: &DMatrix<f64>) -> faer::Mat<Complex64> {
+pub(crate) fn complex_solve(d: &DMatrix<Complex64>, w: &DMatrix<f64>) -> faer::Mat<Complex64> {
     use faer::linalg::solvers::Solve;
     let n = d.nrows();
     let a = faer::Mat::<Complex64>::from_fn(n, n, |i, j| d[(i, j)]);
@@ -250,7 +250,11 @@ fn complex_solve(d: &DMatrix<Complex64>, w: &DMatrix<f64>) -> faer::Mat<Complex6
 }
 
 /// The harmonic Dᵢⱼ, steady plus oscillatory.
-fn harmonic_matrix(grid: &Grid, flow: &KernelFlow, rule: LineRule) -> DMatrix<Complex64> {
+pub(crate) fn harmonic_matrix(
+    grid: &Grid,
+    flow: &KernelFlow,
+    rule: LineRule,
+) -> DMatrix<Complex64> {
     let beta = flow.beta2.sqrt();
     let mut d = matrix(&grid.boxes, |line, x, y| {
         Complex64::new(line.steady(x, y, beta), 0.0)
@@ -293,7 +297,7 @@ fn strip_rule(ybar: f64, e: f64, rule: LineRule) -> ([(f64, f64, f64); 5], usize
 /// [`Radial`] factors) are computed once per block. On its own strip each
 /// pair takes `own` (the line's graded rule). Equal to the pairwise
 /// assembly with [`DoubletLine`]'s methods (tested); only faster.
-fn add_blocked<T, R>(
+pub(crate) fn add_blocked<T, R>(
     d: &mut DMatrix<T>,
     grid: &Grid,
     rule: LineRule,
@@ -340,7 +344,7 @@ fn add_blocked<T, R>(
 }
 
 /// Dᵢⱼ = d(line j) + d(mirror of line j) at collocation point i.
-fn matrix<T>(boxes: &[Box], d: impl Fn(&DoubletLine, f64, f64) -> T) -> DMatrix<T>
+pub(crate) fn matrix<T>(boxes: &[Box], d: impl Fn(&DoubletLine, f64, f64) -> T) -> DMatrix<T>
 where
     T: nalgebra::Scalar + std::ops::Add<Output = T>,
 {

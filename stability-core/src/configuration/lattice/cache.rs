@@ -1,0 +1,103 @@
+//! One solve per (configuration, Mach number, ω̄): a process-wide cache of
+//! [`ConfigurationLattice::solve`], as [`crate::lifting_surface::cache`] is
+//! for the wing alone, so that the design points of a sweep that share a
+//! configuration and a flight condition share its solve.
+//!
+//! Keyed by the bits of every number the lattice depends on — the wing's
+//! four, and for each surface present its kind, its four, its apex x and
+//! height z — and of M and ω̄ (below [`OMEGA_BAR_QUASI_STEADY`], 0). A
+//! surface's incidence and the body are not in the lattice and not in the
+//! key. Each entry is solved once, by the first thread to ask; others
+//! asking meanwhile wait for it. At most [`CAPACITY`] entries; [`clear`]
+//! empties it.
+
+use super::super::{Configuration, ConfigurationError, ConfigurationSolution, SurfaceKind};
+use super::ConfigurationLattice;
+use crate::geometry::Trapezoid;
+use crate::lifting_surface::{LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY};
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, OnceLock, PoisonError, RwLock};
+
+/// Most entries.
+pub const CAPACITY: usize = 1 << 12;
+
+type Slot = Arc<OnceLock<Result<ConfigurationSolution, ConfigurationError>>>;
+type Key = (Vec<u64>, u64, u64);
+
+fn map() -> &'static RwLock<HashMap<Key, Slot>> {
+    static MAP: OnceLock<RwLock<HashMap<Key, Slot>>> = OnceLock::new();
+    MAP.get_or_init(Default::default)
+}
+
+static SOLVES: AtomicUsize = AtomicUsize::new(0);
+
+fn shape(t: &Trapezoid) -> [u64; 4] {
+    [t.root_chord, t.tip_chord, t.semi_span, t.sweep_le].map(f64::to_bits)
+}
+
+/// The bits of every number of `cfg` the lattice depends on.
+pub fn key(cfg: &Configuration) -> Vec<u64> {
+    let mut k = shape(&cfg.wing).to_vec();
+    for s in cfg.surfaces() {
+        k.push(match s.kind {
+            SurfaceKind::Tailplane => 1,
+            SurfaceKind::Foreplane => 2,
+        });
+        k.extend(shape(&s.shape));
+        k.extend([s.x.to_bits(), s.z.to_bits()]);
+    }
+    k
+}
+
+/// The solution of `cfg` at (`mach`, `omega_bar`), from the cache or solved
+/// into it (at the default lattice, [`ConfigurationLattice::new`]).
+pub fn solution(
+    cfg: &Configuration,
+    mach: f64,
+    omega_bar: f64,
+) -> Result<ConfigurationSolution, ConfigurationError> {
+    if !(mach.is_finite() && (0.0..1.0).contains(&mach)) {
+        return Err(LiftingSurfaceError::Mach(mach).into());
+    }
+    if !(omega_bar.is_finite() && omega_bar >= 0.0) {
+        return Err(LiftingSurfaceError::Frequency(omega_bar).into());
+    }
+    let omega_bar = if omega_bar < OMEGA_BAR_QUASI_STEADY {
+        0.0
+    } else {
+        omega_bar
+    };
+    let key = (key(cfg), mach.to_bits(), omega_bar.to_bits());
+    let read = map().read().unwrap_or_else(PoisonError::into_inner);
+    if let Some(done) = read.get(&key).and_then(|slot| slot.get()) {
+        return done.clone();
+    }
+    drop(read);
+    let slot = {
+        let mut write = map().write().unwrap_or_else(PoisonError::into_inner);
+        if write.len() >= CAPACITY && !write.contains_key(&key) {
+            write.clear();
+        }
+        write.entry(key).or_default().clone()
+    };
+    slot.get_or_init(|| {
+        SOLVES.fetch_add(1, Ordering::SeqCst);
+        ConfigurationLattice::new(cfg)?.solve(mach, omega_bar)
+    })
+    .clone()
+}
+
+/// How many solves the cache has made.
+pub fn solves() -> usize {
+    SOLVES.load(Ordering::SeqCst)
+}
+
+/// Empties the cache (and zeroes [`solves`]).
+pub fn clear() {
+    map()
+        .write()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clear();
+    SOLVES.store(0, Ordering::SeqCst);
+}
