@@ -95,7 +95,9 @@ fn check(a: &Answer, deg: f64, mu1: f64, mach: f64, n: usize) -> f64 {
     let p = a.probability(s);
     let q = plain_loop(deg, mu1, mach, n, a.headline.claim);
     let var = |x: f64, n: f64| x * (1.0 - x) / n;
-    let se = (var(p.p, p.n as f64) + var(q, n as f64)).sqrt().max(1.0 / n as f64);
+    let se = (var(p.p, p.n as f64) + var(q, n as f64))
+        .sqrt()
+        .max(1.0 / n as f64);
     assert!(
         (p.p - q).abs() <= 3.0 * se,
         "{deg}° at M = {mach}: the section's {} [{}, {}] against the loop's {q} (3σ = {})",
@@ -122,4 +124,42 @@ fn the_headline_probabilities_agree_with_a_plain_loop() {
     for m in [1.2, 1.5, 2.0] {
         check(&a60, 60.0, 160.0, m, n);
     }
+}
+
+#[test]
+fn the_sampling_is_the_configs_unless_the_command_line_says() {
+    let dir = common::Scratch::new();
+    let text = common::example("delta-45-how-sure.toml");
+    let file = dir.write("s.toml", &text);
+    let args = |extra: &[&str]| {
+        let mut a = vec![
+            "uncertainty",
+            common::path(&file),
+            "--mach",
+            "1.2",
+            "--samples",
+            "64",
+            "--json",
+        ];
+        a.extend_from_slice(extra);
+        json(&run_ok(&a))
+    };
+    assert_eq!(args(&[])["sampling"], "sobol");
+    let random = args(&["--sampling", "random"]);
+    assert_eq!(random["sampling"], "random");
+    assert_ne!(args(&[])["results"], random["results"]);
+    // a sampling that is not one: the line and the field, and what to write
+    let bad = text.replace("sampling = \"sobol\"", "sampling = \"sobl\"");
+    let line = bad.lines().position(|l| l.starts_with("sampling")).unwrap() + 1;
+    let file = dir.write("bad.toml", &bad);
+    let err = common::stderr(&common::run_err(
+        &["uncertainty", common::path(&file), "--mach", "1.2"],
+        2,
+    ));
+    assert!(
+        err.contains(&format!("bad.toml:{line}:"))
+            && err.contains("[uncertainty] sampling: `sobl` is not a sampling")
+            && err.contains("sampling = \"random\""),
+        "{err}"
+    );
 }

@@ -11,8 +11,8 @@
 
 use crate::Failure;
 use crate::output::{AtomicDir, Refused};
-use crate::report::conclusions::{self, Judged};
 use crate::report::certainty::Certainty;
+use crate::report::conclusions::{self, Judged};
 use crate::report::manifest::{self, MANIFEST, Manifest};
 use crate::report::summary::{self, Findings};
 use crate::report::{Plate, SECTIONS, Study, html};
@@ -156,7 +156,11 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         bar.inc(1);
         bar.set_message("how sure: the headline conclusions as probabilities");
         let sure = Certainty::new().map_err(|m| {
-            Failure::Io(IoError::new("cannot weigh the headline conclusions", out, m))
+            Failure::Io(IoError::new(
+                "cannot weigh the headline conclusions",
+                out,
+                m,
+            ))
         })?;
         let plate = sure.plate();
         write_plate(write, out, &plate)?;

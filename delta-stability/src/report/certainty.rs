@@ -274,7 +274,9 @@ impl Certainty {
             };
             f = f.with(series(a.headline.label.to_string(), |p| p.p));
             f = f.with(series(format!("{}, 95 % low", a.headline.label), |p| p.low));
-            f = f.with(series(format!("{}, 95 % high", a.headline.label), |p| p.high));
+            f = f.with(series(format!("{}, 95 % high", a.headline.label), |p| {
+                p.high
+            }));
         }
         f.bands.push(Band {
             from: 0.97,
@@ -304,10 +306,16 @@ pub fn mu1_60() -> f64 {
 /// Where each input's spread comes from (as the example configs say).
 fn source(factor: &str) -> &'static str {
     match factor {
-        "i_b" => "the range the report sweeps the unstated i_B over (a radius of gyration in pitch of 0.2c̄–0.45c̄), most likely at our assumed 0.08",
-        "cl_m2" => "the report's range for the unstated C_L·M² (wing loadings of 30–50 lb/ft² from sea level to about 40 000 ft), most likely at our 0.05",
+        "i_b" => {
+            "the range the report sweeps the unstated i_B over (a radius of gyration in pitch of 0.2c̄–0.45c̄), most likely at our assumed 0.08"
+        }
+        "cl_m2" => {
+            "the report's range for the unstated C_L·M² (wing loadings of 30–50 lb/ft² from sea level to about 40 000 ft), most likely at our 0.05"
+        }
         "cg" => "the note's h = 0.25, its Fig 26's 0.15 and 0.35 the ends of the travel",
-        "model" => "model-form: the note's own fairing of its theories (Figs 19–24) or the slender-wing fairing before it, weighted 3 to 1 (a judgement)",
+        "model" => {
+            "model-form: the note's own fairing of its theories (Figs 19–24) or the slender-wing fairing before it, weighted 3 to 1 (a judgement)"
+        }
         _ => "",
     }
 }
@@ -316,7 +324,9 @@ fn source(factor: &str) -> &'static str {
 fn describe(d: &stability_core::uncertainty::Dist) -> String {
     use stability_core::uncertainty::Dist;
     match d {
-        Dist::Triangular { low, mode, high } => format!("triangular on [{low}, {high}], mode {mode}"),
+        Dist::Triangular { low, mode, high } => {
+            format!("triangular on [{low}, {high}], mode {mode}")
+        }
         Dist::Uniform { low, high } => format!("uniform on [{low}, {high}]"),
         Dist::Normal { mean, sd } => format!("normal, mean {mean}, sd {sd}"),
         Dist::LogNormal { mu, sigma } => {
@@ -433,8 +443,14 @@ impl Answer {
     /// The least and the largest probability over Mach number, with where.
     fn range(&self) -> ((f64, f64), (f64, f64)) {
         let pts = self.by_mach();
-        let lo = pts.iter().map(|(m, p)| (p.p, *m)).fold((2.0, 0.0), |a, b| if b.0 < a.0 { b } else { a });
-        let hi = pts.iter().map(|(m, p)| (p.p, *m)).fold((-1.0, 0.0), |a, b| if b.0 > a.0 { b } else { a });
+        let lo = pts
+            .iter()
+            .map(|(m, p)| (p.p, *m))
+            .fold((2.0, 0.0), |a, b| if b.0 < a.0 { b } else { a });
+        let hi = pts
+            .iter()
+            .map(|(m, p)| (p.p, *m))
+            .fold((-1.0, 0.0), |a, b| if b.0 > a.0 { b } else { a });
         (lo, hi)
     }
 
@@ -460,7 +476,11 @@ impl Answer {
             percent(hi),
             percent(least),
             percent(most),
-            if deciding.is_empty() { "—".to_string() } else { deciding.join(", ") }
+            if deciding.is_empty() {
+                "—".to_string()
+            } else {
+                deciding.join(", ")
+            }
         )
     }
 
@@ -495,6 +515,9 @@ impl Certainty {
     /// The line beside the conclusions.
     pub fn conclusion_line(&self) -> String {
         let s: Vec<String> = self.answers.iter().map(Answer::sentence).collect();
-        format!("How sure (section “How sure are the headline conclusions?”): {}", s.join(" "))
+        format!(
+            "How sure (section “How sure are the headline conclusions?”): {}",
+            s.join(" ")
+        )
     }
 }

@@ -172,15 +172,32 @@ fn how_sure(c: &Certainty, plate: &Plate) -> String {
         "<section id=\"{HOW_SURE}\"><h2>How sure are the headline conclusions?</h2><p>The note answers yes or no; its inputs are not known that well. Here each headline conclusion is a probability under stated distributions of i_B and C_L·M² (which the note does not state), of the c.g., and of the damping theory itself (model-form uncertainty), by {} Owen-scrambled Sobol′ points at each Mach number (seed {}; each 95 % Wilson interval at most ±{}); the deciding inputs by their total Sobol indices for the short period's ζ ({} rows of Saltelli's design), averaged over Mach number.</p>\n",
         c.samples,
         super::certainty::SEED,
-        super::certainty::percent(stability_core::uncertainty::stats::Z95 * (0.25 / c.samples as f64).sqrt()),
+        super::certainty::percent(
+            stability_core::uncertainty::stats::Z95 * (0.25 / c.samples as f64).sqrt()
+        ),
         c.sobol_samples,
     );
     for (a, j) in c.answers.iter().zip(c.json().headlines) {
-        let _ = write!(s, "<h3>{}</h3><p>{}</p><table><tr><th>input</th><th>distribution</th><th>from</th></tr>", esc(&super::certainty::capitalised(a.headline.question)), esc(&a.sentence()));
+        let _ = write!(
+            s,
+            "<h3>{}</h3><p>{}</p><table><tr><th>input</th><th>distribution</th><th>from</th></tr>",
+            esc(&super::certainty::capitalised(a.headline.question)),
+            esc(&a.sentence())
+        );
         for i in &j.inputs {
-            let _ = write!(s, "<tr><td>{}</td><td>{}</td><td>{}</td></tr>", esc(i.name), esc(&i.distribution), esc(i.source));
+            let _ = write!(
+                s,
+                "<tr><td>{}</td><td>{}</td><td>{}</td></tr>",
+                esc(i.name),
+                esc(&i.distribution),
+                esc(i.source)
+            );
         }
-        let _ = writeln!(s, "</table><p><small>Rerun: <code>{}</code> (add <code>--sobol</code> for the indices); the file states each spread.</small></p>", esc(&j.command));
+        let _ = writeln!(
+            s,
+            "</table><p><small>Rerun: <code>{}</code> (add <code>--sobol</code> for the indices); the file states each spread.</small></p>",
+            esc(&j.command)
+        );
     }
     s.push_str(&figure(plate));
     s.push_str("</section>\n");
@@ -188,7 +205,7 @@ fn how_sure(c: &Certainty, plate: &Plate) -> String {
 }
 
 /// The anchor of the section "How sure are the headline conclusions?".
-const HOW_SURE: &str = "how-sure";
+const HOW_SURE: &str = "how-sure-section";
 
 /// The page: the introduction, the contents, the conclusions (with how
 /// sure the headline ones are, when `sure` is given), then each section
@@ -213,7 +230,11 @@ pub fn index_html(
     s.push_str(&nav);
     s.push_str(&conclusions(judged));
     if let Some((c, _)) = sure {
-        let _ = writeln!(s, "<p><a href=\"#{HOW_SURE}\">{}</a></p>", esc(&c.conclusion_line()));
+        let _ = writeln!(
+            s,
+            "<p><a href=\"#{HOW_SURE}\">{}</a></p>",
+            esc(&c.conclusion_line())
+        );
     }
     for (k, (title, plates)) in sections.iter().enumerate() {
         let _ = writeln!(

@@ -307,7 +307,8 @@ mod tests {
         // 0), S_T = (0.5576, 0.4424, 0.2437).
         let (s, st) = ([0.3139, 0.4424, 0.0], [0.5576, 0.4424, 0.2437]);
         let seq = SobolSequence::new(5);
-        let x = |i: u64, d: u32| -std::f64::consts::PI + 2.0 * std::f64::consts::PI * seq.uniform(i, d);
+        let x =
+            |i: u64, d: u32| -std::f64::consts::PI + 2.0 * std::f64::consts::PI * seq.uniform(i, d);
         let mut sums = SobolSums::new(3);
         for i in 0..1u64 << 13 {
             let a = [x(i, 0), x(i, 1), x(i, 2)];

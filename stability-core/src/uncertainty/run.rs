@@ -139,7 +139,11 @@ impl AtMach<'_> {
         let (mut za, mut zb, mut x) = ([0.0; MAX_FACTORS], [0.0; MAX_FACTORS], [0.0; MAX_FACTORS]);
         let mut ab = [[f64::NAN; MAX_FACTORS]; 2];
         for row in 0..rows {
-            points.fill(chunk * CHUNK as u64 + row as u64, &mut za[..k], &mut zb[..k]);
+            points.fill(
+                chunk * CHUNK as u64 + row as u64,
+                &mut za[..k],
+                &mut zb[..k],
+            );
             let fa = self.sample(&za[..k], &mut x, cases);
             tally.add(&fa);
             let Some(sums) = &mut tally.sobol else {

@@ -152,7 +152,10 @@ pub fn read(cfg: &Config) -> Result<Option<Study>, Failure> {
 pub fn sampling(cfg: &Config) -> Result<Option<Sampling>, Failure> {
     let (path, text) = (cfg.path.as_str(), cfg.text());
     let raw: WithUncertainty = toml::from_str(text).map_err(|e| toml_error(path, text, &e))?;
-    let Some(value) = raw.uncertainty.and_then(|t| t.into_inner().remove("sampling")) else {
+    let Some(value) = raw
+        .uncertainty
+        .and_then(|t| t.into_inner().remove("sampling"))
+    else {
         return Ok(None);
     };
     let span = value.span();
