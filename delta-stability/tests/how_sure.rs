@@ -120,10 +120,16 @@ fn the_headline_probabilities_agree_with_a_plain_loop() {
     // the claim is far from certain either way somewhere, or the check
     // would not tell much
     assert!(ps.iter().any(|p| (0.02..0.98).contains(p)), "{ps:?}");
+    // measured: 0.681 / 0.694 (M = 1), 0.997 / 0.999 (1.2), 0.869 / 0.857
+    // (1.4), the section's then the loop's
     let a60 = HEADLINES[1].answer(SAMPLES, 0).unwrap();
-    for m in [1.2, 1.5, 2.0] {
-        check(&a60, 60.0, 160.0, m, n);
-    }
+    let ps: Vec<f64> = [1.45, 1.5, 1.6]
+        .iter()
+        .map(|&m| check(&a60, 60.0, 160.0, m, n))
+        .collect();
+    // measured: 0.737 / 0.733 (1.45), 0.523 / 0.515 (1.5), 0.183 / 0.173
+    // (1.6)
+    assert!(ps.iter().all(|p| (0.02..0.98).contains(p)), "{ps:?}");
 }
 
 #[test]
