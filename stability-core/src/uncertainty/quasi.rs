@@ -129,14 +129,12 @@ fn poly(c: &[f64; 8], x: f64) -> f64 {
     c.iter().rev().fold(0.0, |acc, &k| acc * x + k)
 }
 
-/// The standard normal quantile Φ⁻¹(p) for p in (0, 1), to about 1 part
-/// in 10¹⁶: Wichura's algorithm AS 241, PPND16 (*Appl. Statist.*
-/// 37:477–484, 1988), rational approximations in three ranges of p.
-/// ±∞ at p = 0 or 1; NaN outside [0, 1].
-// the coefficients as Wichura printed them (20 digits), rounded by the compiler
+// AS 241's coefficients as Wichura printed them (20 digits), rounded by
+// the compiler: numerators and denominators (constant first) for
+// |p − ½| ≤ 0.425, then r = √(−ln min(p, 1 − p)) ≤ 5 and beyond.
 #[allow(clippy::excessive_precision)]
-pub fn inverse_phi(p: f64) -> f64 {
-    const A: [f64; 8] = [
+mod ppnd16 {
+    pub(super) const A: [f64; 8] = [
         3.387_132_872_796_366_608,
         133.141_667_891_784_377_45,
         1_971.590_950_306_551_442_7,
@@ -146,7 +144,7 @@ pub fn inverse_phi(p: f64) -> f64 {
         33_430.575_583_588_128_105,
         2_509.080_928_730_122_672_7,
     ];
-    const B: [f64; 8] = [
+    pub(super) const B: [f64; 8] = [
         1.0,
         42.313_330_701_600_911_252,
         687.187_007_492_057_908_3,
@@ -156,7 +154,7 @@ pub fn inverse_phi(p: f64) -> f64 {
         28_729.085_735_721_942_674,
         5_226.495_278_852_545_925,
     ];
-    const C: [f64; 8] = [
+    pub(super) const C: [f64; 8] = [
         1.423_437_110_749_683_577_34,
         4.630_337_846_156_545_295_9,
         5.769_497_221_460_691_405_5,
@@ -166,7 +164,7 @@ pub fn inverse_phi(p: f64) -> f64 {
         0.022_723_844_989_269_184_583_3,
         7.745_450_142_783_414_076_4e-4,
     ];
-    const D: [f64; 8] = [
+    pub(super) const D: [f64; 8] = [
         1.0,
         2.053_191_626_637_758_821_87,
         1.676_384_830_183_803_849_4,
@@ -176,7 +174,7 @@ pub fn inverse_phi(p: f64) -> f64 {
         5.475_938_084_995_344_946e-4,
         1.050_750_071_644_416_843_24e-9,
     ];
-    const E: [f64; 8] = [
+    pub(super) const E: [f64; 8] = [
         6.657_904_643_501_103_777_2,
         5.463_784_911_164_114_369_9,
         1.784_826_539_917_291_335_8,
@@ -186,7 +184,7 @@ pub fn inverse_phi(p: f64) -> f64 {
         2.711_555_568_743_487_578_15e-5,
         2.010_334_399_292_288_132_65e-7,
     ];
-    const F: [f64; 8] = [
+    pub(super) const F: [f64; 8] = [
         1.0,
         0.599_832_206_555_887_937_69,
         0.136_929_880_922_735_805_31,
@@ -196,13 +194,20 @@ pub fn inverse_phi(p: f64) -> f64 {
         1.421_511_758_316_445_888_7e-7,
         2.044_263_103_389_939_785_64e-15,
     ];
+}
+
+/// The standard normal quantile Φ⁻¹(p) for p in (0, 1), to about 1 part
+/// in 10¹⁶: Wichura's algorithm AS 241, PPND16 (*Appl. Statist.*
+/// 37:477–484, 1988), rational approximations in three ranges of p.
+/// ±∞ at p = 0 or 1; NaN outside [0, 1].
+pub fn inverse_phi(p: f64) -> f64 {
     if !(0.0..=1.0).contains(&p) {
         return f64::NAN;
     }
     let q = p - 0.5;
     if q.abs() <= 0.425 {
         let r = 0.180_625 - q * q;
-        return q * poly(&A, r) / poly(&B, r);
+        return q * poly(&ppnd16::A, r) / poly(&ppnd16::B, r);
     }
     let tail = if q < 0.0 { p } else { 1.0 - p };
     if tail == 0.0 {
@@ -210,9 +215,9 @@ pub fn inverse_phi(p: f64) -> f64 {
     }
     let r = (-tail.ln()).sqrt();
     let x = if r <= 5.0 {
-        poly(&C, r - 1.6) / poly(&D, r - 1.6)
+        poly(&ppnd16::C, r - 1.6) / poly(&ppnd16::D, r - 1.6)
     } else {
-        poly(&E, r - 5.0) / poly(&F, r - 5.0)
+        poly(&ppnd16::E, r - 5.0) / poly(&ppnd16::F, r - 5.0)
     };
     x.copysign(q)
 }
