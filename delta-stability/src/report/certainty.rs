@@ -371,6 +371,17 @@ pub struct HeadlineJson {
     pub throughout_at_most: f64,
     /// The factors by their total Sobol index for ζ, largest first.
     pub deciding: Vec<Deciding>,
+    /// The total indices for ζ at each Mach number, in the order of
+    /// `factors` (null where ζ did not vary).
+    pub factors: Vec<&'static str>,
+    pub total_indices_by_mach: Vec<IndicesAtMach>,
+}
+
+/// The total Sobol indices for ζ at one Mach number.
+#[derive(Debug, Clone, Serialize)]
+pub struct IndicesAtMach {
+    pub mach: f64,
+    pub total: Option<Vec<f64>>,
 }
 
 /// The section in summary.json.
@@ -437,6 +448,19 @@ impl Answer {
             throughout_at_least: least,
             throughout_at_most: most,
             deciding: self.deciding(),
+            factors: self.factors.clone(),
+            total_indices_by_mach: self
+                .indices
+                .iter()
+                .map(|s| IndicesAtMach {
+                    mach: s.mach,
+                    total: s
+                        .sobol
+                        .as_ref()
+                        .and_then(|x| x.damping_ratio.as_ref())
+                        .map(|ix| ix.iter().map(|i| i.total).collect()),
+                })
+                .collect(),
         }
     }
 
