@@ -39,10 +39,10 @@ pub struct Args {
     /// How the samples are drawn: random (ChaCha8, the default) or sobol
     /// (Owen-scrambled Sobol′ points, Burley 2020: an error nearer 1/N than
     /// 1/√N; best with N a power of two). Overrides the config's
-    /// `sampling` in [uncertainty].
+    /// `sampling` in `[uncertainty]`.
     #[arg(long, value_parser = ["random", "sobol"])]
     pub sampling: Option<String>,
-    /// Print one JSON object (keys file, samples, seed, sobol, inputs,
+    /// Print one JSON object (keys file, samples, seed, sobol, sampling, inputs,
     /// damping_models, results[]: mach, samples, evaluated, errors,
     /// first_error, standard_met, meets, fails, divergent {count, n, p, low,
     /// high}, short_period_level_a/b/c and phugoid_level {level_1 …
