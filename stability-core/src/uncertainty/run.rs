@@ -18,7 +18,9 @@ use rayon::prelude::*;
 /// scrambled Sobol′ points by their index ([`super::quasi`]).
 enum Points {
     Random(Box<ChaCha8Rng>),
-    Sobol(SobolSequence),
+    /// The sequence, and whether B's coordinates are needed (the Sobol
+    /// indices).
+    Sobol(SobolSequence, bool),
 }
 
 impl Points {
@@ -29,12 +31,13 @@ impl Points {
                 rng.set_stream(chunk);
                 Points::Random(Box::new(rng))
             }
-            Sampling::Sobol => Points::Sobol(SobolSequence::new(options.seed)),
+            Sampling::Sobol => Points::Sobol(SobolSequence::new(options.seed), options.sobol),
         }
     }
 
-    /// Row `index`'s scores of A and of B: random, A's then B's; Sobol′,
-    /// coordinates 0..k and k..2k of point `index` (Saltelli 2010 §3).
+    /// Row `index`'s scores of A and of B: random, A's then B's (B's drawn
+    /// whether or not, to keep the stream); Sobol′, coordinates 0..k and,
+    /// for the indices, k..2k of point `index` (Saltelli 2010 §3).
     #[inline]
     fn fill(&mut self, index: u64, za: &mut [f64], zb: &mut [f64]) {
         match self {
@@ -43,10 +46,13 @@ impl Points {
                     *z = rng.sample(StandardNormal);
                 }
             }
-            Points::Sobol(seq) => {
+            Points::Sobol(seq, with_b) => {
                 let k = za.len() as u32;
                 for (d, z) in za.iter_mut().enumerate() {
                     *z = seq.normal(index, d as u32);
+                }
+                if !*with_b {
+                    return;
                 }
                 for (d, z) in zb.iter_mut().enumerate() {
                     *z = seq.normal(index, k + d as u32);
