@@ -331,6 +331,7 @@ enum Command {
     ///   weights = [0.7, 0.3]
     ///   [uncertainty]
     ///   correlation = [{ between = ["i_b", "m_q"], rho = 0.3 }]
+    ///   sampling = "sobol"       # Owen-scrambled Sobol′ points; default random
     ///
     /// (lognormal: median or mu, and sigma, of ln x; uniform: low, high;
     /// triangular: low, mode, high; samples: values = [...] or file =

@@ -424,6 +424,7 @@ fn report_writes_the_figures_summary_and_page() {
         serde_json::from_str(&std::fs::read_to_string(dir.path().join("summary.json")).unwrap())
             .unwrap();
     assert_summary_findings(&summary);
+    assert_how_sure_reruns(&summary);
     let html = std::fs::read_to_string(dir.path().join("index.html")).unwrap();
     assert!(
         html.contains("fig33.svg")
@@ -498,6 +499,39 @@ fn assert_figures_are_whole(dir: &std::path::Path) {
             csv.lines().count() > 10 && !csv.contains("NaN") && !csv.contains("inf"),
             "fig{n}.csv"
         );
+    }
+}
+
+/// summary.json's section "how sure" (`report::certainty`): each headline's
+/// counts by Mach number are those its stated command gives, run as
+/// written.
+fn assert_how_sure_reruns(summary: &serde_json::Value) {
+    let headlines = summary["how_sure"]["headlines"].as_array().unwrap();
+    assert_eq!(headlines.len(), 2);
+    for h in headlines {
+        let command = h["command"].as_str().unwrap();
+        let mut args: Vec<&str> = command.split_whitespace().skip(1).collect();
+        args.push("--json");
+        let v = json(&run_ok(&args));
+        let (ours, theirs) = (
+            h["by_mach"].as_array().unwrap(),
+            v["results"].as_array().unwrap(),
+        );
+        assert_eq!(ours.len(), theirs.len(), "{command}");
+        let fails = h["conclusion"] == "45-transonic";
+        for (a, b) in ours.iter().zip(theirs) {
+            let met = &b["standard_met"];
+            let (count, n) = (met["count"].as_u64().unwrap(), met["n"].as_u64().unwrap());
+            let claimed = if fails { n - count } else { count };
+            assert_eq!(a["mach"], b["mach"], "{command}");
+            assert_eq!(
+                a["count"].as_u64(),
+                Some(claimed),
+                "{command} at {}",
+                a["mach"]
+            );
+            assert_eq!(a["n"].as_u64(), Some(n));
+        }
     }
 }
 

@@ -209,6 +209,7 @@ def uncertainty(
     damping: Optional[str] = None,
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
+    sampling: Optional[str] = None,
 ):  # -> pandas.DataFrame
     """The config's ``[uncertainty]`` study at each Mach number: what
     ``delta-stability uncertainty`` computes (docs/uncertainty.md), by the
@@ -222,7 +223,10 @@ def uncertainty(
     number, a list or ``"A:B:STEP"``; ``samples`` Monte Carlo samples a Mach
     number; the same ``seed`` gives the same numbers on any thread count;
     ``sobol=True`` adds the first-order and total Sobol indices (Saltelli et
-    al. 2010; Jansen 1999) for the margin Δm_θ̇ (eq 41) and for ζ.
+    al. 2010; Jansen 1999) for the margin Δm_θ̇ (eq 41) and for ζ;
+    ``sampling="sobol"`` draws Owen-scrambled Sobol′ points (Burley 2020)
+    instead of random ones (default: the config's ``sampling``, else
+    ``"random"``), an error nearer 1/N than 1/√N.
 
     Returns a ``pandas.DataFrame`` in long form, one row per Mach number and
     quantity: columns ``mach``, ``quantity`` (``p_standard_met``,
@@ -248,6 +252,7 @@ def uncertainty(
         damping=damping,
         aero=aero,
         omega_bar=omega_bar,
+        sampling=sampling,
     )
     df = pd.read_csv(io.StringIO(csv))
     df.attrs["results"] = json.loads(text)

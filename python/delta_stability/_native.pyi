@@ -197,6 +197,7 @@ def uncertainty_run(
     damping: Optional[str] = None,
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
+    sampling: Optional[str] = None,
 ) -> tuple[str, str]:
     """The raw result of ``delta_stability.uncertainty``: the JSON of
     ``delta-stability uncertainty --json`` and its long CSV."""

@@ -9,18 +9,20 @@ use crate::errors::{argument, failure, input_error};
 use crate::guard;
 use crate::overrides::{Model, overridden};
 use pyo3::prelude::*;
-use stability_core::uncertainty::Options;
+use stability_core::uncertainty::{Options, Sampling};
 use stability_io::diag::InputError;
 use stability_io::sweep::parse_values;
 use stability_io::uncertainty::{CSV_HEADER, UncertaintyJson, csv_rows};
 
 /// The study of `config` (a path or a dict with an `uncertainty` table) at
 /// the Mach numbers `mach` ("A:B:STEP", a list or one value): `samples`
-/// a Mach number, `seed`, and with `sobol` the Sobol indices. Returns the
+/// a Mach number, `seed`, with `sobol` the Sobol indices, and `sampling`
+/// "random" or "sobol" (Owen-scrambled Sobol′ points; default: the
+/// config's `sampling`, else random). Returns the
 /// JSON (a str, `delta-stability uncertainty --json`'s) and the long CSV
 /// (mach, quantity, value, low, high).
 #[pyfunction]
-#[pyo3(signature = (config, /, *, mach, samples=10_000, seed=1, sobol=false, damping=None, aero=None, omega_bar=None))]
+#[pyo3(signature = (config, /, *, mach, samples=10_000, seed=1, sobol=false, damping=None, aero=None, omega_bar=None, sampling=None))]
 #[allow(clippy::too_many_arguments)] // the keywords of the Python function
 pub fn uncertainty_run(
     py: Python<'_>,
@@ -32,6 +34,7 @@ pub fn uncertainty_run(
     damping: Option<&str>,
     aero: Option<&str>,
     omega_bar: Option<f64>,
+    sampling: Option<&str>,
 ) -> PyResult<(String, String)> {
     guard(|| {
         let machs: Vec<f64> = match mach.extract::<String>() {
@@ -61,10 +64,18 @@ pub fn uncertainty_run(
                     "the config has no [uncertainty] table: give a distribution for an input, e.g. {\"uncertainty\": {\"i_b\": {\"dist\": \"normal\", \"relative_sd\": 0.1}}}",
                 ))
             })?;
+        let sampling = match sampling {
+            Some(name) => Sampling::parse(name)
+                .ok_or_else(|| argument("sampling", "\"random\" or \"sobol\""))?,
+            None => stability_io::config::uncertainty::sampling(&cfg)
+                .map_err(failure)?
+                .unwrap_or_default(),
+        };
         let options = Options {
             samples,
             seed,
             sobol,
+            sampling,
         };
         let results = py.detach(|| study.run(&machs, &options, &|_| {}));
         let view = UncertaintyJson::new(&cfg.path, &study, &options, &results);

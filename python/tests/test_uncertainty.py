@@ -68,3 +68,16 @@ def test_a_bad_table_is_an_input_error_naming_its_field():
     cfg = dict(BASE, uncertainty={"i_b": {"dist": "normal", "sd": -1.0}})
     with pytest.raises(ds.InputError, match=r"\[uncertainty.i_b\] sd"):
         ds.uncertainty(cfg, mach=0.9, samples=10)
+
+
+def test_sobol_sampling_is_the_command_lines_and_the_configs_by_default(cli):
+    # the example says sampling = "sobol"; sampling="random" overrides it
+    path = str(EXAMPLES / "delta-45-how-sure.toml")
+    df = ds.uncertainty(path, mach="1.2,1.4", samples=256, seed=1953)
+    assert df.attrs["results"]["sampling"] == "sobol"
+    out = cli.json("uncertainty", path, "--mach", "1.2,1.4", "--samples", "256", "--seed", "1953")
+    assert df.attrs["results"]["results"] == out["results"]
+    random = ds.uncertainty(path, mach="1.2,1.4", samples=256, seed=1953, sampling="random")
+    assert random.attrs["results"]["sampling"] == "random"
+    with pytest.raises(ds.InputError, match="sampling"):
+        ds.uncertainty(path, mach=1.2, samples=16, sampling="sobl")

@@ -10,6 +10,8 @@
 //!   analysis;
 //! - `quartic_only_sobol`: the same with the Sobol design (k + 2 = 4
 //!   evaluations a row: 1024 rows);
+//! - `quartic_only_quasi`: `quartic_only` from Owen-scrambled Sobol′
+//!   points (`--sampling sobol`);
 //! - `design_point_per_sample`: 1024 samples with the c.g. uncertain too,
 //!   each a design point;
 //! - `faired_lattice`: 256 samples of the default `faired` model at
@@ -22,7 +24,7 @@ use divan::counter::ItemsCount;
 use divan::{Bencher, black_box};
 use stability_core::case::{Case, DampingModel, evaluate_point};
 use stability_core::study::report_wing;
-use stability_core::uncertainty::{Dist, ErrorKind, Input, Options, Quantity, Study};
+use stability_core::uncertainty::{Dist, ErrorKind, Input, Options, Quantity, Sampling, Study};
 
 fn main() {
     divan::main();
@@ -70,6 +72,11 @@ fn inputs(cg: bool) -> Vec<Input> {
 
 /// `samples` of `study` at `mach` on one thread.
 fn run(b: Bencher, study: &Study, mach: f64, samples: u64, sobol: bool) {
+    run_with(b, study, mach, samples, sobol, Sampling::Random);
+}
+
+/// `samples` of `study` at `mach` on one thread, drawn by `sampling`.
+fn run_with(b: Bencher, study: &Study, mach: f64, samples: u64, sobol: bool, sampling: Sampling) {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(1)
         .build()
@@ -79,6 +86,7 @@ fn run(b: Bencher, study: &Study, mach: f64, samples: u64, sobol: bool) {
         samples,
         seed: 1,
         sobol,
+        sampling,
     };
     b.counter(ItemsCount::new(samples))
         .bench_local(|| pool.install(|| black_box(at.run(&options, &|_| {}))));
@@ -115,6 +123,21 @@ fn quartic_only_sobol(b: Bencher) {
     )
     .unwrap();
     run(b, &s, 1.5, 1024, true);
+}
+
+/// `quartic_only` drawn from the scrambled Sobol′ sequence: what its
+/// points and Φ⁻¹ cost beside ChaCha8's normals.
+#[divan::bench]
+fn quartic_only_quasi(b: Bencher) {
+    let s = Study::new(
+        base(1.5, DampingModel::FairedSlender),
+        None,
+        inputs(false),
+        &[],
+        &[],
+    )
+    .unwrap();
+    run_with(b, &s, 1.5, 4096, false, Sampling::Sobol);
 }
 
 #[divan::bench]

@@ -10,7 +10,9 @@ use stability_core::analysis::Analysis;
 use stability_core::case::{Case, DampingModel, evaluate};
 use stability_core::criteria::Verdict;
 use stability_core::study::report_wing;
-use stability_core::uncertainty::{Dist, ErrorKind, Input, Options, Quantity, Study, Summary};
+use stability_core::uncertainty::{
+    Dist, ErrorKind, Input, Options, Quantity, Sampling, Study, Summary,
+};
 
 /// The 60° delta at M = 0.9 with the quasi-steady slender fairing.
 fn base() -> Case {
@@ -75,6 +77,7 @@ fn a_single_uniform_input_gives_the_fraction_of_its_range_and_sobol_indices_of_o
         samples: 20_000,
         seed: 3,
         sobol: true,
+        sampling: Sampling::Random,
     };
     let s = &study.run(&[0.9], &options, &|_| {})[0];
     assert_eq!((s.samples, s.evaluated, s.errors), (20_000, 20_000, 0));
@@ -131,6 +134,7 @@ fn the_probabilities_agree_with_a_plain_loop_monte_carlo() {
         samples: n,
         seed: 11,
         sobol: false,
+        sampling: Sampling::Random,
     };
     let s = &study.run(&[0.9], &options, &|_| {})[0];
     assert_eq!(s.errors, 0);
@@ -191,6 +195,7 @@ fn run_on(threads: usize, study: &Study) -> Vec<Summary> {
         samples: 40_000,
         seed: 123_456_789,
         sobol: true,
+        sampling: Sampling::Random,
     };
     pool.install(|| study.run(&[0.9, 1.5], &options, &|_| {}))
 }
@@ -219,6 +224,7 @@ fn a_seed_gives_the_same_bits_on_1_2_and_8_threads() {
         samples: 3000,
         seed: 5,
         sobol: false,
+        sampling: Sampling::Random,
     };
     let on = |t| {
         let pool = rayon::ThreadPoolBuilder::new()
@@ -248,6 +254,7 @@ fn model_form_uncertainty_weighs_each_theorys_probability() {
         samples: 20_000,
         seed: 9,
         sobol: true,
+        sampling: Sampling::Random,
     };
     let at = |b: Case| Case { mach: 1.5, ..b };
     let alone = |m: DampingModel| {
@@ -284,6 +291,7 @@ fn samples_without_a_result_are_counted_not_fatal() {
         samples: 10_000,
         seed: 1,
         sobol: true,
+        sampling: Sampling::Random,
     };
     let s = &study.run(&[0.9], &options, &|_| {})[0];
     let p_neg = 0.158_655_253_931_457; // Φ(−1)

@@ -36,6 +36,8 @@ pub struct UncertaintyJson<'a> {
     pub samples: u64,
     pub seed: u64,
     pub sobol: bool,
+    /// "random" or "sobol" (Owen-scrambled Sobol′ points).
+    pub sampling: &'static str,
     pub inputs: Vec<InputJson>,
     pub damping_models: Vec<&'static str>,
     pub results: &'a [Summary],
@@ -66,6 +68,7 @@ impl<'a> UncertaintyJson<'a> {
             samples: options.samples,
             seed: options.seed,
             sobol: options.sobol,
+            sampling: options.sampling.name(),
             inputs,
             damping_models: study.models().iter().map(|m| m.name()).collect(),
             results,

@@ -11,6 +11,7 @@
 
 use crate::Failure;
 use crate::output::{AtomicDir, Refused};
+use crate::report::certainty::Certainty;
 use crate::report::conclusions::{self, Judged};
 use crate::report::manifest::{self, MANIFEST, Manifest};
 use crate::report::summary::{self, Findings};
@@ -129,7 +130,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     }
     super::report_design::refuse_design_options(args)?;
     let out = Path::new(&args.out);
-    let bar = progress_bar(SECTIONS.len() + 3);
+    let bar = progress_bar(SECTIONS.len() + 4);
     let mut done = None;
     write_report(out, |write| {
         bar.set_message("the 45° and 60° deltas across Mach number");
@@ -152,19 +153,33 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         bar.inc(1);
         bar.set_message("conclusions, swept over i_B and C_L·M²");
         let judged = conclusions::judge_all(&findings);
-        let summary = summary::summary_json(&findings, &judged);
-        crate::output::finite("summary.json", &summary)?;
+        bar.inc(1);
+        bar.set_message("how sure: the headline conclusions as probabilities");
+        let sure = Certainty::new().map_err(|m| {
+            Failure::Io(IoError::new(
+                "cannot weigh the headline conclusions",
+                out,
+                m,
+            ))
+        })?;
+        let plate = sure.plate();
+        write_plate(write, out, &plate)?;
+        let summary = summary_with(summary::summary_json(&findings, &judged), &sure)?;
         let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
         write("summary.json", json.as_bytes())?;
         write(
             "index.html",
-            html::index_html(&sections, &judged).as_bytes(),
+            html::index_html(&sections, &judged, Some((&sure, &plate))).as_bytes(),
         )?;
         for (name, text) in html::DOCS {
             write(name, text.as_bytes())?;
         }
-        let figures: usize = sections.iter().map(|(_, p)| p.len()).sum();
-        done = Some((figures, terminal_summary(&findings, &judged)));
+        let figures = 1 + sections.iter().map(|(_, p)| p.len()).sum::<usize>();
+        let mut text = terminal_summary(&findings, &judged);
+        for a in &sure.answers {
+            text.push_str(&format!("  how sure: {}\n", a.sentence()));
+        }
+        done = Some((figures, text));
         Ok(())
     })?;
     bar.finish_and_clear();
@@ -174,6 +189,28 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         out.display(),
     );
     crate::output::print(&text)
+}
+
+/// summary.json: the findings and conclusions, then the section "how
+/// sure" under `how_sure` ([`crate::report::certainty::CertaintyJson`]).
+#[derive(serde::Serialize)]
+struct SummaryWithHowSure<'a> {
+    #[serde(flatten)]
+    summary: summary::SummaryJson<'a>,
+    how_sure: crate::report::certainty::CertaintyJson,
+}
+
+/// [`SummaryWithHowSure`], every number checked finite.
+fn summary_with<'a>(
+    summary: summary::SummaryJson<'a>,
+    sure: &Certainty,
+) -> Result<SummaryWithHowSure<'a>, Failure> {
+    let s = SummaryWithHowSure {
+        summary,
+        how_sure: sure.json(),
+    };
+    crate::output::finite("summary.json", &s)?;
+    Ok(s)
 }
 
 /// What the terminal shows of the findings: each wing's intervals and the

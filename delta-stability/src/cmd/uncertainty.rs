@@ -1,5 +1,5 @@
 //! `delta-stability uncertainty CONFIG --mach A:B:STEP --samples N [--seed S]
-//! [--sobol] [--json] [-o OUT.csv|OUT.json]`: the config's `[uncertainty]`
+//! [--sobol] [--sampling random|sobol] [--json] [-o OUT.csv|OUT.json]`: the config's `[uncertainty]`
 //! study ([`stability_io::config::uncertainty`]) run by Monte Carlo at each
 //! Mach number ([`stability_core::uncertainty`]), with a progress bar.
 
@@ -8,7 +8,7 @@ use crate::args::ModelArgs;
 use crate::output::AtomicFile;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use stability_core::display::sig;
-use stability_core::uncertainty::{Options, Summary};
+use stability_core::uncertainty::{Options, Sampling, Summary};
 use stability_io::config::overridden;
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
@@ -36,7 +36,13 @@ pub struct Args {
     /// margin Δm_θ̇ (eq 41) and for ζ (k + 2 evaluations a sample, k inputs).
     #[arg(long)]
     pub sobol: bool,
-    /// Print one JSON object (keys file, samples, seed, sobol, inputs,
+    /// How the samples are drawn: random (ChaCha8, the default) or sobol
+    /// (Owen-scrambled Sobol′ points, Burley 2020: an error nearer 1/N than
+    /// 1/√N; best with N a power of two). Overrides the config's
+    /// `sampling` in `[uncertainty]`.
+    #[arg(long, value_parser = ["random", "sobol"])]
+    pub sampling: Option<String>,
+    /// Print one JSON object (keys file, samples, seed, sobol, sampling, inputs,
     /// damping_models, results[]: mach, samples, evaluated, errors,
     /// first_error, standard_met, meets, fails, divergent {count, n, p, low,
     /// high}, short_period_level_a/b/c and phugoid_level {level_1 …
@@ -81,10 +87,15 @@ pub fn run(o: &Args) -> Result<(), Failure> {
         )
     })?;
     let machs = parse_range("mach", &o.mach).map_err(&bad)?;
+    let sampling = match o.sampling.as_deref().and_then(Sampling::parse) {
+        Some(s) => s,
+        None => stability_io::config::uncertainty::sampling(&cfg)?.unwrap_or_default(),
+    };
     let options = Options {
         samples: o.samples,
         seed: o.seed,
         sobol: o.sobol,
+        sampling,
     };
     let bar = progress_bar(o.samples * machs.len() as u64);
     let mut results = Vec::with_capacity(machs.len());
@@ -106,7 +117,7 @@ pub fn run(o: &Args) -> Result<(), Failure> {
     if o.json {
         crate::output::print_json(&o.config, &value)
     } else {
-        crate::output::print(&page(&results, &study.factor_names(), o))
+        crate::output::print(&page(&results, &study.factor_names(), o, sampling))
     }
 }
 
@@ -143,7 +154,7 @@ fn write(
 }
 
 /// The page: one line per Mach number, then the Sobol indices.
-fn page(results: &[Summary], factors: &[&str], o: &Args) -> String {
+fn page(results: &[Summary], factors: &[&str], o: &Args, sampling: Sampling) -> String {
     let pct = |p: &stability_core::uncertainty::stats::Proportion| {
         format!("{} [{}, {}]", sig(p.p, 3), sig(p.low, 3), sig(p.high, 3))
     };
@@ -180,9 +191,15 @@ fn page(results: &[Summary], factors: &[&str], o: &Args) -> String {
         ]);
     }
     let mut s = format!(
-        "Uncertainty of {}: {} samples a Mach number, seed {}; probabilities with 95 % Wilson intervals\n\
+        "Uncertainty of {}: {} samples a Mach number ({}), seed {}; probabilities with 95 % Wilson intervals\n\
          §8: the short period halves within one cycle (eq 41); meets: that, and no mode grows; divergent: a mode grows\n",
-        o.config, o.samples, o.seed
+        o.config,
+        o.samples,
+        match sampling {
+            Sampling::Random => "random",
+            Sampling::Sobol => "Owen-scrambled Sobol′ points",
+        },
+        o.seed
     );
     s.push_str(&crate::page::aligned(&table));
     for r in results.iter().filter(|r| r.first_error.is_some()) {

@@ -5,6 +5,7 @@
 //! it.
 
 use super::Plate;
+use super::certainty::Certainty;
 use super::conclusions::{Agreement, Judged};
 use stability_core::display::sig;
 use stability_core::study::report_wing;
@@ -162,15 +163,79 @@ fn figure(p: &Plate) -> String {
     )
 }
 
-/// The page: the introduction, the contents, the conclusions, then each
-/// section (its title, from `report::SECTIONS`) with its figures.
-pub fn index_html(sections: &[(&str, Vec<Plate>)], judged: &[Judged]) -> String {
+/// The section "How sure are the headline conclusions?": the inputs'
+/// distributions and their sources, each headline's probabilities by Mach
+/// number with the bounds on "throughout" and the deciding inputs, the
+/// command that reruns it, and the figure ([`super::certainty`]).
+fn how_sure(c: &Certainty, plate: &Plate) -> String {
+    let mut s = format!(
+        "<section id=\"{HOW_SURE}\"><h2>How sure are the headline conclusions?</h2><p>The note answers yes or no; its inputs are not known that well. Here each headline conclusion is a probability under stated distributions of i_B and C_L·M² (which the note does not state), of the c.g., and of the damping theory itself (model-form uncertainty), by {} Owen-scrambled Sobol′ points at each Mach number (seed {}; each 95 % Wilson interval at most ±{}); the deciding inputs by their total Sobol indices for the short period's ζ ({} rows of Saltelli's design), averaged over Mach number.</p>\n",
+        c.samples,
+        super::certainty::SEED,
+        super::certainty::percent(
+            stability_core::uncertainty::stats::Z95 * (0.25 / c.samples as f64).sqrt()
+        ),
+        c.sobol_samples,
+    );
+    for (a, j) in c.answers.iter().zip(c.json().headlines) {
+        let _ = write!(
+            s,
+            "<h3>{}</h3><p>{}</p><table><tr><th>input</th><th>distribution</th><th>from</th></tr>",
+            esc(&super::certainty::capitalised(a.headline.question)),
+            esc(&a.sentence())
+        );
+        for i in &j.inputs {
+            let _ = write!(
+                s,
+                "<tr><td>{}</td><td>{}</td><td>{}</td></tr>",
+                esc(i.name),
+                esc(&i.distribution),
+                esc(i.source)
+            );
+        }
+        let _ = writeln!(
+            s,
+            "</table><p><small>Rerun: <code>{}</code> (add <code>--sobol</code> for the indices); the file states each spread.</small></p>",
+            esc(&j.command)
+        );
+    }
+    s.push_str(&figure(plate));
+    s.push_str("</section>\n");
+    s
+}
+
+/// The anchor of the section "How sure are the headline conclusions?".
+const HOW_SURE: &str = "how-sure-section";
+
+/// The page: the introduction, the contents, the conclusions (with how
+/// sure the headline ones are, when `sure` is given), then each section
+/// (its title, from `report::SECTIONS`) with its figures, and the section
+/// on how sure.
+pub fn index_html(
+    sections: &[(&str, Vec<Plate>)],
+    judged: &[Judged],
+    sure: Option<(&Certainty, &Plate)>,
+) -> String {
     let mut s = String::from(HEAD);
     s.push('\n');
     s.push_str(&introduction());
     s.push('\n');
-    s.push_str(&contents(sections, judged));
+    let mut nav = contents(sections, judged);
+    if sure.is_some() {
+        nav = nav.replace(
+            "<li><a href=\"summary.json\">",
+            &format!("<li><a href=\"#{HOW_SURE}\">How sure are the headline conclusions?</a>: Fig U1</li>\n<li><a href=\"summary.json\">"),
+        );
+    }
+    s.push_str(&nav);
     s.push_str(&conclusions(judged));
+    if let Some((c, _)) = sure {
+        let _ = writeln!(
+            s,
+            "<p><a href=\"#{HOW_SURE}\">{}</a></p>",
+            esc(&c.conclusion_line())
+        );
+    }
     for (k, (title, plates)) in sections.iter().enumerate() {
         let _ = writeln!(
             s,
@@ -183,6 +248,9 @@ pub fn index_html(sections: &[(&str, Vec<Plate>)], judged: &[Judged]) -> String 
             s.push('\n');
         }
         s.push_str("</section>\n");
+    }
+    if let Some((c, p)) = sure {
+        s.push_str(&how_sure(c, p));
     }
     s.push_str("</body></html>\n");
     s

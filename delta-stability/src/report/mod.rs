@@ -7,11 +7,13 @@
 //! §11 responses ([`responses`], 37–38), with the regime bands and sonic
 //! edges of [`regimes`] on those against Mach number — then the
 //! [`summary`] of what was found, the note's [`conclusions`] set beside
-//! it, and the page ([`html`]); and what README.md shows of it
-//! ([`readme`]).
+//! it, how sure the two headline conclusions are as probabilities
+//! ([`certainty`]), and the page ([`html`]); and what README.md shows of
+//! it ([`readme`]).
 //!
 //! Everything here computes; writing the files is `cmd::report`'s.
 
+pub mod certainty;
 pub mod coefficients;
 pub mod conclusions;
 pub mod damping;

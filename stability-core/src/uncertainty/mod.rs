@@ -18,6 +18,9 @@
 //! draws the same samples (common random numbers: the curves through Mach
 //! are smooth, their differences sharper than their values). Memory does
 //! not grow with the sample count ([`stats::Reservoir`] for quantiles).
+//! With [`Sampling::Sobol`] row i is point i of one Owen-scrambled Sobol′
+//! sequence seeded from the seed ([`quasi`]), whichever chunk and thread
+//! it falls to: the same bits again, with an error nearer 1/N than 1/√N.
 //!
 //! # Cost
 //! Where the model is quasi-steady at the Mach number and only μ₁, i_B
@@ -29,10 +32,12 @@
 //! [`crate::lifting_surface::FrequencyTable`] (shared by every sample).
 
 pub mod dist;
+pub mod quasi;
 mod run;
 pub mod sobol;
 pub mod stats;
 mod study;
 
 pub use dist::Dist;
+pub use quasi::Sampling;
 pub use study::*;

@@ -1,6 +1,7 @@
 //! The run: chunks of rows drawn from their own streams, evaluated in
 //! parallel, their sums added in chunk order.
 
+use super::quasi::{Sampling, SobolSequence};
 use super::sobol::SobolSums;
 use super::stats::{Proportion, Reservoir};
 use super::study::{
@@ -12,6 +13,54 @@ use rand::rngs::ChaCha8Rng;
 use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
 use rayon::prelude::*;
+
+/// Where a chunk's normal scores come from: its ChaCha8 stream, or the
+/// scrambled Sobol′ points by their index ([`super::quasi`]).
+enum Points {
+    Random(Box<ChaCha8Rng>),
+    /// The sequence, and whether B's coordinates are needed (the Sobol
+    /// indices).
+    Sobol(SobolSequence, bool),
+}
+
+impl Points {
+    fn new(options: &Options, chunk: u64) -> Points {
+        match options.sampling {
+            Sampling::Random => {
+                let mut rng = ChaCha8Rng::seed_from_u64(options.seed);
+                rng.set_stream(chunk);
+                Points::Random(Box::new(rng))
+            }
+            Sampling::Sobol => Points::Sobol(SobolSequence::new(options.seed), options.sobol),
+        }
+    }
+
+    /// Row `index`'s scores of A and of B: random, A's then B's (B's drawn
+    /// whether or not, to keep the stream); Sobol′, coordinates 0..k and,
+    /// for the indices, k..2k of point `index` (Saltelli 2010 §3).
+    #[inline]
+    fn fill(&mut self, index: u64, za: &mut [f64], zb: &mut [f64]) {
+        match self {
+            Points::Random(rng) => {
+                for z in za.iter_mut().chain(zb.iter_mut()) {
+                    *z = rng.sample(StandardNormal);
+                }
+            }
+            Points::Sobol(seq, with_b) => {
+                let k = za.len() as u32;
+                for (d, z) in za.iter_mut().enumerate() {
+                    *z = seq.normal(index, d as u32);
+                }
+                if !*with_b {
+                    return;
+                }
+                for (d, z) in zb.iter_mut().enumerate() {
+                    *z = seq.normal(index, k + d as u32);
+                }
+            }
+        }
+    }
+}
 
 /// The sums of consecutive rows.
 #[derive(Debug, Clone, Default)]
@@ -86,8 +135,7 @@ impl AtMach<'_> {
     /// Rows `rows` of chunk `chunk` (a generator on stream `chunk`).
     fn chunk(&self, options: &Options, chunk: u64, rows: usize, cases: &mut [Case]) -> Tally {
         let k = self.factors();
-        let mut rng = ChaCha8Rng::seed_from_u64(options.seed);
-        rng.set_stream(chunk);
+        let mut points = Points::new(options, chunk);
         let mut tally = Tally {
             sobol: options
                 .sobol
@@ -96,10 +144,12 @@ impl AtMach<'_> {
         };
         let (mut za, mut zb, mut x) = ([0.0; MAX_FACTORS], [0.0; MAX_FACTORS], [0.0; MAX_FACTORS]);
         let mut ab = [[f64::NAN; MAX_FACTORS]; 2];
-        for _ in 0..rows {
-            for z in za[..k].iter_mut().chain(zb[..k].iter_mut()) {
-                *z = rng.sample(StandardNormal);
-            }
+        for row in 0..rows {
+            points.fill(
+                chunk * CHUNK as u64 + row as u64,
+                &mut za[..k],
+                &mut zb[..k],
+            );
             let fa = self.sample(&za[..k], &mut x, cases);
             tally.add(&fa);
             let Some(sums) = &mut tally.sobol else {

@@ -1,6 +1,7 @@
 //! The study: its inputs, one sample's evaluation, and the run.
 
 use super::dist::{CorrelationError, Dist, DistError, cholesky, phi};
+use super::quasi::Sampling;
 use super::sobol::Indices;
 use super::stats::{Proportion, Quantiles};
 use crate::Derivatives;
@@ -535,6 +536,8 @@ pub struct Options {
     /// (k + 2 design points a row). The probabilities are of A's rows
     /// whether or not.
     pub sobol: bool,
+    /// Pseudo-random or Owen-scrambled Sobol′ points ([`super::quasi`]).
+    pub sampling: Sampling,
 }
 
 /// The shares of the MIL-F-8785C levels among the evaluated samples.

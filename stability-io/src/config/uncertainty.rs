@@ -30,6 +30,7 @@
 //!
 //! [uncertainty]
 //! correlation = [{ between = ["i_b", "cg"], rho = 0.5 }]
+//! sampling = "sobol"           # Owen-scrambled Sobol′ points; default "random"
 //! ```
 //!
 //! Inputs: `mu1`, `i_b`, `cl_m2`, `cg`; `altitude`, `mass`, `I_y` (a
@@ -50,7 +51,7 @@ use serde::Deserialize;
 use stability_core::case::DampingModel;
 use stability_core::flight::{Air, Altitude, Mass};
 use stability_core::uncertainty::dist::Dist;
-use stability_core::uncertainty::{ErrorKind, Input, Quantity, Study, StudyError};
+use stability_core::uncertainty::{ErrorKind, Input, Quantity, Sampling, Study, StudyError};
 use std::collections::BTreeMap;
 use std::path::Path;
 use toml::Spanned;
@@ -125,6 +126,8 @@ pub fn read(cfg: &Config) -> Result<Option<Study>, Failure> {
             "model" => {
                 models = model_form(v).map_err(|m| at(span, "[uncertainty.model]".into(), m))?
             }
+            // how to sample, not a distribution: [`sampling`]'s
+            "sampling" => {}
             _ => inputs.push(input(cfg, name, v, span)?),
         }
     }
@@ -142,6 +145,34 @@ pub fn read(cfg: &Config) -> Result<Option<Study>, Failure> {
             let span = table.get_ref().get(key).map_or(whole, |v| v.span());
             at(span, field, e.to_string())
         })
+}
+
+/// The config's `sampling = "random" | "sobol"` in `[uncertainty]`
+/// ([`stability_core::uncertainty::quasi`]), if it has one.
+pub fn sampling(cfg: &Config) -> Result<Option<Sampling>, Failure> {
+    let (path, text) = (cfg.path.as_str(), cfg.text());
+    let raw: WithUncertainty = toml::from_str(text).map_err(|e| toml_error(path, text, &e))?;
+    let Some(value) = raw
+        .uncertainty
+        .and_then(|t| t.into_inner().remove("sampling"))
+    else {
+        return Ok(None);
+    };
+    let span = value.span();
+    let name = value.get_ref().as_str();
+    let shown = name.map_or_else(|| value.get_ref().to_string(), str::to_string);
+    name.and_then(Sampling::parse).map(Some).ok_or_else(|| {
+        Failure::Input(InputError::at(
+            path,
+            text,
+            span,
+            "[uncertainty] sampling".to_string(),
+            format!(
+                "`{}` is not a sampling: write sampling = \"random\" (pseudo-random, the default) or \"sobol\" (Owen-scrambled Sobol′ points)",
+                quote(&shown)
+            ),
+        ))
+    })
 }
 
 /// The key of `[uncertainty]` a study's error is about ("" the table).
