@@ -18,6 +18,7 @@ pub mod body;
 pub mod downwash;
 pub mod increment;
 pub mod lattice;
+pub mod shares;
 pub mod supersonic;
 
 use crate::geometry::Trapezoid;
