@@ -19,6 +19,7 @@ pub mod downwash;
 pub mod increment;
 pub mod lattice;
 pub mod shares;
+pub mod sizing;
 pub mod supersonic;
 
 use crate::geometry::Trapezoid;
