@@ -294,6 +294,41 @@ enum Command {
     ///
     /// delta-stability sweep examples/delta-60.toml --mach 0.5:2:0.05 --cg 0.2:0.3:0.01 --mu1 50:450:100 -o sweep.csv
     Sweep(cmd::sweep::Args),
+    /// The smallest tailplane (or foreplane) that meets the one-cycle standard across Mach.
+    ///
+    /// The note's Fig 33 shows "the need of a tailplane" for the 45° delta
+    /// in 0.97 < M < 1.5; this finds how big. CONFIG's [tailplane] (or, with
+    /// --surface foreplane, its [foreplane]) is the family: its sweep,
+    /// taper, aspect ratio and apex x (and height z) are held and its area
+    /// S_T varied, every length scaled by √(S_T/S_T,given). The answer is
+    /// the smallest S_T at which the design point meets §8's standard — the
+    /// short period halves within one cycle, every root judged (no mode
+    /// grows) — at every Mach number of --mach, each evaluated as `analyze
+    /// CONFIG --mach M` would (the config's damping model, tables and flight
+    /// condition; --damping, --aero, --omega-bar, --datcom replace them).
+    ///
+    /// Printed: the area, its ratio to yours, the tail volume
+    /// V̄_T = S_T·l_T/(S·c̄) (l_T from the c.g. to the surface's M.A.C.
+    /// quarter chord; negative for a foreplane) and the verdict and cycles
+    /// to half amplitude at each Mach number; --json the same as one object.
+    ///
+    /// The search: the wing alone first (no surface needed?), then 25 areas
+    /// spaced geometrically from 1/1000 of the limit to the limit (the
+    /// wing's area, or --max-area), then bisection to 0.1 % between the
+    /// last that fails and the first that meets. The verdict need not be
+    /// monotone in area (a bigger tail moves the neutral point aft and
+    /// stiffens the short period as it damps it): the scan finds the first
+    /// meeting area on its grid, and a window narrower than one scan step
+    /// (×1.33) can be missed. When no area up to the limit meets, it says so
+    /// and prints the verdicts at the limit. A Mach number with no result
+    /// (outside a theory; below M = 1.2 until the multi-surface lattice is
+    /// merged) counts as not meeting, and its reason is printed.
+    ///
+    ///   delta-stability size-tail examples/aircraft/delta-45-tailed.toml --mach 1.2:2.0:0.1
+    ///
+    /// The configuration theory: docs/configurations.md.
+    #[command(verbatim_doc_comment)]
+    SizeTail(cmd::size_tail::Args),
     /// How each mode's root moves with each derivative: dλ/dp for every input.
     ///
     /// For each mode (short period, phugoid, aperiodic roots) and each of
@@ -357,6 +392,7 @@ fn main() -> ExitCode {
         Command::Sensitivity(a) => cmd::sensitivity::run(&a),
         Command::Report(a) => cmd::report::run(&a),
         Command::Sweep(a) => cmd::sweep::run(&a),
+        Command::SizeTail(a) => cmd::size_tail::run(&a),
         Command::Convert(a) => cmd::convert::run(&a),
         Command::Analyze(a) => cmd::analyze::run(&a),
         Command::Response(a) => cmd::response::run(&a),
