@@ -133,3 +133,32 @@ fn subsonic_configs_run_and_the_tail_damps() {
     assert!(dm < -0.15 && dm > -0.6, "{dm}");
     run_ok(&["size-tail", TAILED, "--mach", "0.8:1.5:0.1"]);
 }
+
+#[test]
+fn the_design_report_has_a_section_10_with_each_parts_damping() {
+    let dir = std::env::temp_dir().join(format!("cfg-report-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = dir.join("r");
+    run_ok(&[
+        "report",
+        TAILED,
+        "--mach",
+        "1.2,1.6",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let page = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(page.contains("<h2 id=\"configuration\">§10 The surfaces and body</h2>"));
+    assert!(page.contains("href=\"#configuration\""));
+    // the tail's m_θ̇ at M = 1.2 is analyze's share, to the page's 4 figures
+    let v = json(&run_ok(&["analyze", TAILED, "--mach", "1.2", "--json"]));
+    let tail = &v["configuration"]["parts"][1];
+    let m = num(&tail["m_q"]) + num(&tail["m_wdot"]);
+    let cell = format!("<td>{}</td>", stability_core::display::sig(m, 4));
+    let row = page
+        .lines()
+        .find(|l| l.contains("<td>tailplane</td>"))
+        .unwrap();
+    assert!(row.contains(&cell), "{row} lacks {cell}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
