@@ -74,7 +74,7 @@ pub fn page(path: &str, s: &Sizing) -> String {
         "Sizing the {name} of {path} (its sweep, taper, aspect ratio and apex fixed; area varied)\n"
     );
     let _ = match s.area {
-        Some(a) if a == 0.0 => writeln!(
+        Some(0.0) => writeln!(
             p,
             "  no {name} is needed: the wing alone meets the §8 standard at every Mach number"
         ),
