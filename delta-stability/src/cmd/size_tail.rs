@@ -16,9 +16,9 @@ use std::fmt::Write as _;
 /// Which surface is sized.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum SurfaceArg {
-    /// The config's [tailplane].
+    /// The config's `[tailplane]` table.
     Tailplane,
-    /// The config's [foreplane].
+    /// The config's `[foreplane]` table.
     Foreplane,
 }
 
