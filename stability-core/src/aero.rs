@@ -729,10 +729,11 @@ impl AeroModel {
         let (aw, hw) = (wing.lift_slope, wing.aerodynamic_centre);
         let a = Value::new(
             aw.value + inc.solution.lift_alpha,
-            aw.d_mach + inc.d_lift_alpha,
+            aw.d_mach + inc.d_lift_alpha.unwrap_or(0.0),
         );
         let mu = -hw.value * aw.value + inc.solution.moment_alpha;
-        let d_mu = -(hw.d_mach * aw.value + hw.value * aw.d_mach) + inc.d_moment_alpha;
+        let d_mu =
+            -(hw.d_mach * aw.value + hw.value * aw.d_mach) + inc.d_moment_alpha.unwrap_or(0.0);
         let h0 = Value::new(
             -mu / a.value,
             -(d_mu * a.value - mu * a.d_mach) / (a.value * a.value),

@@ -37,9 +37,10 @@ pub struct Increment {
     /// wing alone, as `Part::Wing` when the method gives one: the
     /// surfaces' interference on the wing). They sum to `solution`.
     pub parts: Vec<Contribution>,
-    /// d ℓ_α/dM and d μ_α/dM of `solution`.
-    pub d_lift_alpha: f64,
-    pub d_moment_alpha: f64,
+    /// d ℓ_α/dM and d μ_α/dM of `solution` (`None` from
+    /// [`Configuration::increment_at`], which does not compute them).
+    pub d_lift_alpha: Option<f64>,
+    pub d_moment_alpha: Option<f64>,
 }
 
 /// The six numbers of a [`Solution`].
@@ -126,6 +127,22 @@ impl Configuration {
     /// The increment at (M, ω̄) by the table's methods, with its parts and
     /// the Mach derivatives of its in-phase numbers.
     pub fn increment(&self, mach: f64, omega_bar: f64) -> Result<Increment, ConfigurationError> {
+        self.increment_with(mach, omega_bar, true)
+    }
+
+    /// As [`Configuration::increment`] without the Mach derivatives outside
+    /// the faired band (a third of the solves): the damping's, at each ω̄ of
+    /// a frequency iteration.
+    pub fn increment_at(&self, mach: f64, omega_bar: f64) -> Result<Increment, ConfigurationError> {
+        self.increment_with(mach, omega_bar, false)
+    }
+
+    fn increment_with(
+        &self,
+        mach: f64,
+        omega_bar: f64,
+        mach_derivatives: bool,
+    ) -> Result<Increment, ConfigurationError> {
         if !mach.is_finite() || mach < 0.0 {
             return Err(ConfigurationError::Geometry(format!(
                 "the Mach number must be finite and ≥ 0, not {mach}"
@@ -136,13 +153,21 @@ impl Configuration {
         }
         let sup = mach >= SUPERSONIC_FROM;
         let (solution, parts) = self.by_method(mach, omega_bar, sup)?;
+        if !mach_derivatives {
+            return Ok(Increment {
+                solution,
+                parts,
+                d_lift_alpha: None,
+                d_moment_alpha: None,
+            });
+        }
         let h = MACH_STEP.min(mach);
         let lo = self.by_method(mach - h, omega_bar, sup)?.0;
         let hi = self.by_method(mach + MACH_STEP, omega_bar, sup)?.0;
         let w = h + MACH_STEP;
         Ok(Increment {
-            d_lift_alpha: (hi.lift_alpha - lo.lift_alpha) / w,
-            d_moment_alpha: (hi.moment_alpha - lo.moment_alpha) / w,
+            d_lift_alpha: Some((hi.lift_alpha - lo.lift_alpha) / w),
+            d_moment_alpha: Some((hi.moment_alpha - lo.moment_alpha) / w),
             solution,
             parts,
         })
@@ -206,8 +231,8 @@ impl Configuration {
         Ok(Increment {
             solution: from_numbers(total, mach, omega_bar),
             parts,
-            d_lift_alpha: d[0],
-            d_moment_alpha: d[1],
+            d_lift_alpha: Some(d[0]),
+            d_moment_alpha: Some(d[1]),
         })
     }
 }
