@@ -161,6 +161,23 @@ enum Command {
     /// config's class; with neither that category is not assessed, and the
     /// page says so.
     ///
+    ///   [tailplane]           # optional, and/or [foreplane]: [planform]'s keys
+    ///   sweep = 45.0          #   (sweep, taper, one size) and its place:
+    ///   taper = 0.2
+    ///   area = 16.0
+    ///   x = 12.0              # apex aft of the wing's apex (negative: ahead)
+    ///   z = 0.0               # height above the wing's plane
+    ///   [body]                # optional: eq (43)'s forebody
+    ///   length_ahead = 8.0
+    ///   diameter = 1.5
+    ///
+    /// Their increment over the wing (the multi-surface lattice below
+    /// M = 0.9, linear supersonic theory with the tail in the wing's
+    /// downwash from M = 1.2, faired between) is added to the wing's lift
+    /// slope, aerodynamic centre and damping; the page and --json's
+    /// `configuration` give each part's share (docs/configurations.md;
+    /// examples/aircraft/delta-45-tailed.toml).
+    ///
     /// The margins: K_n of eq (42) (−dC_m/dC_L at constant C_L·M², from
     /// the quartic's E, so with the pitching moment's change with Mach
     /// number, m_u), H_m, the neutral point h_n (where m_w = 0 at constant
