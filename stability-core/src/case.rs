@@ -495,6 +495,12 @@ impl<'a> Point<'a> {
             case.h,
         )
         .map_err(ConfigurationError::from)?;
+        if case.mach >= faired::SUPERSONIC_FROM
+            && let Some(c) = case.aero.configuration_for(&case.planform)
+            && let Some(w) = crate::configuration::supersonic::downwash_warning(&c, case.mach)
+        {
+            damping.warnings.push(w);
+        }
         let own = &mut damping.derivatives;
         own.z_q += d.z_q;
         own.m_q += d.m_q;

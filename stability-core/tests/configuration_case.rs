@@ -193,3 +193,35 @@ fn the_transonic_fairing_meets_the_lattice_and_the_supersonic_theory() {
         assert!((a.moment_q - b.moment_q).abs() < 1e-4 * b.moment_q.abs());
     }
 }
+
+#[test]
+fn a_tail_inside_the_tips_mach_lines_is_warned_of() {
+    use stability_core::warnings::Warning;
+    // the tail's centre at 15 + ⅔·2.5 = 16.7 (2.5 c̄); the tips' Mach lines
+    // (tip trailing edge at x = 10, s = 10) meet the centre line at
+    // 10 + β·10 = 27.3 at M = 2 (4.10 c̄): warned; 400 aft: not
+    let (mut near, config) = tailed(2.0);
+    near.aero.configuration = Some(Arc::new(config.clone()));
+    let r = evaluate(&near).unwrap();
+    let found = r.warnings.iter().find_map(|w| match *w {
+        Warning::DownwashNearWing { at, from, .. } => Some((at, from)),
+        _ => None,
+    });
+    let (at, from) = found.expect("warned");
+    let cbar = 20.0 / 3.0;
+    assert!((at - (15.0 + 2.5 * 2.0 / 3.0) / cbar).abs() < 1e-12, "{at}");
+    assert!(
+        (from - (10.0 + 3f64.sqrt() * 10.0) / cbar).abs() < 1e-12,
+        "{from}"
+    );
+    let mut far = near.clone();
+    let mut c = config;
+    c.tailplane.as_mut().unwrap().x = 400.0;
+    far.aero.configuration = Some(Arc::new(c));
+    let r = evaluate(&far).unwrap();
+    assert!(
+        !r.warnings
+            .iter()
+            .any(|w| matches!(w, Warning::DownwashNearWing { .. }))
+    );
+}

@@ -91,6 +91,28 @@ impl Configuration {
     }
 }
 
+/// Where the far-wake downwash given a tailplane at Mach `mach` does not
+/// hold: the tail's aerodynamic centre (its own theory's) lies ahead of the
+/// point where the Mach lines from the wing's tips meet the centre line,
+/// x = (tip trailing edge) + β·s. Returns the warning (distances in wing
+/// M.A.C.s behind the wing's apex), or `None`.
+pub fn downwash_warning(config: &Configuration, mach: f64) -> Option<crate::warnings::Warning> {
+    let tail = config.tailplane.as_ref()?;
+    if !(mach > 1.0) {
+        return None;
+    }
+    let w = &config.wing;
+    let own = own_solution(&tail.shape, "the tailplane", mach, 0.0).ok()?;
+    let at = tail.x + tail.shape.x_mac() + own.aerodynamic_centre() * tail.shape.mac();
+    let beta = (mach * mach - 1.0).sqrt();
+    let from = w.leading_edge_at(w.semi_span) + w.tip_chord + beta * w.semi_span;
+    (at < from).then(|| crate::warnings::Warning::DownwashNearWing {
+        mach,
+        at: at / w.mac(),
+        from: from / w.mac(),
+    })
+}
+
 /// A body's sizes, positive and finite.
 fn check_body(body: &Body) -> Result<(), ConfigurationError> {
     for (what, v) in [
