@@ -98,7 +98,7 @@ impl Configuration {
 /// M.A.C.s behind the wing's apex), or `None`.
 pub fn downwash_warning(config: &Configuration, mach: f64) -> Option<crate::warnings::Warning> {
     let tail = config.tailplane.as_ref()?;
-    if !(mach > 1.0) {
+    if mach.is_nan() || mach <= 1.0 {
         return None;
     }
     let w = &config.wing;
