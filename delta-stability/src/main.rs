@@ -176,7 +176,7 @@ enum Command {
     /// downwash from M = 1.2, faired between) is added to the wing's lift
     /// slope, aerodynamic centre and damping; the page and --json's
     /// `configuration` give each part's share (docs/configurations.md;
-    /// examples/aircraft/delta-45-tailed.toml).
+    /// examples/delta-45-tailed.toml).
     ///
     /// The margins: K_n of eq (42) (−dC_m/dC_L at constant C_L·M², from
     /// the quartic's E, so with the pitching moment's change with Mach
@@ -341,7 +341,7 @@ enum Command {
     /// (outside a theory; below M = 1.2 until the multi-surface lattice is
     /// merged) counts as not meeting, and its reason is printed.
     ///
-    ///   delta-stability size-tail examples/aircraft/delta-45-tailed.toml --mach 1.2:2.0:0.1
+    ///   delta-stability size-tail examples/delta-45-tailed.toml --mach 1.2:2.0:0.1
     ///
     /// The configuration theory: docs/configurations.md.
     #[command(verbatim_doc_comment)]

@@ -6,7 +6,7 @@
 mod common;
 use common::{json, run_ok, stdout};
 
-const TAILED: &str = "examples/aircraft/delta-45-tailed.toml";
+const TAILED: &str = "examples/delta-45-tailed.toml";
 
 fn num(v: &serde_json::Value) -> f64 {
     v.as_f64().expect("a number")

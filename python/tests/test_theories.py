@@ -120,7 +120,7 @@ def test_a_tailed_config_goes_through_and_size_tail_finds_a_tail():
     import delta_stability as ds
 
     root = pathlib.Path(__file__).resolve().parents[2]
-    cfg = str(root / "examples" / "aircraft" / "delta-45-tailed.toml")
+    cfg = str(root / "examples" / "delta-45-tailed.toml")
     a = ds.analyze(cfg, mach=2.0).to_dict()
     parts = a["configuration"]["parts"]
     assert [p["part"] for p in parts] == ["wing", "tailplane"]
