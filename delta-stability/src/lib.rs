@@ -5,6 +5,7 @@
 
 pub mod args;
 pub mod cmd;
+pub mod configuration;
 pub mod engineering;
 pub mod output;
 pub mod overwrite;

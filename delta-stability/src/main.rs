@@ -161,6 +161,23 @@ enum Command {
     /// config's class; with neither that category is not assessed, and the
     /// page says so.
     ///
+    ///   [tailplane]           # optional, and/or [foreplane]: [planform]'s keys
+    ///   sweep = 45.0          #   (sweep, taper, one size) and its place:
+    ///   taper = 0.2
+    ///   area = 16.0
+    ///   x = 12.0              # apex aft of the wing's apex (negative: ahead)
+    ///   z = 0.0               # height above the wing's plane
+    ///   [body]                # optional: eq (43)'s forebody
+    ///   length_ahead = 8.0
+    ///   diameter = 1.5
+    ///
+    /// Their increment over the wing (the multi-surface lattice below
+    /// M = 0.9, linear supersonic theory with the tail in the wing's
+    /// downwash from M = 1.2, faired between) is added to the wing's lift
+    /// slope, aerodynamic centre and damping; the page and --json's
+    /// `configuration` give each part's share (docs/configurations.md;
+    /// examples/delta-45-tailed.toml).
+    ///
     /// The margins: K_n of eq (42) (−dC_m/dC_L at constant C_L·M², from
     /// the quartic's E, so with the pitching moment's change with Mach
     /// number, m_u), H_m, the neutral point h_n (where m_w = 0 at constant
@@ -294,6 +311,41 @@ enum Command {
     ///
     /// delta-stability sweep examples/delta-60.toml --mach 0.5:2:0.05 --cg 0.2:0.3:0.01 --mu1 50:450:100 -o sweep.csv
     Sweep(cmd::sweep::Args),
+    /// The smallest tailplane (or foreplane) that meets the one-cycle standard across Mach.
+    ///
+    /// The note's Fig 33 shows "the need of a tailplane" for the 45° delta
+    /// in 0.97 < M < 1.5; this finds how big. CONFIG's [tailplane] (or, with
+    /// --surface foreplane, its [foreplane]) is the family: its sweep,
+    /// taper, aspect ratio and apex x (and height z) are held and its area
+    /// S_T varied, every length scaled by √(S_T/S_T,given). The answer is
+    /// the smallest S_T at which the design point meets §8's standard — the
+    /// short period halves within one cycle, every root judged (no mode
+    /// grows) — at every Mach number of --mach, each evaluated as `analyze
+    /// CONFIG --mach M` would (the config's damping model, tables and flight
+    /// condition; --damping, --aero, --omega-bar, --datcom replace them).
+    ///
+    /// Printed: the area, its ratio to yours, the tail volume
+    /// V̄_T = S_T·l_T/(S·c̄) (l_T from the c.g. to the surface's M.A.C.
+    /// quarter chord; negative for a foreplane) and the verdict and cycles
+    /// to half amplitude at each Mach number; --json the same as one object.
+    ///
+    /// The search: the wing alone first (no surface needed?), then 25 areas
+    /// spaced geometrically from 1/1000 of the limit to the limit (the
+    /// wing's area, or --max-area), then bisection to 0.1 % between the
+    /// last that fails and the first that meets. The verdict need not be
+    /// monotone in area (a bigger tail moves the neutral point aft and
+    /// stiffens the short period as it damps it): the scan finds the first
+    /// meeting area on its grid, and a window narrower than one scan step
+    /// (×1.33) can be missed. When no area up to the limit meets, it says so
+    /// and prints the verdicts at the limit. A Mach number with no result
+    /// (outside a theory; below M = 1.2 until the multi-surface lattice is
+    /// merged) counts as not meeting, and its reason is printed.
+    ///
+    ///   delta-stability size-tail examples/delta-45-tailed.toml --mach 1.2:2.0:0.1
+    ///
+    /// The configuration theory: docs/configurations.md.
+    #[command(verbatim_doc_comment)]
+    SizeTail(cmd::size_tail::Args),
     /// How each mode's root moves with each derivative: dλ/dp for every input.
     ///
     /// For each mode (short period, phugoid, aperiodic roots) and each of
@@ -358,6 +410,7 @@ fn main() -> ExitCode {
         Command::Sensitivity(a) => cmd::sensitivity::run(&a),
         Command::Report(a) => cmd::report::run(&a),
         Command::Sweep(a) => cmd::sweep::run(&a),
+        Command::SizeTail(a) => cmd::size_tail::run(&a),
         Command::Convert(a) => cmd::convert::run(&a),
         Command::Analyze(a) => cmd::analyze::run(&a),
         Command::Response(a) => cmd::response::run(&a),

@@ -57,6 +57,7 @@ from ._native import (
     quartic,
     response,
     sensitivity,
+    size_tail,
     theories,
 )
 
@@ -78,6 +79,7 @@ __all__ = [
     "quartic",
     "response",
     "sensitivity",
+    "size_tail",
     "sweep",
     "theories",
     "uncertainty",

@@ -265,6 +265,21 @@ def sensitivity(
 ) -> dict[str, Any]:
     """dλ/dp of a mode for each quartic input, ranked (§10)."""
 
+def size_tail(
+    config: ConfigSource,
+    /,
+    *,
+    mach: Optional[Sequence[float]] = None,
+    surface: str = "tailplane",
+    max_area: Optional[float] = None,
+    damping: Optional[str] = None,
+    aero: Optional[str] = None,
+    omega_bar: Optional[float] = None,
+    datcom: Optional[str] = None,
+) -> dict[str, Any]:
+    """The smallest tailplane (or foreplane) of the config's shape meeting the
+    §8 standard at every Mach number (``delta-stability size-tail``)."""
+
 def damping_derivatives(
     theory: str,
     *,

@@ -21,6 +21,7 @@ mod quartic;
 mod response;
 mod roots;
 mod sensitivity;
+mod size_tail;
 mod sweep;
 mod theories;
 mod uncertainty;
@@ -45,6 +46,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(convert::convert, m)?)?;
     m.add_function(wrap_pyfunction!(convert::notations, m)?)?;
     m.add_function(wrap_pyfunction!(sensitivity::sensitivity, m)?)?;
+    m.add_function(wrap_pyfunction!(size_tail::size_tail, m)?)?;
     m.add_function(wrap_pyfunction!(theories::damping_derivatives, m)?)?;
     m.add_function(wrap_pyfunction!(theories::theories, m)?)?;
     m.add_function(wrap_pyfunction!(theories::damping_models, m)?)?;

@@ -110,3 +110,23 @@ def test_sensitivities_are_finite_differences_of_numpy_roots():
         assert s["value"][k] == p
     with pytest.raises(ds.InputError, match="mode"):
         ds.sensitivity(d, mode="dutch_roll")
+
+
+def test_a_tailed_config_goes_through_and_size_tail_finds_a_tail():
+    """A config with a [tailplane] (issue 21): analyze carries each part's
+    share, and size_tail's tail meets the standard at every Mach number."""
+    import pathlib
+
+    import delta_stability as ds
+
+    root = pathlib.Path(__file__).resolve().parents[2]
+    cfg = str(root / "examples" / "delta-45-tailed.toml")
+    a = ds.analyze(cfg, mach=2.0).to_dict()
+    parts = a["configuration"]["parts"]
+    assert [p["part"] for p in parts] == ["wing", "tailplane"]
+    assert abs(sum(p["m_q"] for p in parts) - a["derivatives"]["m_q"]) < 1e-12
+    s = ds.size_tail(cfg, mach=[1.2, 1.3, 1.4, 1.5])
+    assert 0.0 < s["area"] < 16.0
+    assert all(o["verdict"] == "meets" for o in s["outcomes"])
+    # the CLI's brute-force-checked answer (stability-core/tests/configuration_sizing.rs)
+    assert abs(s["area"] - 3.8915) < 0.01

@@ -9,9 +9,12 @@
 //! monotone cubic Hermite interpolation) or from a named, documented default
 //! method ([`defaults`]); `docs/models.md` sets out the choices.
 
+use crate::configuration::Configuration;
+use crate::configuration::increment::Increment;
 use crate::derivative_tables::DerivativeTables;
 use crate::display::Num;
 use crate::geometry::Planform;
+use crate::geometry::Trapezoid;
 use crate::lifting_surface::{LiftingSurfaceError, Steady, cache};
 use crate::theory::Row;
 use serde::Serialize;
@@ -80,6 +83,8 @@ pub enum AeroError {
     LatticeMach(f64),
     #[error("the lifting-surface lift slope and aerodynamic centre: {0}")]
     LiftingSurface(LiftingSurfaceError),
+    #[error("the configuration's surfaces and body: {0}")]
+    Configuration(crate::configuration::ConfigurationError),
 }
 
 /// A table of a coefficient against Mach number, interpolated by the
@@ -516,6 +521,20 @@ pub struct AeroModel {
     /// derivative set computed from the above
     /// ([`crate::derivative_tables`]).
     pub derivatives: DerivativeTables,
+    /// The configuration (tailplane, foreplane, body) whose increment over
+    /// the wing is added to the wing's coefficients and damping
+    /// ([`crate::configuration::increment`]); its wing is replaced by the
+    /// case's planform. `None`: the wing alone.
+    pub configuration: Option<std::sync::Arc<Configuration>>,
+}
+
+/// A configuration's share of one design point's coefficients: the wing's
+/// own coefficients (the model's, before the increment) and the increment
+/// at ω̄ = 0 they were added to.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Configured {
+    pub wing: Coefficients,
+    pub increment: Increment,
 }
 
 /// The lift slope and aerodynamic centre a damping model's own theory
@@ -679,8 +698,72 @@ impl AeroModel {
 
     /// The coefficients of `p` at Mach `m`, with the damping model's own
     /// lift slope and aerodynamic centre `own` where it gives them
-    /// ([`Source`] states the precedence).
+    /// ([`Source`] states the precedence), and the configuration's
+    /// increment added ([`AeroModel::at_configured`]).
     pub fn at_with(
+        &self,
+        p: &Planform,
+        m: f64,
+        own: Option<&TheoryCoefficients>,
+    ) -> Result<Coefficients, AeroError> {
+        Ok(self.at_configured(p, m, own)?.0)
+    }
+
+    /// As [`AeroModel::at_with`], with the wing's own coefficients and the
+    /// configuration's increment when there is one. The increment's
+    /// in-phase lift ℓ_α and moment μ_α (about the M.A.C.'s leading edge,
+    /// at ω̄ = 0) add to the wing's: a = a_w + Δℓ_α,
+    /// H₀ = (H₀,w a_w − Δμ_α)/a, their Mach derivatives by the quotient
+    /// rule with the increment's; C_D0 and K stay the wing's.
+    pub fn at_configured(
+        &self,
+        p: &Planform,
+        m: f64,
+        own: Option<&TheoryCoefficients>,
+    ) -> Result<(Coefficients, Option<Configured>), AeroError> {
+        let wing = self.wing_coefficients(p, m, own)?;
+        let Some(config) = self.configuration_for(p) else {
+            return Ok((wing, None));
+        };
+        let inc = config.increment(m, 0.0).map_err(AeroError::Configuration)?;
+        let (aw, hw) = (wing.lift_slope, wing.aerodynamic_centre);
+        let a = Value::new(
+            aw.value + inc.solution.lift_alpha,
+            aw.d_mach + inc.d_lift_alpha.unwrap_or(0.0),
+        );
+        let mu = -hw.value * aw.value + inc.solution.moment_alpha;
+        let d_mu =
+            -(hw.d_mach * aw.value + hw.value * aw.d_mach) + inc.d_moment_alpha.unwrap_or(0.0);
+        let h0 = Value::new(
+            -mu / a.value,
+            -(d_mu * a.value - mu * a.d_mach) / (a.value * a.value),
+        );
+        let total = Coefficients {
+            lift_slope: a,
+            aerodynamic_centre: h0,
+            ..wing
+        };
+        Ok((
+            total,
+            Some(Configured {
+                wing,
+                increment: inc,
+            }),
+        ))
+    }
+
+    /// The model's configuration with the wing `p`, if it adds anything to
+    /// the wing.
+    pub fn configuration_for(&self, p: &Planform) -> Option<Configuration> {
+        let c = self.configuration.as_ref().filter(|c| c.has_additions())?;
+        Some(Configuration {
+            wing: Trapezoid::from(p),
+            ..(**c).clone()
+        })
+    }
+
+    /// The wing's own coefficients ([`Source`] states the precedence).
+    fn wing_coefficients(
         &self,
         p: &Planform,
         m: f64,

@@ -13,8 +13,12 @@
 //! method on the residual s(ω̄)/μ₁ − ω̄, serves every such theory.
 
 use crate::Derivatives;
-use crate::aero::{AeroError, AeroModel, Coefficients, TheoryCoefficients, level_flight_lift};
+use crate::aero::{
+    AeroError, AeroModel, Coefficients, Configured, TheoryCoefficients, level_flight_lift,
+};
 use crate::analysis::{Analysis, AnalysisError};
+use crate::configuration::ConfigurationError;
+use crate::configuration::shares::Shares;
 use crate::damping::{
     Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,
     damping_derivatives_with, theory_coefficients, x_q, x_wdot,
@@ -235,6 +239,9 @@ pub struct CaseResult {
     /// What each derivative table of the aerodynamic model did
     /// ([`crate::derivative_tables`]): the derivatives above are with them.
     pub tables: Vec<TableUse>,
+    /// Each part's share when the model has a configuration
+    /// ([`AeroModel::configuration`]).
+    pub configuration: Option<Shares>,
 }
 
 impl CaseResult {
@@ -297,6 +304,8 @@ pub enum CaseError {
     Damping(#[from] DampingError),
     #[error("{0}")]
     Analysis(#[from] AnalysisError),
+    #[error("the configuration's surfaces and body: {0}")]
+    Configuration(#[from] ConfigurationError),
 }
 
 impl Case {
@@ -409,6 +418,7 @@ fn evaluate_with(
         frequency,
         warnings,
         tables: run.tables,
+        configuration: run.configuration,
     })
 }
 
@@ -422,6 +432,9 @@ struct Point<'a> {
     wing: WingInput,
     classical: bool,
     harmonic: Harmonic,
+    /// The wing's own coefficients and the configuration's steady
+    /// increment, when the model has a configuration.
+    configured: Option<Configured>,
 }
 
 /// The damping derivatives at one ω̄, the derivative set they complete and
@@ -432,12 +445,15 @@ struct Run {
     derivatives: Derivatives,
     analysis: Analysis,
     tables: Vec<TableUse>,
+    configuration: Option<Shares>,
 }
 
 impl<'a> Point<'a> {
     fn new(case: &'a Case, classical: bool, harmonic: Harmonic) -> Result<Self, CaseError> {
         let own = case.damping.own_coefficients(&case.planform, case.mach)?;
-        let coefficients = case.aero.at_with(&case.planform, case.mach, own.as_ref())?;
+        let (coefficients, configured) =
+            case.aero
+                .at_configured(&case.planform, case.mach, own.as_ref())?;
         let c_l = level_flight_lift(case.cl_m2, case.mach).value;
         Ok(Point {
             case,
@@ -447,7 +463,50 @@ impl<'a> Point<'a> {
             wing: WingInput::from(&case.planform),
             classical,
             harmonic,
+            configured,
         })
+    }
+
+    /// The configuration's damping increment at ω̄ added to the wing's
+    /// `damping`, and the parts' shares; nothing without a configuration.
+    fn add_configuration(
+        &self,
+        damping: &mut Damping,
+        omega_bar: Option<f64>,
+    ) -> Result<Option<Shares>, CaseError> {
+        let Some(configured) = &self.configured else {
+            return Ok(None);
+        };
+        let case = self.case;
+        let w = omega_bar.unwrap_or(0.0);
+        let at_omega = match case.aero.configuration_for(&case.planform) {
+            Some(c) if w > 0.0 => c.increment_at(case.mach, w)?,
+            _ => configured.increment.clone(),
+        };
+        let d = at_omega
+            .solution
+            .derivatives(case.h, 0.0)
+            .map_err(ConfigurationError::from)?;
+        let shares = Shares::new(
+            &configured.wing,
+            &damping.derivatives,
+            &configured.increment,
+            &at_omega,
+            case.h,
+        )
+        .map_err(ConfigurationError::from)?;
+        if case.mach >= faired::SUPERSONIC_FROM
+            && let Some(c) = case.aero.configuration_for(&case.planform)
+            && let Some(w) = crate::configuration::supersonic::downwash_warning(&c, case.mach)
+        {
+            damping.warnings.push(w);
+        }
+        let own = &mut damping.derivatives;
+        own.z_q += d.z_q;
+        own.m_q += d.m_q;
+        own.z_wdot += d.z_wdot;
+        own.m_wdot += d.m_wdot;
+        Ok(Some(shares))
     }
 
     /// The derivative set of eqs (9)–(31) with these damping derivatives.
@@ -475,6 +534,7 @@ impl<'a> Point<'a> {
 
     fn run(&self, omega_bar: Option<f64>) -> Result<Run, CaseError> {
         let mut damping = damping_at(self.case, &self.wing, omega_bar, self.harmonic)?;
+        let configuration = self.add_configuration(&mut damping, omega_bar)?;
         let computed = self.derivatives(&damping.derivatives);
         let (derivatives, tables) =
             self.case
@@ -498,6 +558,7 @@ impl<'a> Point<'a> {
             derivatives,
             analysis,
             tables,
+            configuration,
         })
     }
 

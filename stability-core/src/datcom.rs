@@ -157,6 +157,7 @@ impl Tables {
                     .cloned()
                     .collect(),
             ),
+            configuration: user.configuration.clone(),
         }
     }
 }

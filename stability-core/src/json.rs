@@ -298,6 +298,7 @@ impl Serialize for CaseView<'_> {
             derivative_tables: &r.tables,
             analysis: AnalysisJson::new(&r.analysis, self.tau, Some(margins)),
             warnings: &r.warnings,
+            configuration: &r.configuration,
         }
         .serialize(s)
     }
@@ -314,6 +315,9 @@ struct CaseJson<'a> {
     #[serde(flatten)]
     analysis: AnalysisJson<'a>,
     warnings: &'a crate::warnings::Warnings,
+    /// Each part's share, with a tailplane, foreplane or body.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    configuration: &'a Option<crate::configuration::shares::Shares>,
 }
 
 #[derive(Serialize)]

@@ -56,6 +56,11 @@ pub enum Warning {
     LatticeNearSonic { mach: f64 },
     /// The doublet lattice at a frequency its boxes barely resolve.
     LatticeHighFrequency { omega_bar: f64 },
+    /// A tailplane nearer the wing than the far-wake downwash it is given
+    /// holds for (`configuration::downwash`): its aerodynamic centre
+    /// `at` behind the wing's apex, where the tips' Mach lines meet the
+    /// centre line `from` behind it (in wing M.A.C.s).
+    DownwashNearWing { mach: f64, at: f64, from: f64 },
 }
 
 impl fmt::Display for Warning {
@@ -131,6 +136,11 @@ impl fmt::Display for Warning {
             Warning::LatticeHighFrequency { omega_bar } => write!(
                 f,
                 "lifting surface at ω̄ = {omega_bar:.3}: the default lattice resolves ω̄ ≲ 2 (boxes short against the wavelength)"
+            ),
+            Warning::DownwashNearWing { mach, at, from } => write!(
+                f,
+                "tailplane at M = {}: the wing's downwash at it is the far wake's (Trefftz plane), which holds behind the point where the tips' Mach lines meet the centre line, {from:.2} M.A.C.s behind the wing's apex; the tail's centre is {at:.2} behind it, where linear theory's downwash is smaller (docs/configurations.md)",
+                Num(mach)
             ),
         }
     }

@@ -264,6 +264,16 @@ fn design_point(s: &mut String, cfg: &config::Config, r: &CaseResult) {
         sig(r.damping.derivatives.z_thetadot(), 4),
         sig(r.damping.derivatives.m_thetadot(), 4)
     );
+    if let Some(shares) = &r.configuration {
+        let _ = writeln!(
+            s,
+            "  configuration (§10; docs/configurations.md): {} — in the above, before any tables:",
+            crate::configuration::summary(shares)
+        );
+        for line in crate::configuration::share_lines(shares) {
+            let _ = writeln!(s, "    {line}");
+        }
+    }
     if let Some(f) = &r.frequency {
         frequency(s, f);
     } else if c.damping == DampingModel::Theory(Theory::LiftingSurface) {

@@ -7,5 +7,6 @@ pub mod report;
 pub mod report_design;
 pub mod response;
 pub mod sensitivity;
+pub mod size_tail;
 pub mod sweep;
 pub mod uncertainty;

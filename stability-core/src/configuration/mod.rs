@@ -14,7 +14,12 @@
 //! - supersonic: each surface by the program's theories with the wing's
 //!   downwash at the tailplane and its lag ([`supersonic`]).
 
+pub mod body;
+pub mod downwash;
+pub mod increment;
 pub mod lattice;
+pub mod shares;
+pub mod sizing;
 pub mod supersonic;
 
 use crate::geometry::Trapezoid;

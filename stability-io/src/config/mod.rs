@@ -46,6 +46,7 @@
 pub mod overrides;
 pub mod physical;
 pub mod raw;
+pub mod surfaces;
 pub mod tables;
 pub mod uncertainty;
 
@@ -85,6 +86,10 @@ pub struct Config {
     pub datcom: Option<Datcom>,
     /// The MIL-F-8785C class `[aircraft] class` states, if it does.
     pub class: Option<AirplaneClass>,
+    /// The tailplane, foreplane and body (`[tailplane]`, `[foreplane]`,
+    /// `[body]`), if any is given; the case's model carries it too
+    /// (`case.aero.configuration`).
+    pub configuration: Option<stability_core::configuration::Configuration>,
     text: String,
     /// Where each value (and table) was written: field and span.
     spans: Vec<(String, Range<usize>)>,
@@ -195,6 +200,10 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
         Some(a) => class(&mut r, a.get_ref())?,
         None => None,
     };
+    let configuration = surfaces::configuration(&mut r, &raw, &case.planform)?;
+    case.aero.configuration = configuration.clone().map(std::sync::Arc::new);
+    let mut tables = tables;
+    tables.configuration = case.aero.configuration.clone();
     Ok(Config {
         path: path.to_string(),
         case,
@@ -202,6 +211,7 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
         tables,
         datcom,
         class,
+        configuration,
         text: text.to_string(),
         spans: r.spans,
         overridden: Vec::new(),
@@ -236,6 +246,7 @@ fn size<'p>(
     r: &mut Reader<'_>,
     p: &'p RawPlanform,
     whole: Range<usize>,
+    section: &str,
 ) -> Result<(Size, String, &'p Spanned<f64>), InputError> {
     let sizes: Vec<(&str, &Spanned<f64>)> = [
         ("root_chord", &p.root_chord),
@@ -249,15 +260,15 @@ fn size<'p>(
         [one] => *one,
         [] => {
             let m = "give one size: root_chord, span or area";
-            return Err(r.err(whole, "[planform]", m.into()));
+            return Err(r.err(whole, section, m.into()));
         }
         [_, second, ..] => {
-            let field = format!("[planform] {}", second.0);
+            let field = format!("{section} {}", second.0);
             let m = "give only one size: root_chord, span or area";
             return Err(r.err(second.1.span(), &field, m.into()));
         }
     };
-    let field = format!("[planform] {name}");
+    let field = format!("{section} {name}");
     let x = r.value(v, &field, &limits::SIZE)?;
     let size = match name {
         "root_chord" => Size::RootChord(x),
@@ -268,27 +279,36 @@ fn size<'p>(
 }
 
 fn planform(r: &mut Reader<'_>, p: &Spanned<RawPlanform>) -> Result<Planform, InputError> {
-    let whole = p.span();
-    let p = p.get_ref();
+    planform_in(r, p.get_ref(), p.span(), "[planform]")
+}
+
+/// A planform from `[planform]`'s keys in table `section` (`[planform]`,
+/// `[tailplane]`, `[foreplane]`) spanning `whole`.
+fn planform_in(
+    r: &mut Reader<'_>,
+    p: &RawPlanform,
+    whole: Range<usize>,
+    section: &str,
+) -> Result<Planform, InputError> {
+    let field = |k: &str| format!("{section} {k}");
     let any = limits::Limit {
         what: "the value",
         lo: f64::MIN,
         hi: f64::MAX,
         lo_included: true,
     };
-    let sweep = r.value(&p.sweep, "[planform] sweep", &any)?;
+    let sweep = r.value(&p.sweep, &field("sweep"), &any)?;
     let taper = match &p.taper {
-        Some(t) => r.value(t, "[planform] taper", &any)?,
+        Some(t) => r.value(t, &field("taper"), &any)?,
         None => 0.0,
     };
-    let (size, size_field, size_v) = size(r, p, whole.clone())?;
+    let (size, size_field, size_v) = size(r, p, whole.clone(), section)?;
     let planform = Planform::new(sweep.to_radians(), taper, size).map_err(|e| {
         let (span, field) = match e {
-            GeometryError::Sweep(_) => (p.sweep.span(), "[planform] sweep".to_string()),
-            GeometryError::Taper(_) => (
-                p.taper.as_ref().map_or(whole, |t| t.span()),
-                "[planform] taper".to_string(),
-            ),
+            GeometryError::Sweep(_) => (p.sweep.span(), field("sweep")),
+            GeometryError::Taper(_) => {
+                (p.taper.as_ref().map_or(whole, |t| t.span()), field("taper"))
+            }
             GeometryError::Size(..) => (size_v.span(), size_field),
         };
         r.err(span, &field, e.to_string())
@@ -303,7 +323,7 @@ fn planform(r: &mut Reader<'_>, p: &Spanned<RawPlanform>) -> Result<Planform, In
     if !derived.iter().all(|v| v.is_finite() && *v > 0.0) {
         return Err(r.err(
             p.sweep.span(),
-            "[planform] sweep",
+            &field("sweep"),
             format!(
                 "at a sweep of {}° the planform's span, area or aspect ratio is not a finite positive number",
                 Num(sweep)
@@ -470,6 +490,16 @@ impl Config {
         }
     }
 
+    /// Where a configuration's failure is reported: its first table.
+    fn configuration_field(&self) -> &'static str {
+        match &self.configuration {
+            Some(c) if c.tailplane.is_some() => "[tailplane]",
+            Some(c) if c.foreplane.is_some() => "[foreplane]",
+            Some(_) => "[body]",
+            None => "[flight]",
+        }
+    }
+
     /// The design point's failure, at the field it arises from.
     pub fn explain(&self, e: &CaseError) -> InputError {
         let field = match e {
@@ -479,6 +509,9 @@ impl Config {
                 | AeroError::OutsideDefaults(_)
                 | AeroError::LatticeMach(_),
             ) => "[flight] mach",
+            CaseError::Aero(AeroError::Configuration(_)) | CaseError::Configuration(_) => {
+                self.configuration_field()
+            }
             CaseError::Aero(AeroError::LiftingSurface(_)) => "[model] aero",
             CaseError::Aero(_) => "[model.tables]",
             CaseError::Damping(DampingError::LiftingSurface(LiftingSurfaceError::Mach(_))) => {

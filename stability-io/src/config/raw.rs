@@ -19,6 +19,55 @@ pub struct RawConfig {
     /// What the aircraft is (its MIL-F-8785C class).
     #[serde(default)]
     pub aircraft: Option<Spanned<RawAircraft>>,
+    /// The configuration's surfaces and body, read by [`super::surfaces`].
+    #[serde(default)]
+    pub tailplane: Option<Spanned<RawSurface>>,
+    #[serde(default)]
+    pub foreplane: Option<Spanned<RawSurface>>,
+    #[serde(default)]
+    pub body: Option<Spanned<RawBody>>,
+}
+
+/// `[tailplane]`, `[foreplane]`: `[planform]`'s keys and the placement.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSurface {
+    pub sweep: Spanned<f64>,
+    #[serde(default)]
+    pub taper: Option<Spanned<f64>>,
+    pub root_chord: Option<Spanned<f64>>,
+    pub span: Option<Spanned<f64>>,
+    pub area: Option<Spanned<f64>>,
+    /// Its apex aft of the wing's apex (negative ahead).
+    pub x: Spanned<f64>,
+    /// Its height above the wing's plane.
+    #[serde(default)]
+    pub z: Option<Spanned<f64>>,
+    /// Degrees.
+    #[serde(default)]
+    pub incidence: Option<Spanned<f64>>,
+}
+
+impl RawSurface {
+    /// Its planform keys, as `[planform]`'s.
+    pub fn planform(&self) -> RawPlanform {
+        RawPlanform {
+            sweep: self.sweep.clone(),
+            taper: self.taper.clone(),
+            root_chord: self.root_chord.clone(),
+            span: self.span.clone(),
+            area: self.area.clone(),
+        }
+    }
+}
+
+/// `[body]`: eq (43)'s forebody.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBody {
+    /// Its length ahead of the wing's apex.
+    pub length_ahead: Spanned<f64>,
+    pub diameter: Spanned<f64>,
 }
 
 #[derive(Deserialize)]

@@ -12,6 +12,7 @@
 //!
 //! Everything here computes; writing the files is `cmd::report`'s.
 
+pub mod configuration;
 pub mod figures;
 pub mod page;
 

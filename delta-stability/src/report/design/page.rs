@@ -336,6 +336,9 @@ pub fn index_html(d: &Design, sections: &[(&str, Vec<Plate>)]) -> String {
             figs.join(", ")
         );
     }
+    if d.cfg.configuration.is_some() {
+        s.push_str("<li><a href=\"#configuration\">§10 The surfaces and body</a></li>");
+    }
     s.push_str("<li><a href=\"#sources\">Sources and regimes</a></li></ol></nav>\n");
     s.push_str(&verdicts(d));
     s.push_str(&table(d));
@@ -352,6 +355,7 @@ pub fn index_html(d: &Design, sections: &[(&str, Vec<Plate>)]) -> String {
         }
         s.push_str("</section>\n");
     }
+    s.push_str(&super::configuration::section(d));
     s.push_str(&sources(d));
     s.push_str("</body></html>\n");
     s
