@@ -115,12 +115,13 @@ fn size_tail_finds_a_tail_that_meets_and_one_a_little_smaller_that_does_not() {
 }
 
 #[test]
-#[ignore = "needs the multi-surface lattice (issue 21 item 2), merged separately"]
 fn subsonic_configs_run_and_the_tail_damps() {
-    // at M = 0.8 the tail (S_T/S = 0.16, l_T ≈ 1.3c̄ from the c.g. to its
-    // quarter chord) adds about −a_T(1 − dε/dα)(S_T/S)(l_T/c̄)² ≈ −0.4 to
-    // m_q (a_T ≈ 2.9 for its aspect ratio 2.7 at M = 0.8, DATCOM's
-    // Helmbold form; dε/dα ≈ 2a_w/(πA) ≈ 0.4): between −0.15 and −0.6
+    // at M = 0.8 the tail (S_T/S = 0.16, l_T ≈ 1.35c̄ from the c.g. to its
+    // quarter-M.A.C. point) adds about −a_T(S_T/S)(l_T/c̄)² ≈ −0.84 to m_q
+    // (a_T ≈ 2.9 for its aspect ratio 2.7 at M = 0.8, DATCOM's Helmbold
+    // form; a pitch rate's tail incidence is q·l_T/V, not reduced by the
+    // wing's α-downwash, which belongs to m_w and, lagged, to m_ẇ). A tail
+    // this close sits in the wing's near field: within ±30 %
     let t = json(&run_ok(&["analyze", TAILED, "--mach", "0.8", "--json"]));
     let w = json(&run_ok(&[
         "analyze",
@@ -130,8 +131,8 @@ fn subsonic_configs_run_and_the_tail_damps() {
         "--json",
     ]));
     let dm = num(&t["derivatives"]["m_q"]) - num(&w["derivatives"]["m_q"]);
-    assert!(dm < -0.15 && dm > -0.6, "{dm}");
-    run_ok(&["size-tail", TAILED, "--mach", "0.8:1.5:0.1"]);
+    assert!(dm < -0.6 && dm > -1.1, "{dm}");
+    run_ok(&["size-tail", TAILED, "--mach", "0.8:0.9:0.1"]);
 }
 
 #[test]

@@ -80,13 +80,31 @@ use nalgebra::{DMatrix, Dyn, LU};
 impl Configuration {
     /// The configuration's response at M < 1 and ω̄ (0: quasi-steady), from
     /// the process-wide cache ([`cache::solution`]): one solve of
-    /// [`ConfigurationLattice`] per (configuration, M, ω̄).
+    /// [`ConfigurationLattice`] per (configuration, M, ω̄). The lattice
+    /// holds the lifting surfaces; a [`super::Body`] is added as its own
+    /// part by slender-body theory, eq (43) ([`super::Body::solution`]), as
+    /// in the supersonic theory.
     pub fn solve_subsonic(
         &self,
         mach: f64,
         omega_bar: f64,
     ) -> Result<ConfigurationSolution, ConfigurationError> {
-        cache::solution(self, mach, omega_bar)
+        let mut solution = cache::solution(self, mach, omega_bar)?;
+        if let Some(body) = &self.body {
+            let b = body.solution(&self.wing, mach, omega_bar);
+            let t = &mut solution.total;
+            t.lift_alpha += b.lift_alpha;
+            t.moment_alpha += b.moment_alpha;
+            t.lift_alphadot += b.lift_alphadot;
+            t.moment_alphadot += b.moment_alphadot;
+            t.lift_q += b.lift_q;
+            t.moment_q += b.moment_q;
+            solution.parts.push(super::Contribution {
+                part: super::Part::Body,
+                solution: b,
+            });
+        }
+        Ok(solution)
     }
 }
 

@@ -128,8 +128,6 @@ pub struct ConfigurationSolution {
 /// Why a configuration has no solution.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ConfigurationError {
-    #[error("{0} is not built yet")]
-    Unavailable(&'static str),
     #[error(transparent)]
     LiftingSurface(#[from] crate::lifting_surface::LiftingSurfaceError),
     #[error("{0}")]
