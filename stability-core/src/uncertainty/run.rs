@@ -242,11 +242,15 @@ impl AtMach<'_> {
                     &mut za[..k],
                     &mut zb[..k],
                 );
-                block.prepared.push(self.prepare_at(&za[..k], &mut x, cases));
+                block
+                    .prepared
+                    .push(self.prepare_at(&za[..k], &mut x, cases));
                 if !options.sobol {
                     continue;
                 }
-                block.prepared.push(self.prepare_at(&zb[..k], &mut x, cases));
+                block
+                    .prepared
+                    .push(self.prepare_at(&zb[..k], &mut x, cases));
                 for i in 0..k {
                     let mut z = za;
                     z[i] = zb[i];

@@ -4,13 +4,13 @@ use super::dist::{CorrelationError, Dist, DistError, cholesky, phi};
 use super::quasi::Sampling;
 use super::sobol::Indices;
 use super::stats::{Proportion, Quantiles};
-use crate::roots::{Complex64, RootsError, solve_quartic};
-use crate::{Derivatives, Quartic};
 use crate::analysis::Analysis;
 use crate::case::{Case, DampingModel, evaluate_point_with};
 use crate::criteria::{Category, Verdict, phugoid_level, short_period_level};
 use crate::flight::{Air, Altitude, FlightCondition, Mass};
 use crate::lifting_surface::Harmonic;
+use crate::roots::{Complex64, RootsError, solve_quartic};
+use crate::{Derivatives, Quartic};
 use serde::Serialize;
 
 /// The twelve aerodynamic derivatives an error can be put on, by their
