@@ -209,7 +209,7 @@ impl Block {
         for p in &self.prepared {
             self.outcomes.push(match p {
                 Ok(p) => match roots.next() {
-                    Some(r) => p.finish(r.clone()),
+                    Some(r) => p.finish(*r),
                     None => Err("internal: a quartic without roots".to_string()),
                 },
                 Err(e) => Err(e.clone()),
