@@ -8,6 +8,8 @@
 //! - `quartic_only`: 4096 samples of i_B and m_q uncertain, the same
 //!   model — the aerodynamics evaluated once, a sample a quartic and its
 //!   analysis;
+//! - `quartic_only_per_sample`: `quartic_only` with each sample's quartic
+//!   solved alone (`run_per_sample`, the path before `solve_quartics`);
 //! - `quartic_only_sobol`: the same with the Sobol design (k + 2 = 4
 //!   evaluations a row: 1024 rows);
 //! - `quartic_only_quasi`: `quartic_only` from Owen-scrambled Sobol′
@@ -77,6 +79,20 @@ fn run(b: Bencher, study: &Study, mach: f64, samples: u64, sobol: bool) {
 
 /// `samples` of `study` at `mach` on one thread, drawn by `sampling`.
 fn run_with(b: Bencher, study: &Study, mach: f64, samples: u64, sobol: bool, sampling: Sampling) {
+    run_by(b, study, mach, samples, sobol, sampling, false);
+}
+
+/// `samples` of `study` at `mach` on one thread, drawn by `sampling`;
+/// each sample's quartic solved alone if `per_sample`.
+fn run_by(
+    b: Bencher,
+    study: &Study,
+    mach: f64,
+    samples: u64,
+    sobol: bool,
+    sampling: Sampling,
+    per_sample: bool,
+) {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(1)
         .build()
@@ -88,8 +104,12 @@ fn run_with(b: Bencher, study: &Study, mach: f64, samples: u64, sobol: bool, sam
         sobol,
         sampling,
     };
-    b.counter(ItemsCount::new(samples))
-        .bench_local(|| pool.install(|| black_box(at.run(&options, &|_| {}))));
+    b.counter(ItemsCount::new(samples)).bench_local(|| {
+        pool.install(|| match per_sample {
+            true => black_box(at.run_per_sample(&options, &|_| {})),
+            false => black_box(at.run(&options, &|_| {})),
+        })
+    });
 }
 
 #[divan::bench]
@@ -110,6 +130,20 @@ fn quartic_only(b: Bencher) {
     )
     .unwrap();
     run(b, &s, 1.5, 4096, false);
+}
+
+/// `quartic_only` before the batched roots: one `solve_quartic` a sample.
+#[divan::bench]
+fn quartic_only_per_sample(b: Bencher) {
+    let s = Study::new(
+        base(1.5, DampingModel::FairedSlender),
+        None,
+        inputs(false),
+        &[],
+        &[],
+    )
+    .unwrap();
+    run_by(b, &s, 1.5, 4096, false, Sampling::Random, true);
 }
 
 #[divan::bench]

@@ -189,12 +189,20 @@ impl Characteristic {
         names: &[&'static str; 5],
         per_chord: f64,
     ) -> Result<Characteristic, AnalysisError> {
-        if let Some(k) = quartic.to_array().iter().position(|c| !c.is_finite()) {
-            return Err(AnalysisError::Overflow {
-                coefficient: names[k],
-            });
-        }
+        check_finite(&quartic, names)?;
         let roots = solve_quartic(quartic.to_array())?;
+        Characteristic::from_roots(quartic, roots, per_chord)
+    }
+
+    /// As [`Characteristic::of`] with the roots already found: `roots` =
+    /// [`solve_quartic`]`(quartic.to_array())` (or [`crate::roots::solve_quartics`]'s,
+    /// the same bits), of a quartic whose coefficients are finite. Routh's
+    /// test, the modes and the verdict follow from them as in `of`.
+    pub fn from_roots(
+        quartic: Quartic,
+        roots: [Complex64; 4],
+        per_chord: f64,
+    ) -> Result<Characteristic, AnalysisError> {
         let routh = Routh::of(&quartic);
         agree(&routh, &roots)?;
         let modes = Modes::identify(&roots, per_chord);
@@ -265,7 +273,12 @@ impl Analysis {
         Analysis::with(d, false)
     }
 
-    fn with(d: &Derivatives, classical: bool) -> Result<Analysis, AnalysisError> {
+    /// The characteristic quartic of `d` (eqs 4–6) after the checks
+    /// [`Analysis::of`] makes before it solves it: the derivatives valid,
+    /// A clear of zero, every coefficient finite. Its roots, by
+    /// [`solve_quartic`] or many at once by [`crate::roots::solve_quartics`],
+    /// go to [`Analysis::without_classical_from_roots`].
+    pub fn quartic_of(d: &Derivatives) -> Result<Quartic, AnalysisError> {
         check(d)?;
         let quartic = Quartic::from_derivatives(d);
         if quartic.a.abs() <= LEADING_COEFFICIENT_MIN {
@@ -275,14 +288,50 @@ impl Analysis {
                 mu1: d.mu1,
             });
         }
-        let c = Characteristic::of(quartic, &Derivatives::QUARTIC_COEFFICIENTS, d.mu1)?;
+        check_finite(&quartic, &Derivatives::QUARTIC_COEFFICIENTS)?;
+        Ok(quartic)
+    }
+
+    /// [`Analysis::without_classical`] of `d` from its quartic
+    /// ([`Analysis::quartic_of`]) and that quartic's roots as
+    /// [`solve_quartic`] gives them: the same analysis, bit for bit, when
+    /// the roots were found in a batch.
+    pub fn without_classical_from_roots(
+        d: &Derivatives,
+        quartic: Quartic,
+        roots: Result<[Complex64; 4], RootsError>,
+    ) -> Result<Analysis, AnalysisError> {
+        let c = Characteristic::from_roots(quartic, roots?, d.mu1)?;
+        Ok(Analysis::assemble(d, c, false))
+    }
+
+    fn with(d: &Derivatives, classical: bool) -> Result<Analysis, AnalysisError> {
+        let quartic = Analysis::quartic_of(d)?;
+        let roots = solve_quartic(quartic.to_array())?;
+        let c = Characteristic::from_roots(quartic, roots, d.mu1)?;
+        Ok(Analysis::assemble(d, c, classical))
+    }
+
+    /// The analysis of `d` around its characteristic `c`.
+    fn assemble(d: &Derivatives, c: Characteristic, classical: bool) -> Analysis {
         let classical = if classical { classical_check(&c) } else { None };
-        Ok(Analysis {
+        Analysis {
             characteristic: c,
             classical,
             short_period_approximation: ShortPeriodApproximation::of(d),
             damping_standard: DampingStandard::of(d),
-        })
+        }
+    }
+}
+
+/// Every coefficient of `quartic` finite, else the first that is not, by
+/// its name in `names`.
+fn check_finite(quartic: &Quartic, names: &[&'static str; 5]) -> Result<(), AnalysisError> {
+    match quartic.to_array().iter().position(|c| !c.is_finite()) {
+        Some(k) => Err(AnalysisError::Overflow {
+            coefficient: names[k],
+        }),
+        None => Ok(()),
     }
 }
 

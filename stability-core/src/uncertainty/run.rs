@@ -5,10 +5,12 @@ use super::quasi::{Sampling, SobolSequence};
 use super::sobol::SobolSums;
 use super::stats::{Proportion, Reservoir};
 use super::study::{
-    AtMach, BATCH, CHUNK, Levels, MAX_FACTORS, Options, Outcome, Sensitivity, Study, Summary,
+    AtMach, BATCH, CHUNK, Levels, MAX_FACTORS, Options, Outcome, Prepared, Sensitivity, Study,
+    Summary,
 };
 use crate::case::Case;
 use crate::criteria::Verdict;
+use crate::roots::{Complex64, RootsError, solve_quartics};
 use rand::rngs::ChaCha8Rng;
 use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
@@ -80,6 +82,34 @@ struct Tally {
 }
 
 impl Tally {
+    /// Empty, with the Sobol sums of `k` factors when `options` asks for
+    /// the indices.
+    fn new(options: &Options, k: usize) -> Tally {
+        Tally {
+            sobol: options
+                .sobol
+                .then(|| [SobolSums::new(k), SobolSums::new(k)]),
+            ..Tally::default()
+        }
+    }
+
+    /// One row's outcomes: A's, and with the indices B's then the k
+    /// A_B^(i)'s — what [`AtMach::chunk_per_sample`] adds, in its order.
+    fn row(&mut self, f: &[Result<Outcome, String>], k: usize) {
+        self.add(&f[0]);
+        let Some(sums) = &mut self.sobol else {
+            return;
+        };
+        let mut ab = [[f64::NAN; MAX_FACTORS]; 2];
+        for (i, fi) in f[2..2 + k].iter().enumerate() {
+            ab[0][i] = output(fi, 0);
+            ab[1][i] = output(fi, 1);
+        }
+        for (j, s) in sums.iter_mut().enumerate() {
+            s.add(output(&f[0], j), output(&f[1], j), &ab[j][..k]);
+        }
+    }
+
     fn add(&mut self, o: &Result<Outcome, String>) {
         self.samples += 1;
         let o = match o {
@@ -131,17 +161,129 @@ impl Tally {
     }
 }
 
+/// Rows whose quartics are solved together by one [`solve_quartics`]
+/// call (a multiple of its four lanes).
+const BLOCK: usize = 32;
+
+/// A block's samples, in row order (A; with the indices B and the
+/// A_B^(i) after it), from their quartics to their outcomes. Allocated
+/// once a chunk, reused block after block.
+struct Block {
+    prepared: Vec<Result<Prepared, String>>,
+    /// The quartics of the prepared samples that have one, in order.
+    coeffs: Vec<[f64; 5]>,
+    roots: Vec<Result<[Complex64; 4], RootsError>>,
+    outcomes: Vec<Result<Outcome, String>>,
+}
+
+impl Block {
+    fn with_capacity(n: usize) -> Block {
+        Block {
+            prepared: Vec::with_capacity(n),
+            coeffs: Vec::with_capacity(n),
+            roots: Vec::with_capacity(n),
+            outcomes: Vec::with_capacity(n),
+        }
+    }
+
+    fn clear(&mut self) {
+        self.prepared.clear();
+        self.coeffs.clear();
+        self.outcomes.clear();
+    }
+
+    /// Every prepared sample's roots by one [`solve_quartics`] call, and
+    /// its outcome ([`Prepared::finish`]); a sample without a quartic
+    /// keeps its error.
+    fn solve(&mut self) {
+        self.coeffs.extend(
+            self.prepared
+                .iter()
+                .filter_map(|p| p.as_ref().ok())
+                .map(|p| p.quartic.to_array()),
+        );
+        let n = self.coeffs.len();
+        self.roots.resize(n, Err(RootsError::LeadingZero));
+        solve_quartics(&self.coeffs, &mut self.roots[..n]);
+        let mut roots = self.roots[..n].iter();
+        for p in &self.prepared {
+            self.outcomes.push(match p {
+                Ok(p) => match roots.next() {
+                    Some(r) => p.finish(*r),
+                    None => Err("internal: a quartic without roots".to_string()),
+                },
+                Err(e) => Err(e.clone()),
+            });
+        }
+    }
+}
+
 impl AtMach<'_> {
-    /// Rows `rows` of chunk `chunk` (a generator on stream `chunk`).
+    /// Rows `rows` of chunk `chunk` (a generator on stream `chunk`), a
+    /// [`BLOCK`] of rows at a time: each row's samples prepared up to
+    /// their quartics, the block's quartics solved in one
+    /// [`solve_quartics`] call (the bits of one [`crate::roots::solve_quartic`]
+    /// each), then added row by row as [`AtMach::chunk_per_sample`] adds
+    /// them.
     fn chunk(&self, options: &Options, chunk: u64, rows: usize, cases: &mut [Case]) -> Tally {
         let k = self.factors();
+        let per_row = if options.sobol { k + 2 } else { 1 };
         let mut points = Points::new(options, chunk);
-        let mut tally = Tally {
-            sobol: options
-                .sobol
-                .then(|| [SobolSums::new(k), SobolSums::new(k)]),
-            ..Tally::default()
-        };
+        let mut tally = Tally::new(options, k);
+        let mut block = Block::with_capacity(BLOCK * per_row);
+        let (mut za, mut zb, mut x) = ([0.0; MAX_FACTORS], [0.0; MAX_FACTORS], [0.0; MAX_FACTORS]);
+        let mut first = 0;
+        while first < rows {
+            let end = (first + BLOCK).min(rows);
+            block.clear();
+            for row in first..end {
+                points.fill(
+                    chunk * CHUNK as u64 + row as u64,
+                    &mut za[..k],
+                    &mut zb[..k],
+                );
+                block
+                    .prepared
+                    .push(self.prepare_at(&za[..k], &mut x, cases));
+                if !options.sobol {
+                    continue;
+                }
+                block
+                    .prepared
+                    .push(self.prepare_at(&zb[..k], &mut x, cases));
+                for i in 0..k {
+                    let mut z = za;
+                    z[i] = zb[i];
+                    block.prepared.push(self.prepare_at(&z[..k], &mut x, cases));
+                }
+            }
+            block.solve();
+            for f in block.outcomes.chunks(per_row) {
+                tally.row(f, k);
+            }
+            first = end;
+        }
+        tally
+    }
+
+    /// The sample at normal scores `z`, up to its quartic.
+    fn prepare_at(&self, z: &[f64], x: &mut [f64], cases: &mut [Case]) -> Result<Prepared, String> {
+        let model = self.values(z, x);
+        self.prepare(x, model, &mut cases[model])
+    }
+
+    /// [`AtMach::chunk`] sample by sample, each quartic solved alone by
+    /// [`AtMach::evaluate`]: the reference the batched path is held to.
+    fn chunk_per_sample(
+        &self,
+        options: &Options,
+        chunk: u64,
+        rows: usize,
+        cases: &mut [Case],
+    ) -> Tally {
+        let k = self.factors();
+        let mut points = Points::new(options, chunk);
+        let mut tally = Tally::new(options, k);
         let (mut za, mut zb, mut x) = ([0.0; MAX_FACTORS], [0.0; MAX_FACTORS], [0.0; MAX_FACTORS]);
         let mut ab = [[f64::NAN; MAX_FACTORS]; 2];
         for row in 0..rows {
@@ -176,19 +318,28 @@ impl AtMach<'_> {
     }
 
     /// The run at this Mach number; `progress` is told the rows done after
-    /// each batch of chunks.
+    /// each batch of chunks. The samples' quartics are solved many at once
+    /// ([`solve_quartics`]).
     pub fn run(&self, options: &Options, progress: &(dyn Fn(u64) + Sync)) -> Summary {
+        self.run_with(options, progress, true)
+    }
+
+    /// [`AtMach::run`] with each sample's quartic solved alone, as
+    /// [`AtMach::evaluate`] does: the same [`Summary`], bit for bit, more
+    /// slowly. The reference for tests and benchmarks.
+    pub fn run_per_sample(&self, options: &Options, progress: &(dyn Fn(u64) + Sync)) -> Summary {
+        self.run_with(options, progress, false)
+    }
+
+    fn run_with(
+        &self,
+        options: &Options,
+        progress: &(dyn Fn(u64) + Sync),
+        batched: bool,
+    ) -> Summary {
         let n = options.samples;
         let chunks = n.div_ceil(CHUNK as u64);
-        let mut total = Tally {
-            sobol: options.sobol.then(|| {
-                [
-                    SobolSums::new(self.factors()),
-                    SobolSums::new(self.factors()),
-                ]
-            }),
-            ..Tally::default()
-        };
+        let mut total = Tally::new(options, self.factors());
         let mut cycles = Reservoir::new(options.seed);
         let mut zeta = Reservoir::new(options.seed ^ 0x9e37_79b9_7f4a_7c15);
         let mut first = 0;
@@ -200,7 +351,10 @@ impl AtMach<'_> {
                     || self.cases().to_vec(),
                     |cases, c| {
                         let rows = (n - c * CHUNK as u64).min(CHUNK as u64) as usize;
-                        self.chunk(options, c, rows, cases)
+                        match batched {
+                            true => self.chunk(options, c, rows, cases),
+                            false => self.chunk_per_sample(options, c, rows, cases),
+                        }
                     },
                 )
                 .collect();

@@ -4,12 +4,13 @@ use super::dist::{CorrelationError, Dist, DistError, cholesky, phi};
 use super::quasi::Sampling;
 use super::sobol::Indices;
 use super::stats::{Proportion, Quantiles};
-use crate::Derivatives;
 use crate::analysis::Analysis;
 use crate::case::{Case, DampingModel, evaluate_point_with};
 use crate::criteria::{Category, Verdict, phugoid_level, short_period_level};
 use crate::flight::{Air, Altitude, FlightCondition, Mass};
 use crate::lifting_surface::Harmonic;
+use crate::roots::{Complex64, RootsError, solve_quartic};
+use crate::{Derivatives, Quartic};
 use serde::Serialize;
 
 /// The twelve aerodynamic derivatives an error can be put on, by their
@@ -427,13 +428,28 @@ impl AtMach<'_> {
     }
 
     /// One sample: the inputs' values `x` ([`AtMach::values`]) with damping
-    /// model `model`, `case` that model's design point to overwrite.
+    /// model `model`, `case` that model's design point to overwrite. Its
+    /// quartic is solved alone; a run solves its samples' quartics many at
+    /// once ([`Prepared`]), to the same bits.
     pub fn evaluate(
         &self,
         x: &[f64],
         model: usize,
         case: &mut Case,
     ) -> Result<Outcome, SampleError> {
+        let p = self.prepare(x, model, case)?;
+        let roots = solve_quartic(p.quartic.to_array());
+        p.finish(roots)
+    }
+
+    /// [`AtMach::evaluate`] up to the quartic's roots: the sample's
+    /// derivatives, τ and quartic ([`Analysis::quartic_of`]).
+    pub fn prepare(
+        &self,
+        x: &[f64],
+        model: usize,
+        case: &mut Case,
+    ) -> Result<Prepared, SampleError> {
         let s = self.study;
         let nominal = &self.cases[model];
         let (mut mu1, mut i_b, mut cl_m2, mut h) =
@@ -472,11 +488,12 @@ impl AtMach<'_> {
                 *target = input.error.apply(*target, v);
             }
         }
-        let a = Analysis::without_classical(&d).map_err(|e| e.to_string())?;
-        if !a.is_finite() {
-            return Err("the sample's numbers overflow f64".to_string());
-        }
-        Ok(Outcome::of(&a, tau))
+        let quartic = Analysis::quartic_of(&d).map_err(|e| e.to_string())?;
+        Ok(Prepared {
+            derivatives: d,
+            tau,
+            quartic,
+        })
     }
 
     /// The physical flight condition with the sample's altitude, mass and
@@ -505,6 +522,34 @@ impl AtMach<'_> {
             }
         }
         f
+    }
+}
+
+/// A sample up to its quartic's roots ([`AtMach::prepare`]): what
+/// [`Prepared::finish`] needs with them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Prepared {
+    pub derivatives: Derivatives,
+    /// τ in seconds, where the flight condition is physical.
+    pub tau: Option<f64>,
+    /// The characteristic quartic (eq 5), its coefficients finite.
+    pub quartic: Quartic,
+}
+
+impl Prepared {
+    /// The sample's outcome from its quartic's roots as [`solve_quartic`]
+    /// gives them (or [`crate::roots::solve_quartics`], the same bits):
+    /// [`AtMach::evaluate`]'s result.
+    pub fn finish(
+        &self,
+        roots: Result<[Complex64; 4], RootsError>,
+    ) -> Result<Outcome, SampleError> {
+        let a = Analysis::without_classical_from_roots(&self.derivatives, self.quartic, roots)
+            .map_err(|e| e.to_string())?;
+        if !a.is_finite() {
+            return Err("the sample's numbers overflow f64".to_string());
+        }
+        Ok(Outcome::of(&a, self.tau))
     }
 }
 
