@@ -56,6 +56,11 @@ pub enum Warning {
     LatticeNearSonic { mach: f64 },
     /// The doublet lattice at a frequency its boxes barely resolve.
     LatticeHighFrequency { omega_bar: f64 },
+    /// The Mach box with a subsonic leading edge below the verified
+    /// β cot Λ (`lifting_surface::mach_range::MACH_BOX_VERIFIED_BETA_COT`).
+    MachBoxSubsonicEdge { mach: f64, beta_cot: f64 },
+    /// Between M = 1 and the Mach box's first Mach number: a straight line.
+    SonicBridge { mach: f64, mach_box_from: f64 },
 }
 
 impl fmt::Display for Warning {
@@ -131,6 +136,16 @@ impl fmt::Display for Warning {
             Warning::LatticeHighFrequency { omega_bar } => write!(
                 f,
                 "lifting surface at ω̄ = {omega_bar:.3}: the default lattice resolves ω̄ ≲ 2 (boxes short against the wavelength)"
+            ),
+            Warning::MachBoxSubsonicEdge { mach, beta_cot } => write!(
+                f,
+                "lifting surface at M = {}: the Mach box with a subsonic leading edge at β cot Λ = {beta_cot:.2}, below the 0.72 where it was verified (within 1 % of eq (36)); at 0.66 its results drifted by 1–14 % with refinement (docs/supersonic-oscillatory.md)",
+                Num(mach)
+            ),
+            Warning::SonicBridge { mach, mach_box_from } => write!(
+                f,
+                "lifting surface at M = {}: between the sonic point (M = 1) and the Mach box's first Mach number {mach_box_from:.4}, interpolated linearly in M — a bridge, not a theory",
+                Num(mach)
             ),
         }
     }
