@@ -14,8 +14,10 @@
 //!   and β cot Λ < [`MACH_BOX_VERIFIED_BETA_COT`] (its diaphragm was
 //!   measured to drift by 1–14 % there);
 //! - 1 < M < [`first_mach_box_mach`] (a few thousandths of Mach number on
-//!   the note's wings: the Mach box's grid, Δx = βΔy, holds fewer than
-//!   [`MACH_BOX_MIN_STRIPS`] strips within its row limit): the straight
+//!   the note's deltas, where the Mach box's grid, Δx = βΔy, holds fewer
+//!   than [`MACH_BOX_MIN_STRIPS`] strips within its row limit; up to where
+//!   the trailing edge turns supersonic on a wing whose trailing edge is
+//!   swept, which the Mach box needs): the straight
 //!   line in M between the sonic point and the Mach box's first solution,
 //!   with [`Warning::SonicBridge`] — a bridge, not a theory.
 //!
@@ -63,15 +65,19 @@ pub struct AtMach {
     pub warning: Option<Warning>,
 }
 
-/// The first Mach number at which the Mach box's grid holds
-/// [`MACH_BOX_MIN_STRIPS`] strips within [`MAX_ROWS`] rows: rows =
-/// ⌈x_end(N − ½)/(βs)⌉ (x_end the wing's aftmost point, s its semi-span).
+/// The first Mach number the dispatch gives to the Mach box: where its
+/// grid holds [`MACH_BOX_MIN_STRIPS`] strips within [`MAX_ROWS`] rows
+/// (rows = ⌈x_end(N − ½)/(βs)⌉, x_end the wing's aftmost point, s its
+/// semi-span) and its trailing edge is supersonic (β ≥ tan|Λ_TE|, which
+/// the method needs), whichever is the later.
 pub fn first_mach_box_mach(wing: &Trapezoid) -> f64 {
     let x_end = wing
         .root_chord
         .max(wing.leading_edge_at(wing.semi_span) + wing.tip_chord);
     let n = MACH_BOX_MIN_STRIPS as f64 - 0.5;
-    let beta = x_end * n / (MAX_ROWS as f64 * wing.semi_span) * (1.0 + 1e-9);
+    let grid = x_end * n / (MAX_ROWS as f64 * wing.semi_span);
+    let trailing_edge = wing.sweep_te().tan().abs();
+    let beta = grid.max(trailing_edge) * (1.0 + 1e-9);
     (1.0 + beta * beta).sqrt()
 }
 
