@@ -497,9 +497,9 @@ impl AeroModelName {
 /// ([`cache::steady`]).
 ///
 /// At any M in [0, 3] ([`mach_range::steady`]): the lattice's exact Mach
-/// derivatives below M = 0.9; above, the refined lattice (to M = 0.99) and
-/// the Mach box (supersonic) with the Mach derivatives by a central
-/// difference of ±[`mach_range::MACH_STEP`]. Between M = 0.99 and the Mach
+/// derivatives up to M = 0.99 (the refined lattice above 0.9); above M = 1
+/// the Mach box with the Mach derivatives by a central difference of
+/// ±[`mach_range::MACH_BOX_STEP`]. Between M = 0.99 and the Mach
 /// box's first Mach number an error (the quasi-steady α̇ derivatives are
 /// infinite at M = 1). The Mach box's warning (a subsonic leading edge
 /// beyond its verified range) is not carried: see the damping theory's.
