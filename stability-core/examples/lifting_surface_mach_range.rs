@@ -11,7 +11,10 @@ use stability_core::lifting_surface::{Harmonic, Trapezoid, cache};
 fn main() {
     let wings = [
         ("rectangle A = 2", cache::unit_wing(2.0, 1.0, 0.0)),
-        ("A = 3, λ = 0.5, Λ = 10°", cache::unit_wing(3.0, 0.5, 10f64.to_radians())),
+        (
+            "A = 3, λ = 0.5, Λ = 10°",
+            cache::unit_wing(3.0, 0.5, 10f64.to_radians()),
+        ),
     ];
     for (name, wing) in wings {
         let wing: Trapezoid = wing.expect("a valid wing");

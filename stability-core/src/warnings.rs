@@ -142,7 +142,10 @@ impl fmt::Display for Warning {
                 "lifting surface at M = {}: the Mach box with a subsonic leading edge at β cot Λ = {beta_cot:.2}, below the 0.72 where it was verified (within 1 % of eq (36)); at 0.66 its results drifted by 1–14 % with refinement (docs/supersonic-oscillatory.md)",
                 Num(mach)
             ),
-            Warning::SonicBridge { mach, mach_box_from } => write!(
+            Warning::SonicBridge {
+                mach,
+                mach_box_from,
+            } => write!(
                 f,
                 "lifting surface at M = {}: between the sonic point (M = 1) and the Mach box's first Mach number {mach_box_from:.4}, interpolated linearly in M — a bridge, not a theory",
                 Num(mach)

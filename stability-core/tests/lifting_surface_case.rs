@@ -94,7 +94,10 @@ fn above_mach_one_the_case_takes_the_mach_box_and_at_one_asks_for_a_frequency() 
     let c = case(45.0, 2.0, Theory::Supersonic, AeroModelName::LiftingSurface);
     let r = evaluate(&c).unwrap();
     let beta = 3f64.sqrt();
-    let (cla, h0) = (r.coefficients.lift_slope.value, r.coefficients.aerodynamic_centre.value);
+    let (cla, h0) = (
+        r.coefficients.lift_slope.value,
+        r.coefficients.aerodynamic_centre.value,
+    );
     assert!((cla * beta / 4.0 - 1.0).abs() < 2e-3, "{cla}");
     assert!((h0 - 0.5).abs() < 2e-3, "{h0}");
     // --damping lifting-surface at M = 1 without ω̄: an error saying what to give

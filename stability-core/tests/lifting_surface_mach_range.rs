@@ -133,8 +133,8 @@ fn in_the_sonic_band_a_small_frequency_is_an_error_that_says_what_to_give() {
     let p = planform(45.0);
     let wing = WingInput::from(&p);
     for (mach, omega_bar) in [(1.0, None), (0.995, Some(0.2)), (1.003, None)] {
-        let e = damping_derivatives(Theory::LiftingSurface, &wing, 0.25, mach, omega_bar)
-            .unwrap_err();
+        let e =
+            damping_derivatives(Theory::LiftingSurface, &wing, 0.25, mach, omega_bar).unwrap_err();
         assert!(
             matches!(
                 e,
@@ -169,7 +169,10 @@ fn the_bridge_is_the_line_from_the_sonic_point_to_the_mach_box() {
     assert_eq!(six(&at(1.0).solution), six(&sonic));
     assert_eq!(at(1.0).method, Method::NearSonic);
     let end = at(first);
-    assert_eq!((six(&end.solution), end.method), (six(&boxed), Method::MachBox));
+    assert_eq!(
+        (six(&end.solution), end.method),
+        (six(&boxed), Method::MachBox)
+    );
     let mid = at(0.5 * (1.0 + first));
     assert_eq!(mid.method, Method::SonicBridge);
     assert!(matches!(mid.warning, Some(Warning::SonicBridge { .. })));
@@ -217,7 +220,10 @@ fn across_mach_one_the_mach_box_starts_at_the_slender_limit() {
     // Mach box at its first Mach number (reported, docs/lattice-near-sonic.md)
     let a = solution(&w, 1.0, 0.6, Harmonic::Direct).unwrap().solution;
     let b = solution(&w, first, 0.6, Harmonic::Direct).unwrap().solution;
-    let (da, db) = (a.derivatives(0.25, 0.0).unwrap(), b.derivatives(0.25, 0.0).unwrap());
+    let (da, db) = (
+        a.derivatives(0.25, 0.0).unwrap(),
+        b.derivatives(0.25, 0.0).unwrap(),
+    );
     let cla = a.lift_slope();
     println!(
         "jump at ω̄ 0.6 (of C_Lα at M = 1): C_Lα {:+.3}, H₀ {:+.3} (abs), z_θ̇ {:+.3}, m_θ̇ {:+.3}, z_ẇ {:+.3}, m_ẇ {:+.3}",
