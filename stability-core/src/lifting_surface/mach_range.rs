@@ -172,7 +172,7 @@ pub fn steady(
         return Ok((cache::steady(wing, mach)?, None));
     }
     let first = first_mach_box_mach(wing);
-    if mach.is_finite() && mach <= SONIC_ANCHORS[0] && mach >= NEAR_SONIC_FROM {
+    if (NEAR_SONIC_FROM..=SONIC_ANCHORS[0]).contains(&mach) {
         return Ok((cache::near_sonic_steady(wing, mach)?, None));
     }
     let at = solution(wing, mach, 0.0, Harmonic::Direct)?;
