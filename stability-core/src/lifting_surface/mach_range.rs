@@ -162,7 +162,7 @@ fn supersonic(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<AtMach, Lif
 /// [`first_mach_box_mach`] on, the Mach box's with the central difference
 /// over M ± [`MACH_BOX_STEP`] (forward where M − step is below the Mach
 /// box's first Mach number). Between M = 0.99 and [`first_mach_box_mach`]
-/// an error ([`LiftingSurfaceError::SonicFrequency`]): the quasi-steady α̇
+/// an error ([`LiftingSurfaceError::SonicSteady`]): the quasi-steady α̇
 /// derivatives are infinite at M = 1.
 pub fn steady(
     wing: &Trapezoid,
@@ -174,6 +174,12 @@ pub fn steady(
     let first = first_mach_box_mach(wing);
     if (NEAR_SONIC_FROM..=SONIC_ANCHORS[0]).contains(&mach) {
         return Ok((cache::near_sonic_steady(wing, mach)?, None));
+    }
+    if mach.is_finite() && mach > SONIC_ANCHORS[0] && mach < first {
+        return Err(LiftingSurfaceError::SonicSteady {
+            mach,
+            first_mach_box: first,
+        });
     }
     let at = solution(wing, mach, 0.0, Harmonic::Direct)?;
     let lo = if mach - MACH_BOX_STEP < first {

@@ -143,6 +143,10 @@ pub enum LiftingSurfaceError {
         omega_bar: f64,
         first_mach_box: f64,
     },
+    #[error(
+        "the steady lifting-surface solution (the aerodynamic model's lift slope and aerodynamic centre) is not available at M = {mach}, between 0.99 and the Mach box's first Mach number {first_mach_box:.4}: its α̇ derivatives are infinite at M = 1 and the sonic extrapolation needs a frequency; use a Mach number ≤ 0.99 or ≥ {first_mach_box:.4}, or the default aero model there"
+    )]
+    SonicSteady { mach: f64, first_mach_box: f64 },
     #[error(transparent)]
     MachBox(#[from] crate::supersonic::oscillatory::MachBoxError),
 }
