@@ -1,9 +1,10 @@
 //! The wing's [`Solution`] at any Mach number from 0 to [`MACH_RANGE_MAX`]:
 //! one dispatch over the three lifting-surface methods, cached.
 //!
-//! - 0 ≤ M < 0.9: the doublet lattice on its default grid
-//!   ([`cache::solution`], Albano & Rodden 1969), unchanged;
-//! - 0.9 ≤ M ≤ 1: the refined lattice and its sonic extrapolation
+//! - 0 ≤ M ≤ 0.9: the doublet lattice on its default grid
+//!   ([`cache::solution`], Albano & Rodden 1969), unchanged (at 0.9 the
+//!   refined lattice is the default one);
+//! - 0.9 < M ≤ 1: the refined lattice and its sonic extrapolation
 //!   ([`cache::near_sonic`], `docs/lattice-near-sonic.md`). Above M = 0.99
 //!   (the extrapolation in β²) it needs ω̄ ≥ [`SONIC_OMEGA_BAR_MIN`], where
 //!   it was verified: below, an error that says what to give instead;
@@ -104,7 +105,8 @@ pub fn solution(
         method,
         warning: None,
     };
-    if mach < NEAR_SONIC_FROM {
+    // at 0.9 itself the refined lattice is the default one: one cache slot
+    if mach <= NEAR_SONIC_FROM {
         let s = cache::solution(wing, mach, omega_bar, harmonic)?;
         return Ok(plain(s, Method::Lattice));
     }
@@ -168,7 +170,7 @@ pub fn steady(
     wing: &Trapezoid,
     mach: f64,
 ) -> Result<(Steady, Option<Warning>), LiftingSurfaceError> {
-    if mach.is_finite() && (0.0..NEAR_SONIC_FROM).contains(&mach) {
+    if mach.is_finite() && (0.0..=NEAR_SONIC_FROM).contains(&mach) {
         return Ok((cache::steady(wing, mach)?, None));
     }
     let first = first_mach_box_mach(wing);
