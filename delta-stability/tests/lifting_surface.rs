@@ -413,13 +413,13 @@ fn at_mach_one_the_lattices_aerodynamic_model_is_that_points_error() {
     assert_eq!(lines.len(), 3);
     assert!(lines[0].ends_with(',') && !lines[0].contains("not available"));
     assert!(
-        lines[1].contains("at M = 1 the lifting-surface solution")
-            && lines[1].contains("verified only for ω̄ ≥ 0.3"),
+        lines[1].contains("not available at M = 1, between 0.99")
+            && lines[1].contains("or the default aero model"),
         "{}",
         lines[1]
     );
     assert!(
-        lines[2].ends_with(',') && !lines[2].contains("verified only"),
+        lines[2].ends_with(',') && !lines[2].contains("not available"),
         "{}",
         lines[2]
     );
