@@ -15,7 +15,7 @@ use crate::derivative_tables::DerivativeTables;
 use crate::display::Num;
 use crate::geometry::Planform;
 use crate::geometry::Trapezoid;
-use crate::lifting_surface::{LiftingSurfaceError, Steady, cache};
+use crate::lifting_surface::{LiftingSurfaceError, Steady, cache, mach_range};
 use crate::theory::Row;
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -500,14 +500,20 @@ impl AeroModelName {
 /// The lattice's steady solution of the planform's shape at Mach `m`, with
 /// its Mach derivatives: one solve per (shape, M), cached
 /// ([`cache::steady`]).
+///
+/// At any M in [0, 3] ([`mach_range::steady`]): the lattice's exact Mach
+/// derivatives up to M = 0.99 (the refined lattice above 0.9); above M = 1
+/// the Mach box with the Mach derivatives by a central difference of
+/// ±[`mach_range::MACH_BOX_STEP`]. Between M = 0.99 and the Mach
+/// box's first Mach number an error (the quasi-steady α̇ derivatives are
+/// infinite at M = 1). The Mach box's warning (a subsonic leading edge
+/// beyond its verified range) is not carried: see the damping theory's.
 pub fn lifting_surface_steady(p: &Planform, m: f64) -> Result<Steady, AeroError> {
-    // (NaN too)
-    if m.is_nan() || m >= 1.0 {
-        return Err(AeroError::LatticeMach(m));
-    }
     let wing = cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)
         .map_err(AeroError::LiftingSurface)?;
-    cache::steady(&wing, m).map_err(AeroError::LiftingSurface)
+    mach_range::steady(&wing, m)
+        .map(|(s, _)| s)
+        .map_err(AeroError::LiftingSurface)
 }
 
 /// The aerodynamic model: one source per coefficient.

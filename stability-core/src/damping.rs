@@ -16,7 +16,7 @@ use crate::aero::TheoryCoefficients;
 use crate::display::{Num, OptNum};
 use crate::geometry::Planform;
 use crate::invalid::{self, Invalid};
-use crate::lifting_surface::{Harmonic, LiftingSurfaceError, cache};
+use crate::lifting_surface::{Harmonic, LiftingSurfaceError, cache, mach_range};
 use crate::supersonic::{self, EdgeRegime, SupersonicError, Wing, transonic};
 use crate::warnings::{Warning, Warnings};
 use serde::Serialize;
@@ -368,8 +368,10 @@ fn transonic_frequency(
     })
 }
 
-/// The doublet lattice ([`crate::lifting_surface`]) of the wing's shape, one
-/// cached solve per (wing, M, ω̄) ([`cache::solution`]): at ω̄ for
+/// The lifting surface of the wing's shape at any M in [0, 3]
+/// ([`mach_range::solution`]: the doublet lattice below M = 1, its sonic
+/// extrapolation at M = 1, the Mach box above), one cached solve per
+/// (wing, M, ω̄): at ω̄ for
 /// `lifting-surface-frequency`, which needs it; at the ω̄ given, or
 /// quasi-steady (ω̄ = 0) when none is, for `lifting-surface`. The damping
 /// four about `h` by axis transfer ([`crate::lifting_surface::Solution::derivatives`]).
@@ -392,9 +394,13 @@ fn lifting_surface(
         (_, w) => w.unwrap_or(0.0),
     };
     let shape = cache::unit_wing(wing.aspect_ratio, wing.taper, wing.sweep_le)?;
-    let solution = cache::solution(&shape, mach, w, harmonic)?;
-    if mach > LATTICE_MACH {
+    let at = mach_range::solution(&shape, mach, w, harmonic)?;
+    let solution = at.solution;
+    if mach > LATTICE_MACH && mach <= 1.0 {
         out.warnings.push(Warning::LatticeNearSonic { mach });
+    }
+    if let Some(warning) = at.warning {
+        out.warnings.push(warning);
     }
     if w > LATTICE_OMEGA_BAR {
         out.warnings

@@ -13,6 +13,24 @@
 //! | M ≥ [`SUPERSONIC_FROM`] (1.2) | linear supersonic theory: (36) while the leading edge is subsonic (a cropped wing: its potentials less the tips' corrections, `supersonic::subsonic_edge`), the supersonic-edge theory past it (`supersonic::edge_theory`; continuous at the sonic edge) | the same theory's |
 //!
 //! The bands are where the curve is a guess: the report draws them shaded.
+//!
+//! # Narrowing the joins (not done)
+//! [`crate::lifting_surface::mach_range`] now gives one lifting-surface
+//! solution at every M from 0 to 3 at ω̄ ≥ 0.3 near M = 1. Using it here
+//! would take: the damping from it through 0.9 < M ≤ 1 instead of the join
+//! to Mangler's (39)–(40), the short period's ω̄ iterated through
+//! [`Harmonic::Interpolated`] (its refined tables exist,
+//! [`cache::near_sonic`]); a fallback below ω̄ = 0.3 near M = 1 (Mangler's
+//! theory, as now); the lift slope and aerodynamic centre, which are
+//! quasi-steady, kept on the present join between 0.99 and the Mach box
+//! (`mach_range::steady` refuses there); and above M = 1 the Mach box only
+//! where the leading edge is supersonic or β cot Λ ≥ 0.72 — below that its
+//! diaphragm drifts by 1–14 % and (36) is the better number. The measured
+//! step between the two sides at M = 1 (≈ 10 % of C_Lα on the A = 2
+//! rectangle at ω̄ = 0.6, `docs/lattice-near-sonic.md`, "Across M = 1") would
+//! then be a discontinuity of the default model, and its cost 2–3 s per
+//! wing near M = 1 (the anchor lattices) against milliseconds: both would
+//! change the report's numbers and runtime, which is why it is not done.
 
 use crate::aero::{TheoryCoefficients, Value, hermite, monotone_slopes};
 use crate::damping::{

@@ -61,6 +61,11 @@ pub enum Warning {
     /// `at` behind the wing's apex, where the tips' Mach lines meet the
     /// centre line `from` behind it (in wing M.A.C.s).
     DownwashNearWing { mach: f64, at: f64, from: f64 },
+    /// The Mach box with a subsonic leading edge below the verified
+    /// β cot Λ (`lifting_surface::mach_range::MACH_BOX_VERIFIED_BETA_COT`).
+    MachBoxSubsonicEdge { mach: f64, beta_cot: f64 },
+    /// Between M = 1 and the Mach box's first Mach number: a straight line.
+    SonicBridge { mach: f64, mach_box_from: f64 },
 }
 
 impl fmt::Display for Warning {
@@ -129,9 +134,8 @@ impl fmt::Display for Warning {
             ),
             Warning::LatticeNearSonic { mach } => write!(
                 f,
-                "lifting surface at M = {}: the default lattice's boxes are long against the chord stretched by 1/β = {:.2}, and linear theory fails towards M = 1",
-                Num(mach),
-                1.0 / (1.0 - mach * mach).sqrt()
+                "lifting surface at M = {}: the lattice refined near M = 1 (within 3·10⁻² on each derivative, 1 % of C_Lα more from the sonic extrapolation above M = 0.99: docs/lattice-near-sonic.md), and linear theory fails towards M = 1",
+                Num(mach)
             ),
             Warning::LatticeHighFrequency { omega_bar } => write!(
                 f,
@@ -140,6 +144,19 @@ impl fmt::Display for Warning {
             Warning::DownwashNearWing { mach, at, from } => write!(
                 f,
                 "tailplane at M = {}: the wing's downwash at it is the far wake's (Trefftz plane), which holds behind the point where the tips' Mach lines meet the centre line, {from:.2} M.A.C.s behind the wing's apex; the tail's centre is {at:.2} behind it, where linear theory's downwash is smaller (docs/configurations.md)",
+                Num(mach)
+            ),
+            Warning::MachBoxSubsonicEdge { mach, beta_cot } => write!(
+                f,
+                "lifting surface at M = {}: the Mach box with a subsonic leading edge at β cot Λ = {beta_cot:.2}, below the 0.72 where it was verified (within 1 % of eq (36)); at 0.66 its results drifted by 1–14 % with refinement (docs/supersonic-oscillatory.md)",
+                Num(mach)
+            ),
+            Warning::SonicBridge {
+                mach,
+                mach_box_from,
+            } => write!(
+                f,
+                "lifting surface at M = {}: between the sonic point (M = 1) and the Mach box's first Mach number {mach_box_from:.4}, interpolated linearly in M — a bridge, not a theory",
                 Num(mach)
             ),
         }

@@ -1,12 +1,12 @@
 //! A configuration through the design-point pipeline (issue 21): the
 //! increment over the wing reaches the coefficients, the damping, the
 //! neutral point and the `configuration` shares, checked against hand
-//! formulas (supersonic now; the subsonic ones wait for the lattice).
+//! formulas, subsonic (the multi-surface lattice) and supersonic.
 
-use stability_core::lifting_surface::{Lattice, LatticeSpec};
 use stability_core::case::{Case, DampingModel, evaluate};
 use stability_core::configuration::{Body, Configuration, Part, Surface, SurfaceKind};
 use stability_core::geometry::{Planform, Size, Trapezoid};
+use stability_core::lifting_surface::{Lattice, LatticeSpec};
 use stability_core::study::report_wing;
 use std::f64::consts::PI;
 use std::sync::Arc;

@@ -5,7 +5,7 @@
 //! where ω̄ = s/μ₁, the subsonic limit is an error naming it; and the issue's
 //! headline — the 45° delta's short period at M = 0.5.
 
-use stability_core::aero::{AeroError, AeroModel, AeroModelName};
+use stability_core::aero::{AeroModel, AeroModelName};
 use stability_core::case::{Case, CaseError, DampingModel, evaluate, evaluate_point_with};
 use stability_core::damping::{DampingError, Theory, WingInput, damping_derivatives};
 use stability_core::geometry::{Planform, Size};
@@ -87,24 +87,36 @@ fn the_aerodynamic_model_takes_the_steady_solve_with_its_mach_derivatives() {
 }
 
 #[test]
-fn at_and_above_mach_one_the_lattice_is_an_error_that_names_the_limit() {
-    let c = case(45.0, 1.2, Theory::Supersonic, AeroModelName::LiftingSurface);
-    match evaluate(&c) {
-        Err(CaseError::Aero(AeroError::LatticeMach(m))) => assert_eq!(m, 1.2),
-        other => panic!("{other:?}"),
-    }
-    let msg = evaluate(&c).unwrap_err().to_string();
-    assert!(msg.contains("need 0 ≤ M < 1, not M = 1.2"), "{msg}");
+fn above_mach_one_the_case_takes_the_mach_box_and_at_one_asks_for_a_frequency() {
+    // --aero lifting-surface at M = 2 on the 45° delta (supersonic leading
+    // edge): the lift slope 4/β exactly, H₀ = ½ (a delta's centre of
+    // pressure at 2/3 of the root chord)
+    let c = case(45.0, 2.0, Theory::Supersonic, AeroModelName::LiftingSurface);
+    let r = evaluate(&c).unwrap();
+    let beta = 3f64.sqrt();
+    let (cla, h0) = (
+        r.coefficients.lift_slope.value,
+        r.coefficients.aerodynamic_centre.value,
+    );
+    assert!((cla * beta / 4.0 - 1.0).abs() < 2e-3, "{cla}");
+    assert!((h0 - 0.5).abs() < 2e-3, "{h0}");
+    // --damping lifting-surface at M = 1 without ω̄: an error saying what to give
     let c = case(45.0, 1.0, Theory::LiftingSurface, AeroModelName::Default);
-    assert!(matches!(
-        evaluate(&c),
-        Err(CaseError::Damping(DampingError::LiftingSurface(
-            LiftingSurfaceError::Mach(_)
-        )))
-    ));
+    let e = evaluate(&c).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            CaseError::Damping(DampingError::LiftingSurface(
+                LiftingSurfaceError::SonicFrequency { .. }
+            ))
+        ),
+        "{e:?}"
+    );
+    assert!(e.to_string().contains("--omega-bar 0.3"), "{e}");
     // the standalone function too, and the frequency theory needs an ω̄
     let wing = WingInput::from(&c.planform);
-    assert!(damping_derivatives(Theory::LiftingSurface, &wing, 0.25, 1.5, None).is_err());
+    assert!(damping_derivatives(Theory::LiftingSurface, &wing, 0.25, 1.5, None).is_ok());
+    assert!(damping_derivatives(Theory::LiftingSurface, &wing, 0.25, 3.5, None).is_err());
     assert!(matches!(
         damping_derivatives(Theory::LiftingSurfaceFrequency, &wing, 0.25, 0.5, None),
         Err(DampingError::Frequency {

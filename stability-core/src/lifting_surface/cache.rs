@@ -133,6 +133,18 @@ pub fn near_sonic(
     })
 }
 
+/// The steady solution with its exact Mach derivatives
+/// ([`Lattice::solve_steady`]) on the refined lattice of
+/// [`LatticeSpec::for_mach`] at 0.9 ≤ M < 1 — the lattice [`near_sonic`]
+/// solves there — from the cache or solved into it.
+pub fn near_sonic_steady(wing: &Trapezoid, mach: f64) -> Result<Steady, LiftingSurfaceError> {
+    check(mach, 0.0)?;
+    let key = (shape(wing), mach.to_bits());
+    get_or_solve(&cache().near_sonic_steady, key, || {
+        Lattice::new(wing, LatticeSpec::for_mach(wing, mach))?.solve_steady(mach)
+    })
+}
+
 /// Empties the cache (and zeroes [`solves`]).
 pub fn clear() {
     let c = cache();
@@ -153,6 +165,10 @@ pub fn clear() {
         .unwrap_or_else(PoisonError::into_inner)
         .clear();
     c.near_sonic_tables
+        .write()
+        .unwrap_or_else(PoisonError::into_inner)
+        .clear();
+    c.near_sonic_steady
         .write()
         .unwrap_or_else(PoisonError::into_inner)
         .clear();
@@ -179,6 +195,8 @@ struct Cache {
     /// [`LatticeSpec::for_mach`] (which differ from the default above 0.9).
     near_sonic: RwLock<HashMap<(Shape, u64, u64), Slot<Solution>>>,
     near_sonic_tables: RwLock<HashMap<(Shape, u64), Arc<FrequencyTable>>>,
+    /// [`near_sonic_steady`]'s solutions.
+    near_sonic_steady: RwLock<HashMap<(Shape, u64), Slot<Steady>>>,
 }
 
 fn cache() -> &'static Cache {

@@ -77,6 +77,7 @@ pub mod doublet_line;
 pub mod frequency;
 pub mod kernel;
 pub(crate) mod lattice;
+pub mod mach_range;
 pub mod near_sonic;
 pub(crate) mod solve;
 
@@ -128,6 +129,26 @@ pub enum LiftingSurfaceError {
         "at M = 1 the quasi-steady α̇ derivatives are infinite (they grow like ln(1/β) as M → 1): give the motion's frequency parameter ω̄ > 0, or a Mach number below 1"
     )]
     SonicQuasiSteady,
+    #[error(
+        "the lifting-surface methods cover 0 ≤ M ≤ {max}, not M = {0}",
+        max = mach_range::MACH_RANGE_MAX
+    )]
+    MachRange(f64),
+    #[error(
+        "at M = {mach} the lifting-surface solution comes from the sonic extrapolation (M > 0.99) or the bridge to the Mach box (which starts at M = {first_mach_box:.4}), verified only for ω̄ ≥ {min}, not ω̄ = {omega_bar}: give --omega-bar {min} or more (or use lifting-surface-frequency), a Mach number ≤ 0.99 or ≥ {first_mach_box:.4}, or the faired damping / default aero model",
+        min = near_sonic::SONIC_OMEGA_BAR_MIN
+    )]
+    SonicFrequency {
+        mach: f64,
+        omega_bar: f64,
+        first_mach_box: f64,
+    },
+    #[error(
+        "the steady lifting-surface solution (the aerodynamic model's lift slope and aerodynamic centre) is not available at M = {mach}, between 0.99 and the Mach box's first Mach number {first_mach_box:.4}: its α̇ derivatives are infinite at M = 1 and the sonic extrapolation needs a frequency; use a Mach number ≤ 0.99 or ≥ {first_mach_box:.4}, or the default aero model there"
+    )]
+    SonicSteady { mach: f64, first_mach_box: f64 },
+    #[error(transparent)]
+    MachBox(#[from] crate::supersonic::oscillatory::MachBoxError),
 }
 
 /// One solve of the lattice: the wing's response to incidence and to pitch

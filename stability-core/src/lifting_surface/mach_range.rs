@@ -1,0 +1,210 @@
+//! The wing's [`Solution`] at any Mach number from 0 to [`MACH_RANGE_MAX`]:
+//! one dispatch over the three lifting-surface methods, cached.
+//!
+//! - 0 ≤ M ≤ 0.9: the doublet lattice on its default grid
+//!   ([`cache::solution`], Albano & Rodden 1969), unchanged (at 0.9 the
+//!   refined lattice is the default one);
+//! - 0.9 < M ≤ 1: the refined lattice and its sonic extrapolation
+//!   ([`cache::near_sonic`], `docs/lattice-near-sonic.md`). Above M = 0.99
+//!   (the extrapolation in β²) it needs ω̄ ≥ [`SONIC_OMEGA_BAR_MIN`], where
+//!   it was verified: below, an error that says what to give instead;
+//! - M ≥ [`first_mach_box_mach`]: the Mach box method
+//!   ([`crate::supersonic::oscillatory::cache::solution`], Pines, Dugundji &
+//!   Neuringer 1955; `docs/supersonic-oscillatory.md`), with
+//!   [`Warning::MachBoxSubsonicEdge`] where the leading edge is subsonic
+//!   and β cot Λ < [`MACH_BOX_VERIFIED_BETA_COT`] (its diaphragm was
+//!   measured to drift by 1–14 % there);
+//! - 1 < M < [`first_mach_box_mach`] (a few thousandths of Mach number on
+//!   the note's deltas, where the Mach box's grid, Δx = βΔy, holds fewer
+//!   than [`MACH_BOX_MIN_STRIPS`] strips within its row limit; up to where
+//!   the trailing edge turns supersonic on a wing whose trailing edge is
+//!   swept, which the Mach box needs): the straight
+//!   line in M between the sonic point and the Mach box's first solution,
+//!   with [`Warning::SonicBridge`] — a bridge, not a theory.
+//!
+//! [`steady`] gives the quasi-steady solution with its Mach derivatives
+//! (for eqs 27–29): the lattice's exact ones up to M = 0.99, a central
+//! difference of the Mach box (step [`MACH_BOX_STEP`]) above M = 1.
+
+use super::derivatives::Extrapolate;
+use super::near_sonic::{NEAR_SONIC_FROM, SONIC_ANCHORS, SONIC_OMEGA_BAR_MIN};
+use super::{Harmonic, LiftingSurfaceError, Solution, Steady, Trapezoid, cache};
+use crate::supersonic::oscillatory::{self as mach_box, MAX_ROWS};
+use crate::warnings::Warning;
+
+/// The highest Mach number the dispatch takes.
+pub const MACH_RANGE_MAX: f64 = 3.0;
+
+/// The fewest strips the dispatch lets the Mach box use: at 32 strips
+/// (extrapolated with 16) the supersonic-edged deltas are within 4·10⁻³ of
+/// the exact reverse-flow values (`docs/supersonic-oscillatory.md`,
+/// convergence table).
+pub const MACH_BOX_MIN_STRIPS: usize = 32;
+
+/// The smallest β cot Λ at which the Mach box's subsonic leading edge was
+/// verified (within 1 % of eq (36), 60° delta at M = 1.6).
+pub const MACH_BOX_VERIFIED_BETA_COT: f64 = 0.72;
+
+/// The Mach-number step of the Mach box's central differences: long
+/// enough that its discretisation error (≈ 10⁻⁴ of C_Lα, varying with M as
+/// the edges cut the boxes differently) is not amplified into the
+/// derivative (at 0.005 the 45° delta's dC_Lα/dM at M = 2 was 3 % off the
+/// exact −4M/β³).
+pub const MACH_BOX_STEP: f64 = 0.05;
+
+/// Which method gave a [`Solution`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    Lattice,
+    NearSonic,
+    /// The line between the sonic point and the Mach box's first Mach number.
+    SonicBridge,
+    MachBox,
+}
+
+/// A solution, the method that gave it, and what is worth a warning.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AtMach {
+    pub solution: Solution,
+    pub method: Method,
+    pub warning: Option<Warning>,
+}
+
+/// The first Mach number the dispatch gives to the Mach box: where its
+/// grid holds [`MACH_BOX_MIN_STRIPS`] strips within [`MAX_ROWS`] rows
+/// (rows = ⌈x_end(N − ½)/(βs)⌉, x_end the wing's aftmost point, s its
+/// semi-span) and its trailing edge is supersonic (β ≥ tan|Λ_TE|, which
+/// the method needs), whichever is the later.
+pub fn first_mach_box_mach(wing: &Trapezoid) -> f64 {
+    let x_end = wing
+        .root_chord
+        .max(wing.leading_edge_at(wing.semi_span) + wing.tip_chord);
+    let n = MACH_BOX_MIN_STRIPS as f64 - 0.5;
+    let grid = x_end * n / (MAX_ROWS as f64 * wing.semi_span);
+    let trailing_edge = wing.sweep_te().tan().abs();
+    let beta = grid.max(trailing_edge) * (1.0 + 1e-9);
+    (1.0 + beta * beta).sqrt()
+}
+
+/// The wing's [`Solution`] at `mach` (0 ≤ M ≤ [`MACH_RANGE_MAX`]) and ω̄
+/// (see the module's documentation for which method, where).
+pub fn solution(
+    wing: &Trapezoid,
+    mach: f64,
+    omega_bar: f64,
+    harmonic: Harmonic,
+) -> Result<AtMach, LiftingSurfaceError> {
+    if !(mach.is_finite() && (0.0..=MACH_RANGE_MAX).contains(&mach)) {
+        return Err(LiftingSurfaceError::MachRange(mach));
+    }
+    if !(omega_bar.is_finite() && omega_bar >= 0.0) {
+        return Err(LiftingSurfaceError::Frequency(omega_bar));
+    }
+    let plain = |solution, method| AtMach {
+        solution,
+        method,
+        warning: None,
+    };
+    // at 0.9 itself the refined lattice is the default one: one cache slot
+    if mach <= NEAR_SONIC_FROM {
+        let s = cache::solution(wing, mach, omega_bar, harmonic)?;
+        return Ok(plain(s, Method::Lattice));
+    }
+    let first = first_mach_box_mach(wing);
+    if mach >= first {
+        return supersonic(wing, mach, omega_bar);
+    }
+    if mach > SONIC_ANCHORS[0] && omega_bar < SONIC_OMEGA_BAR_MIN {
+        return Err(LiftingSurfaceError::SonicFrequency {
+            mach,
+            omega_bar,
+            first_mach_box: first,
+        });
+    }
+    if mach <= 1.0 {
+        let s = cache::near_sonic(wing, mach, omega_bar, harmonic)?;
+        return Ok(plain(s, Method::NearSonic));
+    }
+    let a = cache::near_sonic(wing, 1.0, omega_bar, harmonic)?;
+    let b = supersonic(wing, first, omega_bar)?.solution;
+    let t = (mach - 1.0) / (first - 1.0);
+    let s = Solution {
+        mach,
+        ..a.combine(&b, 1.0 - t, t)
+    };
+    Ok(AtMach {
+        solution: s,
+        method: Method::SonicBridge,
+        warning: Some(Warning::SonicBridge {
+            mach,
+            mach_box_from: first,
+        }),
+    })
+}
+
+/// The Mach box's solution (M > 1), warned where the leading edge is
+/// subsonic beyond the verified β cot Λ.
+fn supersonic(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<AtMach, LiftingSurfaceError> {
+    let s = mach_box::cache::solution(wing, mach, omega_bar)?;
+    let beta_cot = (mach * mach - 1.0).sqrt() / wing.sweep_le.tan();
+    let warning = (wing.sweep_le > 0.0 && beta_cot < MACH_BOX_VERIFIED_BETA_COT)
+        .then_some(Warning::MachBoxSubsonicEdge { mach, beta_cot });
+    Ok(AtMach {
+        solution: s,
+        method: Method::MachBox,
+        warning,
+    })
+}
+
+/// The quasi-steady solution at `mach` with its Mach derivatives (eqs
+/// 27–29 need dC_Lα/dM and dH₀/dM): the lattice's exact ones
+/// ([`Lattice::solve_steady`](super::Lattice::solve_steady)) below M = 0.99
+/// — on the default lattice below 0.9 ([`cache::steady`]), on the refined
+/// one of [`cache::near_sonic`] above ([`cache::near_sonic_steady`]); from
+/// [`first_mach_box_mach`] on, the Mach box's with the central difference
+/// over M ± [`MACH_BOX_STEP`] (forward where M − step is below the Mach
+/// box's first Mach number). Between M = 0.99 and [`first_mach_box_mach`]
+/// an error ([`LiftingSurfaceError::SonicSteady`]): the quasi-steady α̇
+/// derivatives are infinite at M = 1.
+pub fn steady(
+    wing: &Trapezoid,
+    mach: f64,
+) -> Result<(Steady, Option<Warning>), LiftingSurfaceError> {
+    if mach.is_finite() && (0.0..=NEAR_SONIC_FROM).contains(&mach) {
+        return Ok((cache::steady(wing, mach)?, None));
+    }
+    let first = first_mach_box_mach(wing);
+    if (NEAR_SONIC_FROM..=SONIC_ANCHORS[0]).contains(&mach) {
+        return Ok((cache::near_sonic_steady(wing, mach)?, None));
+    }
+    if mach.is_finite() && mach > SONIC_ANCHORS[0] && mach < first {
+        return Err(LiftingSurfaceError::SonicSteady {
+            mach,
+            first_mach_box: first,
+        });
+    }
+    let at = solution(wing, mach, 0.0, Harmonic::Direct)?;
+    let lo = if mach - MACH_BOX_STEP < first {
+        mach
+    } else {
+        mach - MACH_BOX_STEP
+    };
+    let hi = if mach + MACH_BOX_STEP > MACH_RANGE_MAX {
+        mach
+    } else {
+        mach + MACH_BOX_STEP
+    };
+    let (a, b) = (
+        solution(wing, lo, 0.0, Harmonic::Direct)?.solution,
+        solution(wing, hi, 0.0, Harmonic::Direct)?.solution,
+    );
+    let d = |x: f64, y: f64| (y - x) / (hi - lo);
+    let s = Steady {
+        solution: at.solution,
+        d_lift_alpha: d(a.lift_alpha, b.lift_alpha),
+        d_moment_alpha: d(a.moment_alpha, b.moment_alpha),
+        d_lift_q: d(a.lift_q, b.lift_q),
+        d_moment_q: d(a.moment_q, b.moment_q),
+    };
+    Ok((s, at.warning))
+}
