@@ -132,34 +132,48 @@ impl fmt::Display for Warning {
                 f,
                 "the frequency parameter did not converge in {iterations} iterations (last ω̄ = {last:.6})"
             ),
-            Warning::LatticeNearSonic { mach } => write!(
-                f,
-                "lifting surface at M = {}: the lattice refined near M = 1 (within 3·10⁻² on each derivative, 1 % of C_Lα more from the sonic extrapolation above M = 0.99: docs/lattice-near-sonic.md), and linear theory fails towards M = 1",
-                Num(mach)
-            ),
-            Warning::LatticeHighFrequency { omega_bar } => write!(
-                f,
-                "lifting surface at ω̄ = {omega_bar:.3}: the default lattice resolves ω̄ ≲ 2 (boxes short against the wavelength)"
-            ),
-            Warning::DownwashNearWing { mach, at, from } => write!(
-                f,
-                "tailplane at M = {}: the wing's downwash at it is the far wake's (Trefftz plane), which holds behind the point where the tips' Mach lines meet the centre line, {from:.2} M.A.C.s behind the wing's apex; the tail's centre is {at:.2} behind it, where linear theory's downwash is smaller (docs/configurations.md)",
-                Num(mach)
-            ),
-            Warning::MachBoxSubsonicEdge { mach, beta_cot } => write!(
-                f,
-                "lifting surface at M = {}: the Mach box with a subsonic leading edge at β cot Λ = {beta_cot:.2}, below the 0.72 where it was verified (within 1 % of eq (36)); at 0.66 its results drifted by 1–14 % with refinement (docs/supersonic-oscillatory.md)",
-                Num(mach)
-            ),
-            Warning::SonicBridge {
-                mach,
-                mach_box_from,
-            } => write!(
-                f,
-                "lifting surface at M = {}: between the sonic point (M = 1) and the Mach box's first Mach number {mach_box_from:.4}, interpolated linearly in M — a bridge, not a theory",
-                Num(mach)
-            ),
+            Warning::LatticeNearSonic { .. }
+            | Warning::LatticeHighFrequency { .. }
+            | Warning::DownwashNearWing { .. }
+            | Warning::MachBoxSubsonicEdge { .. }
+            | Warning::SonicBridge { .. } => lifting_surface(self, f),
         }
+    }
+}
+
+/// The lifting-surface and configuration warnings in words (the lattice
+/// near M = 1 and at high ω̄, the Mach box, the sonic bridge, a tail's
+/// downwash); [`Warning`]'s other kinds write nothing here.
+fn lifting_surface(w: &Warning, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+    match *w {
+        Warning::LatticeNearSonic { mach } => write!(
+            f,
+            "lifting surface at M = {}: the lattice refined near M = 1 (within 3·10⁻² on each derivative, 1 % of C_Lα more from the sonic extrapolation above M = 0.99: docs/lattice-near-sonic.md), and linear theory fails towards M = 1",
+            Num(mach)
+        ),
+        Warning::LatticeHighFrequency { omega_bar } => write!(
+            f,
+            "lifting surface at ω̄ = {omega_bar:.3}: the default lattice resolves ω̄ ≲ 2 (boxes short against the wavelength)"
+        ),
+        Warning::DownwashNearWing { mach, at, from } => write!(
+            f,
+            "tailplane at M = {}: the wing's downwash at it is the far wake's (Trefftz plane), which holds behind the point where the tips' Mach lines meet the centre line, {from:.2} M.A.C.s behind the wing's apex; the tail's centre is {at:.2} behind it, where linear theory's downwash is smaller (docs/configurations.md)",
+            Num(mach)
+        ),
+        Warning::MachBoxSubsonicEdge { mach, beta_cot } => write!(
+            f,
+            "lifting surface at M = {}: the Mach box with a subsonic leading edge at β cot Λ = {beta_cot:.2}, below the 0.72 where it was verified (within 1 % of eq (36)); at 0.66 its results drifted by 1–14 % with refinement (docs/supersonic-oscillatory.md)",
+            Num(mach)
+        ),
+        Warning::SonicBridge {
+            mach,
+            mach_box_from,
+        } => write!(
+            f,
+            "lifting surface at M = {}: between the sonic point (M = 1) and the Mach box's first Mach number {mach_box_from:.4}, interpolated linearly in M — a bridge, not a theory",
+            Num(mach)
+        ),
+        _ => Ok(()),
     }
 }
 
