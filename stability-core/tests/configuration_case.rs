@@ -3,10 +3,10 @@
 //! neutral point and the `configuration` shares, checked against hand
 //! formulas (supersonic now; the subsonic ones wait for the lattice).
 
-use stability_core::lifting_surface::{Lattice, LatticeSpec};
 use stability_core::case::{Case, DampingModel, evaluate};
 use stability_core::configuration::{Body, Configuration, Part, Surface, SurfaceKind};
 use stability_core::geometry::{Planform, Size, Trapezoid};
+use stability_core::lifting_surface::{Lattice, LatticeSpec};
 use stability_core::study::report_wing;
 use std::f64::consts::PI;
 use std::sync::Arc;

@@ -144,7 +144,7 @@ fn surface_json(s: &Sizing) -> SurfaceJson {
 fn answer(s: &Sizing) -> String {
     let name = s.surface.name();
     match (s.area, s.volume) {
-        (Some(a), _) if a == 0.0 => format!("no {name} is needed"),
+        (Some(0.0), _) => format!("no {name} is needed"),
         (Some(a), Some(v)) => format!(
             "a {name} of V̄ = {} (S/S_w = {}) is needed",
             sig(v, 3),
