@@ -15,7 +15,11 @@ use crate::report::certainty::Certainty;
 use crate::report::conclusions::{self, Judged};
 use crate::report::manifest::{self, MANIFEST, Manifest};
 use crate::report::summary::{self, Findings};
+use crate::report::tail::TailNeeded;
 use crate::report::{Plate, SECTIONS, Study, html};
+
+/// The progress bar's and the page's title of §10 (ours).
+const TAIL_TITLE: &str = "§10 (ours): the tail the 45° delta needs";
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use stability_io::diag::IoError;
 use stability_io::files::write_error;
@@ -130,7 +134,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     }
     super::report_design::refuse_design_options(args)?;
     let out = Path::new(&args.out);
-    let bar = progress_bar(SECTIONS.len() + 4);
+    let bar = progress_bar(SECTIONS.len() + 5);
     let mut done = None;
     write_report(out, |write| {
         bar.set_message("the 45° and 60° deltas across Mach number");
@@ -146,6 +150,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             sections.push((section.title, plates));
             bar.inc(1);
         }
+        bar.set_message(TAIL_TITLE);
+        let tail = TailNeeded::new(&study)
+            .map_err(|m| Failure::Io(IoError::new("cannot size the tail", out, m)))?;
+        let tail_plate = tail.plate();
+        write_plate(write, out, &tail_plate)?;
+        sections.push((TAIL_TITLE, vec![tail_plate]));
+        bar.inc(1);
         bar.set_message("summary: intervals and the largest μ₁ (bisection)");
         let findings = Findings::new(study);
         findings.max_mu1(0);
@@ -164,7 +175,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         })?;
         let plate = sure.plate();
         write_plate(write, out, &plate)?;
-        let summary = summary_with(summary::summary_json(&findings, &judged), &sure)?;
+        let summary = summary_with(summary::summary_json(&findings, &judged), &sure, &tail)?;
         let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
         write("summary.json", json.as_bytes())?;
         write(
@@ -176,6 +187,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         }
         let figures = 1 + sections.iter().map(|(_, p)| p.len()).sum::<usize>();
         let mut text = terminal_summary(&findings, &judged);
+        text.push_str(&format!("  the note's question: {}\n", tail.sentence()));
         for a in &sure.answers {
             text.push_str(&format!("  how sure: {}\n", a.sentence()));
         }
@@ -198,16 +210,21 @@ struct SummaryWithHowSure<'a> {
     #[serde(flatten)]
     summary: summary::SummaryJson<'a>,
     how_sure: crate::report::certainty::CertaintyJson,
+    /// §10 (ours): the smallest tailplane and foreplane meeting the
+    /// standard ([`crate::report::tail`]).
+    tail_needed: crate::report::tail::TailJson,
 }
 
 /// [`SummaryWithHowSure`], every number checked finite.
 fn summary_with<'a>(
     summary: summary::SummaryJson<'a>,
     sure: &Certainty,
+    tail: &TailNeeded,
 ) -> Result<SummaryWithHowSure<'a>, Failure> {
     let s = SummaryWithHowSure {
         summary,
         how_sure: sure.json(),
+        tail_needed: tail.json(),
     };
     crate::output::finite("summary.json", &s)?;
     Ok(s)

@@ -28,6 +28,7 @@ pub mod responses;
 pub mod standard;
 pub mod study;
 pub mod summary;
+pub mod tail;
 pub mod taper;
 
 use crate::plot::Figure;

@@ -173,6 +173,30 @@ pub fn size_surface(
     machs: &[f64],
     limit: Option<f64>,
 ) -> Result<Sizing, SizingError> {
+    let f = family(case, kind, machs)?;
+    let limit = limit.unwrap_or(f.config.wing.area());
+    if !(limit.is_finite() && limit > 0.0) {
+        return Err(SizingError::Limit(limit));
+    }
+    let surface = f.surface;
+    let area = search(&f, limit);
+    let at = area.unwrap_or(limit);
+    Ok(Sizing {
+        surface: kind,
+        area,
+        given_area: surface.shape.area(),
+        limit,
+        volume: area.map(|a| f.volume(a)),
+        outcomes: f.outcomes(at),
+    })
+}
+
+/// The family of the case's `kind` surface over `machs`.
+fn family<'a>(
+    case: &'a Case,
+    kind: SurfaceKind,
+    machs: &'a [f64],
+) -> Result<Family<'a>, SizingError> {
     let config = case.aero.configuration_for(&case.planform);
     let surface = config.as_ref().and_then(|c| match kind {
         SurfaceKind::Tailplane => c.tailplane,
@@ -184,26 +208,24 @@ pub fn size_surface(
     if machs.is_empty() {
         return Err(SizingError::NoMach);
     }
-    let limit = limit.unwrap_or(config.wing.area());
-    if !(limit.is_finite() && limit > 0.0) {
-        return Err(SizingError::Limit(limit));
-    }
-    let f = Family {
+    Ok(Family {
         case,
         config,
         surface,
         machs,
-    };
-    let area = search(&f, limit);
-    let at = area.unwrap_or(limit);
-    Ok(Sizing {
-        surface: kind,
-        area,
-        given_area: surface.shape.area(),
-        limit,
-        volume: area.map(|a| f.volume(a)),
-        outcomes: f.outcomes(at),
     })
+}
+
+/// The outcome at each Mach number of `machs` with the case's `kind`
+/// surface scaled to `area` (0: none) — the evaluation [`size_surface`]
+/// judges each area by, for drawing a family's members.
+pub fn outcomes_at(
+    case: &Case,
+    kind: SurfaceKind,
+    machs: &[f64],
+    area: f64,
+) -> Result<Vec<MachOutcome>, SizingError> {
+    Ok(family(case, kind, machs)?.outcomes(area))
 }
 
 /// The scan, then bisection ([`size_surface`]).
