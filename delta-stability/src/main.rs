@@ -322,7 +322,10 @@ enum Command {
     /// short period halves within one cycle, every root judged (no mode
     /// grows) — at every Mach number of --mach, each evaluated as `analyze
     /// CONFIG --mach M` would (the config's damping model, tables and flight
-    /// condition; --damping, --aero, --omega-bar, --datcom replace them).
+    /// condition; --damping, --aero, --omega-bar, --datcom replace them),
+    /// but for the doublet lattice's harmonic solutions, interpolated between
+    /// fixed frequencies as `sweep` does (within 0.3 % of direct solves,
+    /// below the lattice's own error: docs/damping-theories.md).
     ///
     /// Printed: the area, its ratio to yours, the tail volume
     /// V̄_T = S_T·l_T/(S·c̄) (l_T from the c.g. to the surface's M.A.C.
@@ -338,8 +341,9 @@ enum Command {
     /// meeting area on its grid, and a window narrower than one scan step
     /// (×1.33) can be missed. When no area up to the limit meets, it says so
     /// and prints the verdicts at the limit. A Mach number with no result
-    /// (outside a theory; below M = 1.2 until the multi-surface lattice is
-    /// merged) counts as not meeting, and its reason is printed.
+    /// (outside a theory) counts as not meeting, and its reason is printed.
+    /// An area's trial stops at its first failing Mach number: a search
+    /// costs about one design point per failing area.
     ///
     ///   delta-stability size-tail examples/delta-45-tailed.toml --mach 1.2:2.0:0.1
     ///

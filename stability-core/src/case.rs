@@ -480,7 +480,7 @@ impl<'a> Point<'a> {
         let case = self.case;
         let w = omega_bar.unwrap_or(0.0);
         let at_omega = match case.aero.configuration_for(&case.planform) {
-            Some(c) if w > 0.0 => c.increment_at(case.mach, w)?,
+            Some(c) if w > 0.0 => c.increment_at_with(case.mach, w, self.harmonic)?,
             _ => configured.increment.clone(),
         };
         let d = at_omega

@@ -336,3 +336,40 @@ fn a_configuration_is_solved_once() {
     assert!(cache::solves() >= before + 2);
     assert!(cache::key(&cfg) != cache::key(&moved));
 }
+
+/// A sizing's (or a sweep's) configuration solutions are interpolated
+/// between frequency nodes (`cache::solution_with`, `Harmonic::Interpolated`)
+/// as the wing's `FrequencyTable` is: the cubic through the four nodes
+/// around ω̄, each node a direct solve. Against direct solves at ω̄ between
+/// nodes, every part and the total: as close as the wing's table is to its
+/// direct solves (docs/damping-theories.md: at most 0.3 %), and at a node
+/// the node's own solution.
+#[test]
+fn interpolated_configuration_solutions_are_the_direct_ones() {
+    use stability_core::configuration::lattice::cache;
+    use stability_core::lifting_surface::Harmonic;
+    let cfg = Configuration {
+        tailplane: Some(tail(1.3, 0.1)),
+        ..Configuration::wing_alone(delta(60.0))
+    };
+    let mach = 0.7;
+    let mut worst_seen = 0.0f64;
+    for w in [0.005, 0.17, 0.33, 0.72] {
+        let direct = cache::solution(&cfg, mach, w).unwrap();
+        let table = cache::solution_with(&cfg, mach, w, Harmonic::Interpolated).unwrap();
+        assert_eq!(table.total.omega_bar, w);
+        assert_eq!(table.parts.len(), direct.parts.len());
+        let mut e = worst(&table.total, &direct.total);
+        for (p, q) in table.parts.iter().zip(&direct.parts) {
+            assert_eq!(p.part, q.part);
+            e = e.max(worst(&p.solution, &q.solution));
+        }
+        eprintln!("ω̄ = {w}: interpolated against direct, worst {e:.2e}");
+        worst_seen = worst_seen.max(e);
+    }
+    assert!(worst_seen < 3e-3, "{worst_seen}");
+    assert!(worst_seen > 0.0, "interpolated, not solved at ω̄");
+    let at_node = cache::solution_with(&cfg, mach, 0.3, Harmonic::Interpolated).unwrap();
+    let node = cache::solution(&cfg, mach, 0.3).unwrap();
+    assert!(worst(&at_node.total, &node.total) < 1e-12);
+}

@@ -14,8 +14,9 @@ use crate::output::{AtomicDir, Refused};
 use crate::report::certainty::Certainty;
 use crate::report::conclusions::{self, Judged};
 use crate::report::manifest::{self, MANIFEST, Manifest};
+use crate::report::study::Assumed;
 use crate::report::summary::{self, Findings};
-use crate::report::tail::TailNeeded;
+use crate::report::tail::{self, TailNeeded};
 use crate::report::{Plate, SECTIONS, Study, html};
 
 /// The progress bar's and the page's title of §10 (ours).
@@ -137,62 +138,15 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     let bar = progress_bar(SECTIONS.len() + 5);
     let mut done = None;
     write_report(out, |write| {
-        bar.set_message("the 45° and 60° deltas across Mach number");
-        let study = Study::new();
-        bar.inc(1);
-        let mut sections = Vec::new();
-        for section in &SECTIONS {
-            bar.set_message(section.title);
-            let plates = (section.plates)(&study);
-            for p in &plates {
-                write_plate(write, out, p)?;
-            }
-            sections.push((section.title, plates));
-            bar.inc(1);
-        }
-        bar.set_message(TAIL_TITLE);
-        let tail = TailNeeded::new(&study)
-            .map_err(|m| Failure::Io(IoError::new("cannot size the tail", out, m)))?;
-        let tail_plate = tail.plate();
-        write_plate(write, out, &tail_plate)?;
-        sections.push((TAIL_TITLE, vec![tail_plate]));
-        bar.inc(1);
-        bar.set_message("summary: intervals and the largest μ₁ (bisection)");
-        let findings = Findings::new(study);
-        findings.max_mu1(0);
-        findings.max_mu1(1);
-        bar.inc(1);
-        bar.set_message("conclusions, swept over i_B and C_L·M²");
-        let judged = conclusions::judge_all(&findings);
-        bar.inc(1);
-        bar.set_message("how sure: the headline conclusions as probabilities");
-        let sure = Certainty::new().map_err(|m| {
-            Failure::Io(IoError::new(
-                "cannot weigh the headline conclusions",
-                out,
-                m,
-            ))
-        })?;
-        let plate = sure.plate();
-        write_plate(write, out, &plate)?;
-        let summary = summary_with(summary::summary_json(&findings, &judged), &sure, &tail)?;
-        let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
-        write("summary.json", json.as_bytes())?;
-        write(
-            "index.html",
-            html::index_html(&sections, &judged, Some((&sure, &plate))).as_bytes(),
-        )?;
-        for (name, text) in html::DOCS {
-            write(name, text.as_bytes())?;
-        }
-        let figures = 1 + sections.iter().map(|(_, p)| p.len()).sum::<usize>();
-        let mut text = terminal_summary(&findings, &judged);
-        text.push_str(&format!("  the note's question: {}\n", tail.sentence()));
-        for a in &sure.answers {
-            text.push_str(&format!("  how sure: {}\n", a.sentence()));
-        }
-        done = Some((figures, text));
-        Ok(())
+        std::thread::scope(|scope| {
+            // §10 (ours) sizes surfaces over Mach with the study's
+            // assumptions (Study::new's, Assumed::ours): begun beside the
+            // study, whose sweeps leave a core idle between their parallel
+            // parts
+            let sizing = scope.spawn(|| TailNeeded::over(Assumed::ours(), tail::machs()));
+            done = Some(contents(write, out, &bar, sizing)?);
+            Ok(())
+        })
     })?;
     bar.finish_and_clear();
     let (figures, summary) = done.unwrap_or_default();
@@ -201,6 +155,73 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         out.display(),
     );
     crate::output::print(&text)
+}
+
+/// The note's report written through `write`: its figures' count and the
+/// terminal's summary. `sizing` is §10 (ours), computed beside the study.
+fn contents(
+    write: &Write<'_>,
+    out: &Path,
+    bar: &ProgressBar,
+    sizing: std::thread::ScopedJoinHandle<'_, Result<TailNeeded, String>>,
+) -> Result<(usize, String), Failure> {
+    bar.set_message("the 45° and 60° deltas across Mach number");
+    let study = Study::new();
+    bar.inc(1);
+    let mut sections = Vec::new();
+    for section in &SECTIONS {
+        bar.set_message(section.title);
+        let plates = (section.plates)(&study);
+        for p in &plates {
+            write_plate(write, out, p)?;
+        }
+        sections.push((section.title, plates));
+        bar.inc(1);
+    }
+    bar.set_message(TAIL_TITLE);
+    let tail = sizing
+        .join()
+        .unwrap_or_else(|_| Err("the sizing's thread panicked".into()))
+        .map_err(|m| Failure::Io(IoError::new("cannot size the tail", out, m)))?;
+    let tail_plate = tail.plate();
+    write_plate(write, out, &tail_plate)?;
+    sections.push((TAIL_TITLE, vec![tail_plate]));
+    bar.inc(1);
+    bar.set_message("summary: intervals and the largest μ₁ (bisection)");
+    let findings = Findings::new(study);
+    findings.max_mu1(0);
+    findings.max_mu1(1);
+    bar.inc(1);
+    bar.set_message("conclusions, swept over i_B and C_L·M²");
+    let judged = conclusions::judge_all(&findings);
+    bar.inc(1);
+    bar.set_message("how sure: the headline conclusions as probabilities");
+    let sure = Certainty::new().map_err(|m| {
+        Failure::Io(IoError::new(
+            "cannot weigh the headline conclusions",
+            out,
+            m,
+        ))
+    })?;
+    let plate = sure.plate();
+    write_plate(write, out, &plate)?;
+    let summary = summary_with(summary::summary_json(&findings, &judged), &sure, &tail)?;
+    let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
+    write("summary.json", json.as_bytes())?;
+    write(
+        "index.html",
+        html::index_html(&sections, &judged, Some((&sure, &plate))).as_bytes(),
+    )?;
+    for (name, text) in html::DOCS {
+        write(name, text.as_bytes())?;
+    }
+    let figures = 1 + sections.iter().map(|(_, p)| p.len()).sum::<usize>();
+    let mut text = terminal_summary(&findings, &judged);
+    text.push_str(&format!("  the note's question: {}\n", tail.sentence()));
+    for a in &sure.answers {
+        text.push_str(&format!("  how sure: {}\n", a.sentence()));
+    }
+    Ok((figures, text))
 }
 
 /// summary.json: the findings and conclusions, then the section "how

@@ -22,7 +22,7 @@ use crate::aero::{hermite, monotone_slopes};
 use crate::faired::{
     LATTICE_SLOPE_STEP, LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM, SUPERSONIC_SLOPE_STEP,
 };
-use crate::lifting_surface::Solution;
+use crate::lifting_surface::{Harmonic, Solution};
 use serde::Serialize;
 
 /// The step of the increment's Mach derivatives outside the band.
@@ -107,6 +107,7 @@ impl Configuration {
         mach: f64,
         omega_bar: f64,
         supersonic: bool,
+        harmonic: Harmonic,
     ) -> Result<(Solution, Vec<Contribution>), ConfigurationError> {
         let alone = Configuration::wing_alone(self.wing);
         let (with, without) = if supersonic {
@@ -116,8 +117,8 @@ impl Configuration {
             )
         } else {
             (
-                self.solve_subsonic(mach, omega_bar)?,
-                alone.solve_subsonic(mach, omega_bar)?,
+                self.solve_subsonic_with(mach, omega_bar, harmonic)?,
+                alone.solve_subsonic_with(mach, omega_bar, harmonic)?,
             )
         };
         let parts = parts_less_wing(&with, &without.total);
@@ -127,14 +128,26 @@ impl Configuration {
     /// The increment at (M, ω̄) by the table's methods, with its parts and
     /// the Mach derivatives of its in-phase numbers.
     pub fn increment(&self, mach: f64, omega_bar: f64) -> Result<Increment, ConfigurationError> {
-        self.increment_with(mach, omega_bar, true)
+        self.increment_with(mach, omega_bar, true, Harmonic::Direct)
     }
 
     /// As [`Configuration::increment`] without the Mach derivatives outside
     /// the faired band (a third of the solves): the damping's, at each ω̄ of
     /// a frequency iteration.
     pub fn increment_at(&self, mach: f64, omega_bar: f64) -> Result<Increment, ConfigurationError> {
-        self.increment_with(mach, omega_bar, false)
+        self.increment_with(mach, omega_bar, false, Harmonic::Direct)
+    }
+
+    /// As [`Configuration::increment_at`], the lattice's harmonic solutions
+    /// had as `harmonic` says ([`Harmonic::Interpolated`]: a sweep's or a
+    /// sizing's frequency iterations, which share the nodes).
+    pub fn increment_at_with(
+        &self,
+        mach: f64,
+        omega_bar: f64,
+        harmonic: Harmonic,
+    ) -> Result<Increment, ConfigurationError> {
+        self.increment_with(mach, omega_bar, false, harmonic)
     }
 
     fn increment_with(
@@ -142,6 +155,7 @@ impl Configuration {
         mach: f64,
         omega_bar: f64,
         mach_derivatives: bool,
+        harmonic: Harmonic,
     ) -> Result<Increment, ConfigurationError> {
         if !mach.is_finite() || mach < 0.0 {
             return Err(ConfigurationError::Geometry(format!(
@@ -149,10 +163,10 @@ impl Configuration {
             )));
         }
         if mach > LIFTING_SURFACE_LIMIT && mach < SUPERSONIC_FROM {
-            return self.faired(mach, omega_bar);
+            return self.faired(mach, omega_bar, harmonic);
         }
         let sup = mach >= SUPERSONIC_FROM;
-        let (solution, parts) = self.by_method(mach, omega_bar, sup)?;
+        let (solution, parts) = self.by_method(mach, omega_bar, sup, harmonic)?;
         if !mach_derivatives {
             return Ok(Increment {
                 solution,
@@ -162,8 +176,10 @@ impl Configuration {
             });
         }
         let h = MACH_STEP.min(mach);
-        let lo = self.by_method(mach - h, omega_bar, sup)?.0;
-        let hi = self.by_method(mach + MACH_STEP, omega_bar, sup)?.0;
+        let lo = self.by_method(mach - h, omega_bar, sup, harmonic)?.0;
+        let hi = self
+            .by_method(mach + MACH_STEP, omega_bar, sup, harmonic)?
+            .0;
         let w = h + MACH_STEP;
         Ok(Increment {
             d_lift_alpha: Some((hi.lift_alpha - lo.lift_alpha) / w),
@@ -177,18 +193,24 @@ impl Configuration {
     /// between the lattice at 0.9 and the supersonic theory at 1.2, with
     /// the ends' slopes; the increment is their sum (so the parts sum to
     /// it, and its Mach derivative is theirs).
-    fn faired(&self, mach: f64, omega_bar: f64) -> Result<Increment, ConfigurationError> {
+    fn faired(
+        &self,
+        mach: f64,
+        omega_bar: f64,
+        harmonic: Harmonic,
+    ) -> Result<Increment, ConfigurationError> {
         let (m0, m1, st) = (
             LIFTING_SURFACE_LIMIT,
             SUPERSONIC_FROM,
             SUPERSONIC_SLOPE_STEP,
         );
         let ends = [
-            self.by_method(m0, omega_bar, false)?.1,
-            self.by_method(m0 - LATTICE_SLOPE_STEP, omega_bar, false)?.1,
-            self.by_method(m1, omega_bar, true)?.1,
-            self.by_method(m1 - st, omega_bar, true)?.1,
-            self.by_method(m1 + st, omega_bar, true)?.1,
+            self.by_method(m0, omega_bar, false, harmonic)?.1,
+            self.by_method(m0 - LATTICE_SLOPE_STEP, omega_bar, false, harmonic)?
+                .1,
+            self.by_method(m1, omega_bar, true, harmonic)?.1,
+            self.by_method(m1 - st, omega_bar, true, harmonic)?.1,
+            self.by_method(m1 + st, omega_bar, true, harmonic)?.1,
         ];
         let of = |i: usize, part: Part| {
             ends[i]

@@ -73,9 +73,12 @@ use crate::geometry::Trapezoid;
 use crate::lifting_surface::derivatives::Extrapolate;
 use crate::lifting_surface::kernel::KernelFlow;
 use crate::lifting_surface::solve::{check_mach, complex_solve};
-use crate::lifting_surface::{LatticeSpec, LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution};
+use crate::lifting_surface::{
+    Harmonic, LatticeSpec, LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution,
+};
 use layout::{Block, Member};
 use nalgebra::{DMatrix, Dyn, LU};
+use rayon::prelude::*;
 
 impl Configuration {
     /// The configuration's response at M < 1 and ω̄ (0: quasi-steady), from
@@ -89,7 +92,18 @@ impl Configuration {
         mach: f64,
         omega_bar: f64,
     ) -> Result<ConfigurationSolution, ConfigurationError> {
-        let mut solution = cache::solution(self, mach, omega_bar)?;
+        self.solve_subsonic_with(mach, omega_bar, Harmonic::Direct)
+    }
+
+    /// As [`Configuration::solve_subsonic`], the harmonic solution had as
+    /// `harmonic` says ([`cache::solution_with`]).
+    pub fn solve_subsonic_with(
+        &self,
+        mach: f64,
+        omega_bar: f64,
+        harmonic: Harmonic,
+    ) -> Result<ConfigurationSolution, ConfigurationError> {
+        let mut solution = cache::solution_with(self, mach, omega_bar, harmonic)?;
         if let Some(body) = &self.body {
             let b = body.solution(&self.wing, mach, omega_bar);
             let t = &mut solution.total;
@@ -169,17 +183,24 @@ impl ConfigurationLattice {
                 self.harmonic(&blocks, mach, omega_bar)
             }
         };
-        let chordwise = |k: usize| -> Result<Parts, ConfigurationError> {
-            let finest = solve(k)?;
-            if levels == 1 {
-                return Ok(finest);
-            }
-            Ok(finest.richardson(&solve(k + 1)?, &solve(k + 2)?))
+        // the levels the extrapolation uses, solved side by side
+        let used = match levels {
+            1 => 1,
+            2..6 => 3,
+            _ => 6,
         };
-        let parts = if levels < 6 {
-            chordwise(0)?
+        let solved: Vec<Parts> = (0..used)
+            .into_par_iter()
+            .map(solve)
+            .collect::<Result<_, _>>()?;
+        let chordwise = |k: usize| match used {
+            1 => solved[k].clone(),
+            _ => solved[k].richardson(&solved[k + 1], &solved[k + 2]),
+        };
+        let parts = if used < 6 {
+            chordwise(0)
         } else {
-            chordwise(0)?.combine(&chordwise(3)?, 4.0 / 3.0, -1.0 / 3.0)
+            chordwise(0).combine(&chordwise(3), 4.0 / 3.0, -1.0 / 3.0)
         };
         self.finish(parts)
     }

@@ -20,11 +20,15 @@
 //! missed. Where no area up to the limit meets, the answer says so.
 
 use super::{Configuration, Surface, SurfaceKind};
-use crate::case::{Case, evaluate_point};
+use crate::case::{Case, evaluate_point_with};
 use crate::criteria::Verdict;
+use crate::faired::SUPERSONIC_FROM;
 use crate::geometry::Trapezoid;
+use crate::lifting_surface::Harmonic;
+use rayon::prelude::*;
 use serde::Serialize;
 use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Areas scanned before bisection.
 pub const SCAN: usize = 25;
@@ -93,6 +97,8 @@ struct Family<'a> {
     config: Configuration,
     surface: Surface,
     machs: &'a [f64],
+    /// The index of the Mach number that failed last ([`Family::meets`]).
+    hardest: AtomicUsize,
 }
 
 impl Family<'_> {
@@ -113,39 +119,67 @@ impl Family<'_> {
         c
     }
 
-    /// The outcome at each Mach number with the surface of area `area`.
+    /// The outcome at one Mach number with the configuration `config`,
+    /// evaluated as a sweep's point is (the lattice's harmonic solutions
+    /// interpolated between frequency nodes, [`Harmonic::Interpolated`]).
+    fn outcome(&self, config: &Arc<Configuration>, mach: f64) -> MachOutcome {
+        let mut case = self.case.clone();
+        case.mach = mach;
+        case.aero.configuration = Some(config.clone());
+        match evaluate_point_with(&case, Harmonic::Interpolated) {
+            Ok(r) => MachOutcome {
+                mach,
+                verdict: Some(crate::verdict::overall(&r.analysis)),
+                cycles_to_half: r
+                    .analysis
+                    .modes
+                    .short_period()
+                    .and_then(|m| m.cycles_to_half),
+                error: None,
+            },
+            Err(e) => MachOutcome {
+                mach,
+                verdict: None,
+                cycles_to_half: None,
+                error: Some(e.to_string()),
+            },
+        }
+    }
+
+    /// The outcome at each Mach number with the surface of area `area`
+    /// (the Mach numbers in parallel).
     fn outcomes(&self, area: f64) -> Vec<MachOutcome> {
         let config = Arc::new(self.with_area(area));
         self.machs
-            .iter()
-            .map(|&mach| {
-                let mut case = self.case.clone();
-                case.mach = mach;
-                case.aero.configuration = Some(config.clone());
-                match evaluate_point(&case) {
-                    Ok(r) => MachOutcome {
-                        mach,
-                        verdict: Some(crate::verdict::overall(&r.analysis)),
-                        cycles_to_half: r
-                            .analysis
-                            .modes
-                            .short_period()
-                            .and_then(|m| m.cycles_to_half),
-                        error: None,
-                    },
-                    Err(e) => MachOutcome {
-                        mach,
-                        verdict: None,
-                        cycles_to_half: None,
-                        error: Some(e.to_string()),
-                    },
-                }
-            })
+            .par_iter()
+            .map(|&mach| self.outcome(&config, mach))
             .collect()
     }
 
+    /// Whether the standard is met at every Mach number with the surface of
+    /// area `area`. The first failure ends the trial, so the order is
+    /// chosen to find one cheaply: the Mach number that failed last (an
+    /// area that fails mostly fails where the previous one did), then those
+    /// from [`SUPERSONIC_FROM`] (the surfaces by the supersonic theory: no
+    /// lattice), then the rest.
     fn meets(&self, area: f64) -> bool {
-        meets_all(&self.outcomes(area))
+        let config = Arc::new(self.with_area(area));
+        let hardest = self.hardest.load(Ordering::Relaxed);
+        let n = self.machs.len();
+        let cheap = |i: &usize| self.machs[*i] >= SUPERSONIC_FROM;
+        let rest = |c: bool| (0..n).filter(move |i| cheap(i) == c && *i != hardest);
+        let order = (hardest < n)
+            .then_some(hardest)
+            .into_iter()
+            .chain(rest(true))
+            .chain(rest(false));
+        for i in order {
+            if self.outcome(&config, self.machs[i]).verdict != Some(Verdict::Meets) {
+                self.hardest.store(i, Ordering::Relaxed);
+                return false;
+            }
+        }
+        true
     }
 
     /// V̄ at `area`.
@@ -213,6 +247,7 @@ fn family<'a>(
         config,
         surface,
         machs,
+        hardest: AtomicUsize::new(usize::MAX),
     })
 }
 

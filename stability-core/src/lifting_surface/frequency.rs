@@ -106,15 +106,26 @@ impl FrequencyTable {
                 ..self.node(0)?
             });
         }
-        // NODES[i] < ω̄ ≤ NODES[i + 1]; the stencil i − 1 … i + 2, shifted
-        let i = NODES.partition_point(|&w| w < omega_bar) - 1;
-        let j = i.saturating_sub(1).min(NODES.len() - 4);
-        let w = [0, 1, 2, 3].map(|m| lagrange(j, m, omega_bar));
+        let (j, w) = stencil(omega_bar).ok_or(LiftingSurfaceError::Frequency(omega_bar))?;
         let out = self.node(j)?.combine(&self.node(j + 1)?, w[0], w[1]);
         let out = out.combine(&self.node(j + 2)?, 1.0, w[2]);
         let out = out.combine(&self.node(j + 3)?, 1.0, w[3]);
         Ok(Solution { omega_bar, ..out })
     }
+}
+
+/// The interpolation's stencil at `omega_bar`: the first of its four nodes,
+/// j, and the weights of nodes j … j + 3 — for NODES[0] < ω̄ ≤ NODES[last]
+/// (`None` outside). Any solution tabled at [`NODES`] (a configuration's,
+/// `crate::configuration::lattice::cache`) is interpolated with it.
+pub fn stencil(omega_bar: f64) -> Option<(usize, [f64; 4])> {
+    if !(omega_bar > NODES[0] && omega_bar <= NODES[NODES.len() - 1]) {
+        return None;
+    }
+    // NODES[i] < ω̄ ≤ NODES[i + 1]; the stencil i − 1 … i + 2, shifted
+    let i = NODES.partition_point(|&w| w < omega_bar) - 1;
+    let j = i.saturating_sub(1).min(NODES.len() - 4);
+    Some((j, [0, 1, 2, 3].map(|m| lagrange(j, m, omega_bar))))
 }
 
 /// The weight of node j + m in the cubic through nodes j … j + 3 at x.

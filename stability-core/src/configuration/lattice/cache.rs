@@ -14,7 +14,8 @@
 use super::super::{Configuration, ConfigurationError, ConfigurationSolution, SurfaceKind};
 use super::ConfigurationLattice;
 use crate::geometry::Trapezoid;
-use crate::lifting_surface::{LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY};
+use crate::lifting_surface::derivatives::Extrapolate;
+use crate::lifting_surface::{Harmonic, LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, frequency};
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, OnceLock, PoisonError, RwLock};
@@ -86,6 +87,51 @@ pub fn solution(
         ConfigurationLattice::new(cfg)?.solve(mach, omega_bar)
     })
     .clone()
+}
+
+/// As [`solution`], with the harmonic solution had as `harmonic` says:
+/// [`Harmonic::Interpolated`] interpolates, as the wing's
+/// [`crate::lifting_surface::frequency::FrequencyTable`] does, between
+/// solutions at its nodes (each cached here, so the design points of a
+/// sweep or a sizing that share a configuration and a Mach number share
+/// them): a frequency iteration solves a few nodes, not every iterate.
+/// Outside the nodes, and [`Harmonic::Direct`], as [`solution`].
+pub fn solution_with(
+    cfg: &Configuration,
+    mach: f64,
+    omega_bar: f64,
+    harmonic: Harmonic,
+) -> Result<ConfigurationSolution, ConfigurationError> {
+    let stencil = match harmonic {
+        Harmonic::Interpolated => frequency::stencil(omega_bar),
+        Harmonic::Direct => None,
+    };
+    let Some((j, w)) = stencil else {
+        return solution(cfg, mach, omega_bar);
+    };
+    let node = |m: usize| solution(cfg, mach, frequency::NODES[j + m]);
+    let mut out = node(0)?;
+    scale(&mut out, w[0], None);
+    for (m, &wm) in w.iter().enumerate().skip(1) {
+        scale(&mut out, wm, Some(&node(m)?));
+    }
+    out.total.omega_bar = omega_bar;
+    out.parts
+        .iter_mut()
+        .for_each(|p| p.solution.omega_bar = omega_bar);
+    Ok(out)
+}
+
+/// `acc` ← `acc` + `w`·`add` (every number of the total and each part), or
+/// `acc` ← `w`·`acc` without `add`. The parts of one configuration come in
+/// one order at every ω̄.
+fn scale(acc: &mut ConfigurationSolution, w: f64, add: Option<&ConfigurationSolution>) {
+    let (a, b) = if add.is_some() { (1.0, w) } else { (w, 0.0) };
+    let add = add.unwrap_or(acc).clone();
+    acc.total = acc.total.combine(&add.total, a, b);
+    for (p, q) in acc.parts.iter_mut().zip(&add.parts) {
+        p.solution = p.solution.combine(&q.solution, a, b);
+    }
 }
 
 /// How many solves the cache has made.
