@@ -17,6 +17,23 @@ strips are the wing's within its span (a section at its tip), so that the
 wing's trailing legs lie on its strip edges (AVL's advice for a tail in a
 wing's wake; the lattice does the same).
 
+Vortex cores: AVL gives every horseshoe acting on another *component*
+(each surface is its own unless told) a finite core of radius
+VRCOREW x its strip width (VRCOREW = 2 by default; within a component
+1e-4 x the width: AVL 3.36, aic.f, VVOR). A coplanar tail in the wing's
+wake sits half a strip from the wing's trailing legs, well inside those
+cores, so the wing's downwash there is smeared and AVL converges slowly
+(like 1/sqrt(N) in the strips) to the singular lattice's answer. Here the
+surfaces are one COMPONENT (the singular kernel, as the configuration
+lattice's); the default-core series of the coplanar layout is kept as
+`coplanar_default_core` (the evidence). `coplanar_study` is the coplanar
+layout's convergence with one component: 4, 8 and 16 chordwise on each
+surface times 12, 24 and 48 shared strips (AVL's limits: 500 strips,
+5000 vortices, on the whole configuration), Richardson-extrapolated first
+in the strips (1/N_span, at the order observed on the three densities)
+and then chordwise (1/N_chord, likewise); plus equal strips (SPACE 0) at
+4 chordwise as a check of the spacing.
+
 Run: pip install optvl; python3 scripts/avl_configuration_fixtures.py
 """
 import json
@@ -46,21 +63,31 @@ def wing():
             "tip": (s * t * (1 - TIP), s * (1 - TIP), TIP)}
 
 
-def surface_text(name, x, z, root, tip, s, sweep_deg, nchord, nspan):
+KEYS = ("CLa", "Cma", "CLq", "Cmq", "Xnp")
+
+
+def surface_text(name, x, z, root, tip, s, sweep_deg, nchord, nspan, space=1.0):
     xt = x + s * math.tan(math.radians(sweep_deg))
     return f"""SURFACE
 {name}
 {nchord} 1.0
+COMPONENT
+1
 YDUPLICATE
 0.0
 SECTION
-{x:.12f} 0.0 {z:.12f} {root:.12f} 0.0 {nspan} 1.0
+{x:.12f} 0.0 {z:.12f} {root:.12f} 0.0 {nspan} {space}
 SECTION
 {xt:.12f} {s:.12f} {z:.12f} {tip:.12f} 0.0
 """
 
 
-def avl_file(w, mach, layout, shared=SHARED_NSPAN, outer=OUTER_NSPAN):
+def avl_file(w, mach, layout, shared=SHARED_NSPAN, outer=OUTER_NSPAN, nchord=None,
+             space=1.0, one_component=True):
+    """The AVL input: both surfaces one COMPONENT unless `one_component` is
+    false (then AVL's default finite cores act between them)."""
+    wn = WING_NCHORD if nchord is None else nchord
+    sn = SURF_NCHORD if nchord is None else nchord
     _, kind, x, z = layout
     xt, yt, ct = w["tip"]
     # a section at the other surface's tip, and the same cosine strips on
@@ -70,31 +97,34 @@ def avl_file(w, mach, layout, shared=SHARED_NSPAN, outer=OUTER_NSPAN):
     ys = SURFACE["semi_span"]
     wing_text = f"""SURFACE
 Wing
-{WING_NCHORD} 1.0
+{wn} 1.0
+COMPONENT
+1
 YDUPLICATE
 0.0
 SECTION
-0.0 0.0 0.0 1.0 0.0 {shared} 1.0
+0.0 0.0 0.0 1.0 0.0 {shared} {space}
 SECTION
-{ys * t:.12f} {ys:.12f} 0.0 {1.0 - ys * t:.12f} 0.0 {outer} 1.0
+{ys * t:.12f} {ys:.12f} 0.0 {1.0 - ys * t:.12f} 0.0 {outer} {space}
 SECTION
 {xt:.12f} {yt:.12f} 0.0 {ct:.12f} 0.0
 """
     other = surface_text(kind.capitalize(), x, z, SURFACE["root_chord"], SURFACE["tip_chord"],
-                         SURFACE["semi_span"], SURFACE["sweep_deg"], SURF_NCHORD, shared)
-    return f"""{layout[0]}
+                         SURFACE["semi_span"], SURFACE["sweep_deg"], sn, shared, space)
+    text = f"""{layout[0]}
 {mach}
 0 0 0.0
 {w['area']:.12f} {w['mac']:.12f} {2 * w['semi_span']:.12f}
 {w['x_mac']:.12f} 0.0 0.0
 {wing_text}{other}"""
+    return text if one_component else text.replace("COMPONENT\n1\n", "")
 
 
-def run(w, mach, layout, shared=SHARED_NSPAN, outer=OUTER_NSPAN):
+def run(w, mach, layout, shared=SHARED_NSPAN, outer=OUTER_NSPAN, **kw):
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "config.avl")
         with open(path, "w") as f:
-            f.write(avl_file(w, mach, layout, shared, outer))
+            f.write(avl_file(w, mach, layout, shared, outer, **kw))
         s = OVLSolver(geo_file=path)
         s.set_parameter("Mach", mach)
         s.set_variable("alpha", 0.0)
@@ -103,6 +133,54 @@ def run(w, mach, layout, shared=SHARED_NSPAN, outer=OUTER_NSPAN):
     return {"mach": mach, "CLa": float(st["dCL/dalpha"]), "Cma": float(st["dCm/dalpha"]),
             "CLq": float(st["dCL/dq'"]), "Cmq": float(st["dCm/dq'"]),
             "Xnp": float(st["neutral point"])}
+
+
+STUDY_NCHORD = (4, 8, 16)
+STUDY_NSPAN = (12, 24, 48)
+
+
+def richardson(f):
+    """Richardson's extrapolation of f at densities N, 2N, 4N (error ~ N^-p)
+    at the order p observed on the three: (order, extrapolated value). The
+    order is None (and the value the densest's) if the differences do not
+    shrink with one sign."""
+    d1, d2 = f[1] - f[0], f[2] - f[1]
+    if d1 == 0.0 or d2 / d1 <= 0.0 or abs(d2) >= abs(d1):
+        return None, f[2]
+    p = math.log2(d1 / d2)
+    return p, f[2] + d2 / (2.0**p - 1.0)
+
+
+def coplanar_study(w, mach):
+    """The coplanar layout's AVL convergence at `mach` with one component:
+    every (chordwise, strips) of the study, the strips' extrapolation at
+    each chordwise count and then the chordwise one."""
+    layout = LAYOUTS[0]
+    grid = [{"nchord": nc, "shared_nspan": n,
+             **run(w, mach, layout, n, 3 * n // 4, nchord=nc)}
+            for nc in STUDY_NCHORD for n in STUDY_NSPAN]
+    equal = [{"nchord": STUDY_NCHORD[0], "shared_nspan": n,
+              **run(w, mach, layout, n, 3 * n // 4, nchord=STUDY_NCHORD[0], space=0.0)}
+             for n in STUDY_NSPAN]
+    spanwise = []
+    for nc in STUDY_NCHORD:
+        rows = [g for g in grid if g["nchord"] == nc]
+        ext = {k: richardson([r[k] for r in rows]) for k in KEYS}
+        spanwise.append({"nchord": nc, "order": {k: ext[k][0] for k in KEYS},
+                         **{k: ext[k][1] for k in KEYS}})
+    ext = {k: richardson([s[k] for s in spanwise]) for k in KEYS}
+    extrapolated = {"order": {k: ext[k][0] for k in KEYS}, **{k: ext[k][1] for k in KEYS}}
+    equal_ext = {k: richardson([r[k] for r in equal]) for k in KEYS}
+    print(f"coplanar study M = {mach}: spanwise orders",
+          [{k: s["order"][k] and round(s["order"][k], 2) for k in KEYS} for s in spanwise])
+    print("  chordwise orders", {k: v and round(v, 2) for k, v in extrapolated["order"].items()})
+    print("  extrapolated", {k: round(extrapolated[k], 5) for k in KEYS})
+    print("  equal strips at", STUDY_NCHORD[0], {k: (equal_ext[k][0] and round(equal_ext[k][0], 2),
+                                                   round(equal_ext[k][1], 5)) for k in KEYS})
+    return {"mach": mach, "grid": grid, "equal_strips": equal,
+            "equal_strips_extrapolated": {"order": {k: equal_ext[k][0] for k in KEYS},
+                                          **{k: equal_ext[k][1] for k in KEYS}},
+            "spanwise_extrapolated": spanwise, "extrapolated": extrapolated}
 
 
 def main():
@@ -114,12 +192,15 @@ def main():
                         "runs": runs})
         print(layout[0], [(r["mach"], round(r["CLa"], 4), round(r["Xnp"], 4),
                            round(r["CLq"], 4), round(r["Cmq"], 4)) for r in runs])
-    # the coplanar tail converges slowly in AVL: its C_La at 8 ... 48 strips
-    convergence = [{"shared_nspan": n, "outer_nspan": 3 * n // 4,
-                    **run(w, 0.0, LAYOUTS[0], n, 3 * n // 4)} for n in (8, 16, 32, 48)]
-    print("coplanar convergence", [(c["shared_nspan"], round(c["CLa"], 4)) for c in convergence])
+    # AVL's default cores between the surfaces: the slow series (16 chordwise)
+    default_core = [{"shared_nspan": n, "outer_nspan": 3 * n // 4,
+                     **run(w, 0.0, LAYOUTS[0], n, 3 * n // 4, one_component=False)}
+                    for n in (8, 16, 32, 48)]
+    print("coplanar, default cores", [(c["shared_nspan"], round(c["CLa"], 4))
+                                      for c in default_core])
+    study = [coplanar_study(w, m) for m in (0.0, 0.5)]
     out = {
-        "source": "scripts/avl_configuration_fixtures.py (optvl, AVL vortex lattice, wing "
+        "source": "scripts/avl_configuration_fixtures.py (optvl, AVL vortex lattice, one component, wing "
         f"{WING_NCHORD} x ({SHARED_NSPAN} + {OUTER_NSPAN}), other surface {SURF_NCHORD} x "
         f"{SHARED_NSPAN}, cosine, per half surface, spanwise strips aligned)",
         "rate_unit": "q c/2V, c = Cref = the wing's M.A.C.; moments about its leading edge",
@@ -127,7 +208,8 @@ def main():
                  "mac": w["mac"], "x_mac": w["x_mac"]},
         "surface": SURFACE,
         "layouts": layouts,
-        "coplanar_convergence": convergence,
+        "coplanar_default_core": default_core,
+        "coplanar_study": study,
     }
     path = os.path.join(os.path.dirname(__file__), "..", "stability-core", "tests",
                         "fixtures", "avl_configuration.json")

@@ -11,17 +11,32 @@
 //! point within 0.01c̄ (issue 21 item 7). Found: C_Lα within 0.05 %, z_q
 //! 0.1 %, m_q 0.35 %, the neutral point within 0.0023c̄.
 //!
-//! The coplanar tailplane lies in the wing's discrete wake, where neither
-//! lattice has converged at AVL's density: AVL's C_Lα falls from 2.828 to
-//! 2.798, 2.765 and 2.745 at 8, 16, 32 and 48 strips (the fixture's
-//! `coplanar_convergence`), towards ours (2.652 at the default lattice,
-//! 2.646 at twice its density). Asserted there: AVL's sequence falls
-//! towards ours, and ours lies within 4 % of AVL's densest in C_Lα, z_q and
-//! m_q and within 0.05c̄ in the neutral point.
+//! # The coplanar tailplane
+//! It lies in the wing's wake, half a strip from the wing's trailing legs.
+//! AVL by default gives every horseshoe acting on another *component* a
+//! finite core of twice its strip width (AVL 3.36, `aic.f`, `VVOR`:
+//! r_core = VRCOREW·Δy, VRCOREW = 2), which smears the wing's downwash at
+//! the tail: with that default AVL's C_Lα falls only slowly, 2.828, 2.798,
+//! 2.765, 2.745 at 8, 16, 32, 48 strips (the fixture's
+//! `coplanar_default_core`; 3.5 % above ours at 48). The script therefore
+//! makes the two surfaces one COMPONENT (AVL's singular kernel, as this
+//! lattice's), and measures AVL's convergence on 4, 8, 16 chordwise ×
+//! 12, 24, 48 strips (`coplanar_study`), Richardson-extrapolated in the
+//! strips and then chordwise at the orders observed on the three densities
+//! (strips: 1.0–2.2; chordwise 0.6–0.9). Our lattice's own raw lattices,
+//! 4, 8, 16 chordwise × 8, 16, 32 strips, extrapolated the same way
+//! (strips: order 0.9–1.3, not the default's assumed 2; chordwise
+//! 1.4–1.9), meet AVL's extrapolation within 0.06 % in C_Lα, 0.02 % in
+//! z_q, 0.31 % in m_q and 0.0022c̄ in the neutral point (asserted: 1 % and
+//! 0.005c̄). The default lattice (its strip extrapolation assumes order 2)
+//! stays within 0.32 % (C_Lα), 1.1 % (z_q), 2.3 % (m_q) and 0.0072c̄ (the
+//! neutral point) of AVL's extrapolated values: asserted 3 % and 0.01c̄.
 
 use serde_json::Value;
+use stability_core::configuration::lattice::ConfigurationLattice;
 use stability_core::configuration::{Configuration, Surface, SurfaceKind};
 use stability_core::geometry::Trapezoid;
+use stability_core::lifting_surface::{LatticeSpec, Spacing};
 
 fn g(v: &Value, k: &str) -> f64 {
     v[k].as_f64().unwrap()
@@ -65,30 +80,91 @@ fn configuration(layout: &Value, wing: Trapezoid, shape: Trapezoid) -> Configura
     }
 }
 
-/// (C_Lα, h_n, z_q, m_q), ours and AVL's, of one run.
-fn pairs(cfg: &Configuration, run: &Value) -> [(f64, f64); 4] {
+/// AVL's (C_Lα, h_n, z_q, m_q) of one run (or extrapolation).
+fn avl_numbers(cfg: &Configuration, run: &Value) -> [f64; 4] {
     let r = |k: &str| g(run, k);
+    [
+        r("CLa"),
+        (r("Xnp") - cfg.wing.x_mac()) / cfg.wing.mac(),
+        -r("CLq") / 2.0,
+        r("Cmq") / 2.0,
+    ]
+}
+
+/// Our (C_Lα, h_n, z_q, m_q) of the default lattice at `mach`.
+fn our_numbers(cfg: &Configuration, mach: f64) -> [f64; 4] {
     let d = cfg
-        .solve_subsonic(r("mach"), 0.0)
+        .solve_subsonic(mach, 0.0)
         .unwrap()
         .total
         .derivatives(0.0, 0.0)
         .unwrap();
-    let hn_avl = (r("Xnp") - cfg.wing.x_mac()) / cfg.wing.mac();
-    [
-        (d.lift_slope, r("CLa")),
-        (d.aerodynamic_centre, hn_avl),
-        (d.z_q, -r("CLq") / 2.0),
-        (d.m_q, r("Cmq") / 2.0),
-    ]
+    [d.lift_slope, d.aerodynamic_centre, d.z_q, d.m_q]
+}
+
+/// (C_Lα, h_n, z_q, m_q), ours and AVL's, of one run.
+fn pairs(cfg: &Configuration, run: &Value) -> [(f64, f64); 4] {
+    let ours = our_numbers(cfg, g(run, "mach"));
+    let avl = avl_numbers(cfg, run);
+    std::array::from_fn(|k| (ours[k], avl[k]))
+}
+
+/// The differences of ours from AVL's: relative in C_Lα, z_q, m_q, in c̄
+/// in h_n.
+fn differences(pairs: [(f64, f64); 4]) -> [f64; 4] {
+    std::array::from_fn(|k| {
+        let (ours, theirs) = pairs[k];
+        if k == 1 {
+            (ours - theirs).abs()
+        } else {
+            (ours / theirs - 1.0).abs()
+        }
+    })
+}
+
+/// Richardson's extrapolation of f at densities N, 2N, 4N (error ~ N^−p)
+/// at the order p observed on the three — (p, value) — or `None` if the
+/// differences do not shrink with one sign (as the script's `richardson`).
+fn richardson(f: [f64; 3]) -> Option<(f64, f64)> {
+    let (d1, d2) = (f[1] - f[0], f[2] - f[1]);
+    if d1 == 0.0 || d2 / d1 <= 0.0 || d2.abs() >= d1.abs() {
+        return None;
+    }
+    let p = (d1 / d2).log2();
+    Some((p, f[2] + d2 / (2f64.powf(p) - 1.0)))
+}
+
+/// Extrapolates `at(chordwise index, strip index)` (three of each, each
+/// twice the last) in the strips at each chordwise count, then chordwise:
+/// (the strips' orders, the chordwise order, the value).
+fn extrapolated(at: impl Fn(usize, usize) -> f64) -> ([f64; 3], f64, f64) {
+    let spanwise: [(f64, f64); 3] =
+        std::array::from_fn(|c| richardson([at(c, 0), at(c, 1), at(c, 2)]).unwrap());
+    let (p, v) = richardson(spanwise.map(|s| s.1)).unwrap();
+    (spanwise.map(|s| s.0), p, v)
+}
+
+fn fixture() -> Value {
+    serde_json::from_str(include_str!("fixtures/avl_configuration.json")).unwrap()
+}
+
+/// The coplanar layout's configuration.
+fn coplanar(avl: &Value) -> Configuration {
+    let (wing, shape) = planforms(avl);
+    let layout = avl["layouts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|l| g(l, "z") == 0.0)
+        .unwrap();
+    configuration(layout, wing, shape)
 }
 
 #[test]
 fn steady_derivatives_agree_with_avl() {
-    let avl: Value = serde_json::from_str(include_str!("fixtures/avl_configuration.json")).unwrap();
+    let avl = fixture();
     let (wing, shape) = planforms(&avl);
     let mut worst = [0.0f64; 4];
-    let mut coplanar = [0.0f64; 4];
     let mut ours_coplanar = 0.0;
     println!("layout | M | C_Lα ours/AVL | h_n ours/AVL | z_q ours/AVL | m_q ours/AVL");
     for layout in avl["layouts"].as_array().unwrap() {
@@ -102,45 +178,142 @@ fn steady_derivatives_agree_with_avl() {
                 g(run, "mach"),
                 pairs.map(|(a, b)| format!("{a:.4}/{b:.4}")).join(" | ")
             );
-            if is_coplanar && g(run, "mach") == 0.0 {
-                ours_coplanar = pairs[0].0;
-            }
-            let w = if is_coplanar {
-                &mut coplanar
-            } else {
-                &mut worst
-            };
-            for (k, (ours, theirs)) in pairs.into_iter().enumerate() {
-                let err = if k == 1 {
-                    (ours - theirs).abs()
+            if is_coplanar {
+                // against AVL's extrapolation instead (below)
+                ours_coplanar = if g(run, "mach") == 0.0 {
+                    pairs[0].0
                 } else {
-                    (ours / theirs - 1.0).abs()
+                    ours_coplanar
                 };
-                w[k] = w[k].max(err);
+                continue;
+            }
+            for (w, d) in worst.iter_mut().zip(differences(pairs)) {
+                *w = w.max(d);
             }
         }
     }
-    println!("largest differences (C_Lα, h_n, z_q, m_q): {worst:?}; coplanar {coplanar:?}");
+    println!("largest differences (C_Lα, h_n, z_q, m_q): {worst:?}");
     assert!(
         worst[0] < 0.03 && worst[2] < 0.03 && worst[3] < 0.03,
         "{worst:?}"
     );
     assert!(worst[1] < 0.01, "{worst:?}");
-    assert!(
-        coplanar[0] < 0.04 && coplanar[2] < 0.04 && coplanar[3] < 0.04,
-        "{coplanar:?}"
-    );
-    assert!(coplanar[1] < 0.05, "{coplanar:?}");
-    let avl_sequence: Vec<f64> = avl["coplanar_convergence"]
+    // AVL's default finite cores between the surfaces: its C_Lα falls
+    // slowly towards ours and stays above it
+    let default_core: Vec<f64> = avl["coplanar_default_core"]
         .as_array()
         .unwrap()
         .iter()
         .map(|c| g(c, "CLa"))
         .collect();
     assert!(
-        avl_sequence
+        default_core
             .windows(2)
             .all(|p| p[1] < p[0] && p[1] > ours_coplanar),
-        "{avl_sequence:?}"
+        "{default_core:?}"
     );
+}
+
+/// AVL's coplanar study (one component): its grid converges in the
+/// strips and chordwise, the fixture's extrapolation is the grid's
+/// (recomputed here), equal strips reach the cosine strips' value to 0.1 %,
+/// the densest lattice lies within 0.5 % of it in C_Lα while the default
+/// cores' densest lies over 3 % above; and the default
+/// lattice agrees with it within 3 % (C_Lα, z_q, m_q) and 0.01c̄ (h_n).
+#[test]
+fn the_coplanar_tailplane_agrees_with_avls_extrapolation() {
+    let avl = fixture();
+    let cfg = coplanar(&avl);
+    let default_core_densest = avl["coplanar_default_core"]
+        .as_array()
+        .unwrap()
+        .last()
+        .unwrap();
+    for study in avl["coplanar_study"].as_array().unwrap() {
+        let mach = g(study, "mach");
+        let grid = study["grid"].as_array().unwrap();
+        let fixture_ext = &study["extrapolated"];
+        for key in ["CLa", "Cma", "CLq", "Cmq", "Xnp"] {
+            let (orders, order, value) = extrapolated(|c, s| g(&grid[3 * c + s], key));
+            println!(
+                "AVL M {mach} {key}: strips' orders {orders:.2?}, chordwise {order:.2}, {value:.5}"
+            );
+            assert!(
+                orders.iter().all(|p| (0.8..2.5).contains(p)),
+                "{key} {orders:?}"
+            );
+            assert!((0.5..1.5).contains(&order), "{key} {order}");
+            assert!((value / g(fixture_ext, key) - 1.0).abs() < 1e-9, "{key}");
+        }
+        // equal strips (4 chordwise) converge to the cosine strips' value
+        let equal = g(&study["equal_strips_extrapolated"], "CLa");
+        let cosine = g(&study["spanwise_extrapolated"][0], "CLa");
+        assert!((equal / cosine - 1.0).abs() < 1e-3, "{equal} {cosine}");
+        let densest = g(&grid[8], "CLa");
+        assert!((densest / g(fixture_ext, "CLa") - 1.0).abs() < 0.005);
+        if mach == 0.0 {
+            assert!(g(default_core_densest, "CLa") / g(fixture_ext, "CLa") > 1.03);
+        }
+        let avl_numbers = avl_numbers(&cfg, fixture_ext);
+        let ours = our_numbers(&cfg, mach);
+        let d = differences(std::array::from_fn(|k| (ours[k], avl_numbers[k])));
+        println!(
+            "M {mach}: ours {ours:.4?}, AVL extrapolated {avl_numbers:.4?}, differences {d:.4?}"
+        );
+        assert!(d[0] < 0.03 && d[2] < 0.03 && d[3] < 0.03, "{d:?}");
+        assert!(d[1] < 0.01, "{d:?}");
+    }
+}
+
+/// Our lattice's own convergence on the coplanar layout: single lattices
+/// of 4, 8, 16 chordwise × 8, 16, 32 strips, extrapolated as AVL's (at the
+/// observed orders), meet AVL's extrapolation within 1 % (C_Lα, z_q, m_q)
+/// and 0.005c̄ (h_n). The strips converge at order ≈ 1 here (asserted
+/// 0.8–1.5), not 2.
+#[test]
+fn the_coplanar_lattice_converges_to_avls_extrapolation() {
+    let avl = fixture();
+    let cfg = coplanar(&avl);
+    let lattices: Vec<ConfigurationLattice> = [4, 8, 16]
+        .iter()
+        .flat_map(|&c| [8, 16, 32].map(|s| (c, s)))
+        .map(|(c, s)| {
+            ConfigurationLattice::with_spec(&cfg, |_| LatticeSpec::new(c, s, Spacing::Auto))
+                .unwrap()
+        })
+        .collect();
+    for study in avl["coplanar_study"].as_array().unwrap() {
+        let mach = g(study, "mach");
+        let numbers: Vec<[f64; 4]> = lattices
+            .iter()
+            .map(|l| {
+                let d = l
+                    .solve(mach, 0.0)
+                    .unwrap()
+                    .total
+                    .derivatives(0.0, 0.0)
+                    .unwrap();
+                [d.lift_slope, d.aerodynamic_centre, d.z_q, d.m_q]
+            })
+            .collect();
+        let avl_numbers = avl_numbers(&cfg, &study["extrapolated"]);
+        let mut ours = [0.0; 4];
+        for (k, slot) in ours.iter_mut().enumerate() {
+            let (orders, order, value) = extrapolated(|c, s| numbers[3 * c + s][k]);
+            println!(
+                "ours M {mach} #{k}: strips' orders {orders:.2?}, chordwise {order:.2}, {value:.5}"
+            );
+            assert!(
+                orders.iter().all(|p| (0.8..1.5).contains(p)),
+                "{k} {orders:?}"
+            );
+            *slot = value;
+        }
+        let d = differences(std::array::from_fn(|k| (ours[k], avl_numbers[k])));
+        println!(
+            "M {mach}: ours extrapolated {ours:.4?}, AVL's {avl_numbers:.4?}, differences {d:.4?}"
+        );
+        assert!(d[0] < 0.01 && d[2] < 0.01 && d[3] < 0.01, "{d:?}");
+        assert!(d[1] < 0.005, "{d:?}");
+    }
 }
