@@ -341,8 +341,9 @@ fn a_configuration_is_solved_once() {
 /// between frequency nodes (`cache::solution_with`, `Harmonic::Interpolated`)
 /// as the wing's `FrequencyTable` is: the cubic through the four nodes
 /// around ω̄, each node a direct solve. Against direct solves at ω̄ between
-/// nodes, every part and the total: as close as the wing's table is to its
-/// direct solves (docs/damping-theories.md: at most 0.3 %), and at a node
+/// nodes, every part and the total, each number relative to the largest
+/// (60° delta and tail, M = 0.7): measured 3.3e-6 at worst (ω̄ = 0.17), far
+/// inside the wing's table's 0.3 % (docs/damping-theories.md); at a node,
 /// the node's own solution.
 #[test]
 fn interpolated_configuration_solutions_are_the_direct_ones() {
@@ -367,7 +368,7 @@ fn interpolated_configuration_solutions_are_the_direct_ones() {
         eprintln!("ω̄ = {w}: interpolated against direct, worst {e:.2e}");
         worst_seen = worst_seen.max(e);
     }
-    assert!(worst_seen < 3e-3, "{worst_seen}");
+    assert!(worst_seen < 1e-4, "{worst_seen}");
     assert!(worst_seen > 0.0, "interpolated, not solved at ω̄");
     let at_node = cache::solution_with(&cfg, mach, 0.3, Harmonic::Interpolated).unwrap();
     let node = cache::solution(&cfg, mach, 0.3).unwrap();
