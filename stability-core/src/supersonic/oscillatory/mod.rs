@@ -60,6 +60,7 @@
 
 pub mod cache;
 pub mod direct;
+pub mod edge;
 pub mod grid;
 pub mod influence;
 pub mod march;
