@@ -44,6 +44,17 @@ fn main() {
                 Ok(s) => {
                     let d = s.derivatives(0.25, 0.0).unwrap();
                     let got = [d.lift_slope, d.aerodynamic_centre, d.z_thetadot, d.m_thetadot];
+                    if std::env::var("PARTS").is_ok() {
+                        eprintln!(
+                            "{sweep} {mach} {strips}: z_q {:+.2e} m_q {:+.2e} z_wdot {:+.2e} m_wdot {:+.2e} (m_q {:.4} m_thetadot {:.4})",
+                            d.z_q / e.damping.z_q - 1.0,
+                            d.m_q / e.damping.m_q - 1.0,
+                            d.z_wdot / e.damping.z_wdot - 1.0,
+                            d.m_wdot / e.damping.m_wdot - 1.0,
+                            e.damping.m_q,
+                            e.damping.m_q + e.damping.m_wdot
+                        );
+                    }
                     got.iter()
                         .zip(want)
                         .enumerate()
