@@ -280,10 +280,33 @@ fn strip(
     let Some(before) = last else {
         return [zero; 3];
     };
-    let slope = (prev.1 - before.1) / (prev.0 - before.0);
-    let end = (te, prev.1 + slope * (te - prev.0));
+    let end = (
+        te,
+        if root {
+            root_extrapolation(le, before, prev, te)
+        } else {
+            let slope = (prev.1 - before.1) / (prev.0 - before.0);
+            prev.1 + slope * (te - prev.0)
+        },
+    );
     let [a, b] = segment(prev, end, x_mac);
     [i0 + a, i1 + b, end.1]
+}
+
+/// φ̂ at the trailing edge x_TE of a strip behind a subsonic leading edge
+/// x_LE, through its last two points p, q by φ̂ = a√s + b·s, s = x − x_LE
+/// (the first two terms of the edge's expansion, φ̂ ∝ √s·(1 + O(s)),
+/// Ribner & Malvestuto, NACA Rep. 908); p on the edge (φ̂ = 0): a√s alone.
+fn root_extrapolation(le: f64, p: (f64, Complex64), q: (f64, Complex64), te: f64) -> Complex64 {
+    let (s1, s2, s) = (p.0 - le, q.0 - le, te - le);
+    if s1 <= 1e-12 * s2 || s2 <= s1 {
+        return q.1 * (s / s2).max(0.0).sqrt();
+    }
+    let (r1, r2) = (s1.sqrt(), s2.sqrt());
+    let det = r1 * s2 - r2 * s1;
+    let a = (p.1 * s2 - q.1 * s1) / det;
+    let b = (q.1 * r1 - p.1 * r2) / det;
+    a * s.sqrt() + b * s
 }
 
 /// ∫φ dx and ∫(x − x̄)φ dx from a subsonic leading edge x_LE to the
