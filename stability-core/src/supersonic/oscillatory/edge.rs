@@ -200,11 +200,10 @@ mod tests {
     use super::*;
     use std::f64::consts::PI;
 
-    /// A box far outboard of a rectangle's tip (d ≫ the box) has
-    /// q = 1/√d_c to second order, and S = (π/2)/√d_c (steady: the forward
-    /// half's C(0, 0) = π/2 times the nearly constant 1/√d); a box the tip
-    /// runs along (y0 = s) has q = (4/3)√Δy/(Δy) — 2√Δy·Δx/(ΔxΔy)... by
-    /// hand: ∫₀^{Δy} dη/√η = 2√Δy.
+    /// By hand, beside a rectangle's tip (η_w = s): the box whose inner
+    /// side is the tip has q = (1/ΔxΔy)·Δx·∫₀^{Δy} dη/√η = 2/√Δy; a box
+    /// far outboard (d ≫ Δy) has q = 1/√d_c and S = C(0, 0)/√d_c = (π/2)/√d_c
+    /// (steady) to second order in Δy/d_c.
     #[test]
     fn weights_by_hand() {
         let w = Trapezoid::new(1.0, 1.0, 1.0, 0.0).unwrap();
@@ -220,5 +219,29 @@ mod tests {
         let s = self_influence(&w, &grid, 3, 40, 0.0, 0.0);
         assert!((s.re * d.sqrt() - PI / 2.0).abs() < 1e-3, "{s}");
         assert!(s.im.abs() < 1e-14);
+    }
+
+    /// Far from the edge the weighted coefficient is the uniform box's
+    /// C(m, n) of [`super::super::influence`] (an independent quadrature)
+    /// times 1/√d at the box: oscillatory, rows 1–3 back, n = 0…m.
+    #[test]
+    fn far_from_the_edge_it_is_the_uniform_coefficient() {
+        let w = Trapezoid::new(1.0, 1.0, 1.0, 0.0).unwrap();
+        let grid = Grid::new(&w, 1.0, 8);
+        let (sh, nh) = (0.3, 0.2);
+        let (i, j) = (6, 60);
+        for m in 1..=3usize {
+            for n in 0..=m {
+                let jp = j + n;
+                let d = jp as f64 * grid.dy - 1.0;
+                let got = coefficient(&w, &grid, grid.centre(i, j), (i - m, jp), sh, nh);
+                let want = crate::supersonic::oscillatory::influence::coefficient(m, n, sh, nh)
+                    / d.sqrt();
+                assert!(
+                    (got - want).norm() < 2e-3 * want.norm(),
+                    "m {m} n {n}: {got} vs {want}"
+                );
+            }
+        }
     }
 }
