@@ -43,7 +43,12 @@ fn main() {
             let row = match solve(&wing, mach, 0.01, spec) {
                 Ok(s) => {
                     let d = s.derivatives(0.25, 0.0).unwrap();
-                    let got = [d.lift_slope, d.aerodynamic_centre, d.z_thetadot, d.m_thetadot];
+                    let got = [
+                        d.lift_slope,
+                        d.aerodynamic_centre,
+                        d.z_thetadot,
+                        d.m_thetadot,
+                    ];
                     if std::env::var("PARTS").is_ok() {
                         eprintln!(
                             "{sweep} {mach} {strips}: z_q {:+.2e} m_q {:+.2e} z_wdot {:+.2e} m_wdot {:+.2e} (m_q {:.4} m_thetadot {:.4})",

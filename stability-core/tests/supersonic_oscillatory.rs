@@ -206,7 +206,10 @@ fn subsonic_leading_edges_match_eq_36() {
                 richardson: false,
             };
             let (coarse, fine) = (errors(raw(32))[2], errors(raw(128))[2]);
-            assert!(fine < 0.5 * coarse, "{sweep}° M {mach}: z_θ̇ {coarse} → {fine}");
+            assert!(
+                fine < 0.5 * coarse,
+                "{sweep}° M {mach}: z_θ̇ {coarse} → {fine}"
+            );
         }
     }
     println!("worst against eq (36): {worst:?}");

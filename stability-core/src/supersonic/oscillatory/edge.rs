@@ -235,8 +235,8 @@ mod tests {
                 let jp = j + n;
                 let d = jp as f64 * grid.dy - 1.0;
                 let got = coefficient(&w, &grid, grid.centre(i, j), (i - m, jp), sh, nh);
-                let want = crate::supersonic::oscillatory::influence::coefficient(m, n, sh, nh)
-                    / d.sqrt();
+                let want =
+                    crate::supersonic::oscillatory::influence::coefficient(m, n, sh, nh) / d.sqrt();
                 assert!(
                     (got - want).norm() < 2e-3 * want.norm(),
                     "m {m} n {n}: {got} vs {want}"

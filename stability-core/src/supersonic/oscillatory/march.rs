@@ -141,14 +141,8 @@ impl EdgeBoxes {
                 if near[kp] <= 0.0 {
                     continue;
                 }
-                let exact = edge::coefficient(
-                    wing,
-                    grid,
-                    centre,
-                    (ip, jp),
-                    self.sigma_hat,
-                    self.nu_hat,
-                );
+                let exact =
+                    edge::coefficient(wing, grid, centre, (ip, jp), self.sigma_hat, self.nu_hat);
                 let c = exact - table.get(m, j.abs_diff(jp)) * near[kp];
                 sum[0] += wash[kp][0] * c;
                 sum[1] += wash[kp][1] * c;
@@ -157,7 +151,8 @@ impl EdgeBoxes {
     }
 
     /// (q, S) of box (i, j): its source and its self-influence per unit
-    /// unknown — with the singular weighting a/√d, or for a uniform upwash
+    /// unknown — with the singular weighting a/√d (S exact within
+    /// [`NEAR_STRIPS`] of the edge), or for a uniform upwash
     /// the area off the wing, 1 − f, and the forward half's C(0, 0) times
     /// it (f the wing fraction).
     fn weights(
@@ -172,10 +167,15 @@ impl EdgeBoxes {
         if rest <= 0.0 {
             (0.0, Complex64::default())
         } else if self.singular {
-            (
-                edge::weight(wing, grid, i, j),
-                edge::self_influence(wing, grid, i, j, self.sigma_hat, self.nu_hat),
-            )
+            let q = edge::weight(wing, grid, i, j);
+            // away from the edge 1/√d is smooth across the box: its own
+            // influence is C(0, 0) times its mean (to second order)
+            let s = if self.is_near(wing, grid, i, j) {
+                edge::self_influence(wing, grid, i, j, self.sigma_hat, self.nu_hat)
+            } else {
+                self.c00 * q
+            };
+            (q, s)
         } else {
             // the classic box: the upwash over the off-wing part, its own
             // influence C(0, 0) on the whole box's unknown
