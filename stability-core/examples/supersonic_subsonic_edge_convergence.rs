@@ -1,11 +1,13 @@
 //! The Mach box at ω̄ → 0 on deltas with subsonic leading edges against
 //! eq (36) (`supersonic::edge_theory`), h = ¼: relative errors of C_Lα,
 //! H₀ (absolute), z_θ̇, m_θ̇ at N = 32, 64, 128 strips and extrapolated
-//! (4X₁₂₈ − X₆₄)/3 — the table of `docs/supersonic-oscillatory.md`.
+//! (4X₁₂₈ − X₆₄)/3, and m_θ̇'s error on m_q — the table of
+//! `docs/supersonic-oscillatory.md` (`PARTS=1`: z_q, m_q, z_ẇ, m_ẇ's
+//! errors on stderr).
 //! `cargo run --release -p stability-core --example supersonic_subsonic_edge_convergence [sweep mach]...`
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::supersonic::oscillatory::{MachBoxSpec, solve};
+use stability_core::supersonic::oscillatory::{MachBoxError, MachBoxSpec, solve};
 use stability_core::supersonic::{Wing, edge_theory};
 
 fn main() {
@@ -18,8 +20,8 @@ fn main() {
     } else {
         vec![(45.0, 1.2), (45.0, 1.3), (60.0, 1.6)]
     };
-    println!("| wing | β cot Λ | N | C_Lα | H₀ | z_θ̇ | m_θ̇ |");
-    println!("| --- | --- | --- | --- | --- | --- | --- |");
+    println!("| wing | β cot Λ | N | C_Lα | H₀ | z_θ̇ | m_θ̇ | m_θ̇ on m_q |");
+    println!("| --- | --- | --- | --- | --- | --- | --- | --- |");
     for (sweep, mach) in cases {
         let p = Planform::new(f64::to_radians(sweep), 0.0, Size::RootChord(1.0)).unwrap();
         let wing = Trapezoid::from(&p);
@@ -60,15 +62,21 @@ fn main() {
                             e.damping.m_q + e.damping.m_wdot
                         );
                     }
-                    got.iter()
+                    let mut cells: Vec<String> = got
+                        .iter()
                         .zip(want)
                         .enumerate()
                         .map(|(k, (g, w))| {
                             let err = if k == 1 { g - w } else { (g - w) / w.abs() };
                             format!("{err:+.1e}")
                         })
-                        .collect::<Vec<_>>()
-                        .join(" | ")
+                        .collect();
+                    let scaled = (got[3] - want[3]) / e.damping.m_q.abs();
+                    cells.push(format!("{scaled:+.1e}"));
+                    cells.join(" | ")
+                }
+                Err(MachBoxError::TooManyRows { rows, .. }) => {
+                    format!("({rows} rows: over the limit) | | | |")
                 }
                 Err(err) => format!("{err}"),
             };
