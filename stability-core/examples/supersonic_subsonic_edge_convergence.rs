@@ -23,12 +23,20 @@ fn main() {
     println!("| wing | β cot Λ | N | C_Lα | H₀ | z_θ̇ | m_θ̇ | m_θ̇ on m_q |");
     println!("| --- | --- | --- | --- | --- | --- | --- | --- |");
     for (sweep, mach) in cases {
-        let p = Planform::new(f64::to_radians(sweep), 0.0, Size::RootChord(1.0)).unwrap();
+        let taper: f64 = std::env::var("TAPER")
+            .ok()
+            .and_then(|t| t.parse().ok())
+            .unwrap_or(0.0);
+        let p = Planform::new(f64::to_radians(sweep), taper, Size::RootChord(1.0)).unwrap();
         let wing = Trapezoid::from(&p);
         let beta_cot = (mach * mach - 1.0f64).sqrt() / f64::to_radians(sweep).tan();
-        let e = edge_theory(&Wing::new(f64::to_radians(sweep), 0.0).unwrap(), mach, 0.25)
-            .unwrap()
-            .derivatives;
+        let e = edge_theory(
+            &Wing::new(f64::to_radians(sweep), taper).unwrap(),
+            mach,
+            0.25,
+        )
+        .unwrap()
+        .derivatives;
         let want = [
             e.lift_slope,
             e.aerodynamic_centre,
