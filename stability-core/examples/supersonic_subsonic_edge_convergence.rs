@@ -3,7 +3,8 @@
 //! H₀ (absolute), z_θ̇, m_θ̇ at N = 32, 64, 128 strips and extrapolated
 //! (4X₁₂₈ − X₆₄)/3, and m_θ̇'s error on m_q — the table of
 //! `docs/supersonic-oscillatory.md` (`PARTS=1`: z_q, m_q, z_ẇ, m_ẇ's
-//! errors on stderr).
+//! errors on stderr; `TAPER=0.2`: cropped deltas, against the same theory
+//! with Evvard's tip corrections).
 //! `cargo run --release -p stability-core --example supersonic_subsonic_edge_convergence [sweep mach]...`
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
