@@ -3,7 +3,8 @@
 //! with about the same number of boxes on the half wing: the Mach box's
 //! 23 strips (183 wing boxes, no extrapolation) and the lattice's 12 × 16
 //! (192 boxes, no extrapolation); and the Mach box's default grid (128
-//! strips extrapolated with 64: 6 100 + 1 500 wing boxes).
+//! strips extrapolated with 64: 6 100 + 1 500 wing boxes), also at M = 1.6
+//! (subsonic leading edge: the diaphragm).
 //!
 //! `cargo bench -p stability-core --bench supersonic_oscillatory`
 
@@ -49,4 +50,14 @@ fn mach_box_default(bencher: Bencher) {
     let w = wing();
     bencher
         .bench_local(|| solve(black_box(&w), 2.5, black_box(0.5), MachBoxSpec::default()).unwrap());
+}
+
+/// The default grid with a subsonic leading edge (M = 1.6, β cot Λ =
+/// 0.72): the diaphragm's march, with the edge's weights and near-field
+/// coefficients (`supersonic::oscillatory::edge`).
+#[divan::bench(sample_count = 10)]
+fn mach_box_default_subsonic_edge(bencher: Bencher) {
+    let w = wing();
+    bencher
+        .bench_local(|| solve(black_box(&w), 1.6, black_box(0.5), MachBoxSpec::default()).unwrap());
 }

@@ -17,6 +17,7 @@
 //! extrapolated linearly to the trailing edge.
 
 use super::direct::{Flow, wing_potential};
+use super::edge;
 use super::grid::{Grid, Kind};
 use super::influence::Influence;
 use crate::geometry::Trapezoid;
@@ -28,15 +29,24 @@ pub type Pair = [Complex64; 2];
 
 /// The potentials φ̂ at the box centres (zero off the wing) for the two
 /// normalwash distributions: the wing's own part exactly
-/// ([`super::direct`]), the diaphragm's by its boxes.
+/// ([`super::direct`]), the diaphragm's by its boxes. With a subsonic
+/// leading edge (β cot Λ < 1) the diaphragm's upwash carries its edge
+/// singularity exactly ([`super::edge`]): each box's unknown is the
+/// smooth factor a of w̄ = a/√d.
 pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> Vec<Pair> {
     let n = grid.cells.len();
     let zero = [Complex64::default(); 2];
     let mut source = vec![zero; n];
     let mut wash = vec![zero; n];
     let mut phi = vec![zero; n];
+    let mut near = vec![0.0; n];
     let scale = grid.dy / PI;
-    let c00 = table.get(0, 0);
+    let edge = EdgeBoxes {
+        singular: flow.beta < wing.sweep_le.tan(),
+        sigma_hat: flow.sigma * grid.dx,
+        nu_hat: flow.nu * grid.dx,
+        c00: table.get(0, 0),
+    };
     let mut any_diaphragm = false;
     for i in 0..grid.rows {
         for pass in [Kind::Diaphragm, Kind::Wing] {
@@ -48,29 +58,130 @@ pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> V
                 }
                 let (x, y) = grid.centre(i, j);
                 let own = wing_potential(wing, flow, x, y);
-                let rest = 1.0 - cell.fraction;
-                let before = if any_diaphragm {
+                let mut before = if any_diaphragm {
                     upstream(grid, table, &source, i, j)
                 } else {
                     zero
                 };
+                if edge.singular && any_diaphragm {
+                    edge.near_field(wing, grid, table, (&near, &wash), (i, j), &mut before);
+                }
+                let (q, s) = edge.weights(wing, grid, i, j, cell.fraction);
+                if edge.singular && edge.is_near(wing, grid, i, j) {
+                    near[k] = q;
+                }
                 if pass == Kind::Diaphragm {
                     for r in 0..2 {
-                        source[k][r] = -(before[r] + own[r] / scale) / c00;
-                        wash[k][r] = source[k][r] / rest.max(1e-9);
+                        wash[k][r] = if s.norm() > 0.0 {
+                            -(before[r] + own[r] / scale) / s
+                        } else {
+                            Complex64::default()
+                        };
+                        source[k][r] = wash[k][r] * q;
                     }
                     any_diaphragm |= source[k].iter().any(|s| s.norm() > 0.0);
                 } else {
                     let beside = neighbour_wash(grid, &wash, i, j);
+                    wash[k] = beside;
                     for r in 0..2 {
-                        source[k][r] = beside[r] * rest;
-                        phi[k][r] = own[r] + (before[r] + source[k][r] * c00) * scale;
+                        source[k][r] = beside[r] * q;
+                        phi[k][r] = own[r] + (before[r] + beside[r] * s) * scale;
                     }
                 }
             }
         }
     }
     phi
+}
+
+/// Rows back over which the near field's coefficients are the exact
+/// weighted ones ([`edge::coefficient`]).
+const NEAR_ROWS: usize = 2;
+
+/// Boxes whose centre is within this many strips of the edge take the
+/// near field's exact coefficients.
+const NEAR_STRIPS: f64 = 3.0;
+
+/// How the boxes off the wing (in part or whole) carry the diaphragm's
+/// upwash: uniform (the classic box), or with the edge's 1/√d
+/// ([`super::edge`]).
+struct EdgeBoxes {
+    singular: bool,
+    sigma_hat: f64,
+    nu_hat: f64,
+    c00: Complex64,
+}
+
+impl EdgeBoxes {
+    /// Whether box (i, j) lies within [`NEAR_STRIPS`] of the edge.
+    fn is_near(&self, wing: &Trapezoid, grid: &Grid, i: usize, j: usize) -> bool {
+        let (x, y) = grid.centre(i, j);
+        (y - edge::half_width(wing, x)).abs() < NEAR_STRIPS * grid.dy
+    }
+
+    /// Replaces, in `sum`, the uniform boxes' C(m, n) of the edge's boxes
+    /// within [`NEAR_ROWS`] rows ahead of (i, j) by their exact weighted
+    /// coefficients: Σ a (S − q C). `near` holds q (zero for boxes not
+    /// near the edge), `wash` a.
+    fn near_field(
+        &self,
+        wing: &Trapezoid,
+        grid: &Grid,
+        table: &Influence,
+        (near, wash): (&[f64], &[Pair]),
+        (i, j): (usize, usize),
+        sum: &mut Pair,
+    ) {
+        let centre = grid.centre(i, j);
+        for m in 1..=NEAR_ROWS.min(i) {
+            let ip = i - m;
+            let (lo, hi) = (j.saturating_sub(m), (j + m).min(grid.columns - 1));
+            for jp in lo..=hi {
+                let kp = ip * grid.columns + jp;
+                if near[kp] <= 0.0 {
+                    continue;
+                }
+                let exact =
+                    edge::coefficient(wing, grid, centre, (ip, jp), self.sigma_hat, self.nu_hat);
+                let c = exact - table.get(m, j.abs_diff(jp)) * near[kp];
+                sum[0] += wash[kp][0] * c;
+                sum[1] += wash[kp][1] * c;
+            }
+        }
+    }
+
+    /// (q, S) of box (i, j): its source and its self-influence per unit
+    /// unknown — with the singular weighting a/√d (S exact within
+    /// [`NEAR_STRIPS`] of the edge), or for a uniform upwash
+    /// the area off the wing, 1 − f, and the forward half's C(0, 0) times
+    /// it (f the wing fraction).
+    fn weights(
+        &self,
+        wing: &Trapezoid,
+        grid: &Grid,
+        i: usize,
+        j: usize,
+        fraction: f64,
+    ) -> (f64, Complex64) {
+        let rest = 1.0 - fraction;
+        if rest <= 0.0 {
+            (0.0, Complex64::default())
+        } else if self.singular {
+            let q = edge::weight(wing, grid, i, j);
+            // away from the edge 1/√d is smooth across the box: its own
+            // influence is C(0, 0) times its mean (to second order)
+            let s = if self.is_near(wing, grid, i, j) {
+                edge::self_influence(wing, grid, i, j, self.sigma_hat, self.nu_hat)
+            } else {
+                self.c00 * q
+            };
+            (q, s)
+        } else {
+            // the classic box: the upwash over the off-wing part, its own
+            // influence C(0, 0) on the whole box's unknown
+            (rest, self.c00 * rest)
+        }
+    }
 }
 
 /// The diaphragm normalwash beside a cut wing box: of the box outboard in
@@ -118,6 +229,8 @@ pub fn loads(wing: &Trapezoid, grid: &Grid, phi: &[Pair], kappa: f64) -> [Pair; 
     let half_area = 0.5 * wing.area();
     let ik = Complex64::new(0.0, kappa);
     let (mut lift, mut moment) = ([Complex64::default(); 2], [Complex64::default(); 2]);
+    // a subsonic leading edge (β = Δx/Δy < tan Λ): φ̂ ∝ √(x − x_LE) there
+    let root = grid.dx / grid.dy < wing.sweep_le.tan();
     for j in 0..grid.strips {
         let width = if j == 0 { 0.5 * grid.dy } else { grid.dy };
         let y = j as f64 * grid.dy;
@@ -126,7 +239,7 @@ pub fn loads(wing: &Trapezoid, grid: &Grid, phi: &[Pair], kappa: f64) -> [Pair; 
             wing.leading_edge_at(y) + wing.chord_at(y),
         );
         for (r, (l, m)) in lift.iter_mut().zip(moment.iter_mut()).enumerate() {
-            let [i0, i1, phi_te] = strip(grid, phi, j, r, le, te, x_mac);
+            let [i0, i1, phi_te] = strip(grid, phi, (j, r), (le, te), x_mac, root);
             *l += (ik * i0 + phi_te) * (4.0 * width / half_area);
             *m -= (ik * i1 + phi_te * (te - x_mac) - i0) * (4.0 * width / (half_area * mac));
         }
@@ -134,15 +247,15 @@ pub fn loads(wing: &Trapezoid, grid: &Grid, phi: &[Pair], kappa: f64) -> [Pair; 
     [lift, moment]
 }
 
-/// ∫φ̂ dx, ∫(x − x̄)φ̂ dx and φ̂_TE along strip j, right-hand side r.
+/// ∫φ̂ dx, ∫(x − x̄)φ̂ dx and φ̂_TE along strip j, right-hand side r
+/// (`root`: the first segment after a subsonic leading edge's √ law).
 fn strip(
     grid: &Grid,
     phi: &[Pair],
-    j: usize,
-    r: usize,
-    le: f64,
-    te: f64,
+    (j, r): (usize, usize),
+    (le, te): (f64, f64),
     x_mac: f64,
+    root: bool,
 ) -> [Complex64; 3] {
     let zero = Complex64::default();
     let mut prev = (le, zero);
@@ -154,7 +267,11 @@ fn strip(
             continue;
         }
         let here = (grid.centre(i, j).0, phi[k][r]);
-        let [a, b] = segment(prev, here, x_mac);
+        let [a, b] = if root && last.is_none() {
+            first_segment(le, here, x_mac)
+        } else {
+            segment(prev, here, x_mac)
+        };
         i0 += a;
         i1 += b;
         last = Some(prev);
@@ -163,10 +280,45 @@ fn strip(
     let Some(before) = last else {
         return [zero; 3];
     };
-    let slope = (prev.1 - before.1) / (prev.0 - before.0);
-    let end = (te, prev.1 + slope * (te - prev.0));
+    let end = (
+        te,
+        if root {
+            root_extrapolation(le, before, prev, te)
+        } else {
+            let slope = (prev.1 - before.1) / (prev.0 - before.0);
+            prev.1 + slope * (te - prev.0)
+        },
+    );
     let [a, b] = segment(prev, end, x_mac);
     [i0 + a, i1 + b, end.1]
+}
+
+/// φ̂ at the trailing edge x_TE of a strip behind a subsonic leading edge
+/// x_LE, through its last two points p, q by φ̂ = a√s + b·s, s = x − x_LE
+/// (the first two terms of the edge's expansion, φ̂ ∝ √s·(1 + O(s)),
+/// Ribner & Malvestuto, NACA Rep. 908); p on the edge (φ̂ = 0): a√s alone.
+fn root_extrapolation(le: f64, p: (f64, Complex64), q: (f64, Complex64), te: f64) -> Complex64 {
+    let (s1, s2, s) = (p.0 - le, q.0 - le, te - le);
+    if s1 <= 1e-12 * s2 || s2 <= s1 {
+        return q.1 * (s / s2).max(0.0).sqrt();
+    }
+    let (r1, r2) = (s1.sqrt(), s2.sqrt());
+    let det = r1 * s2 - r2 * s1;
+    let a = (p.1 * s2 - q.1 * s1) / det;
+    let b = (q.1 * r1 - p.1 * r2) / det;
+    a * s.sqrt() + b * s
+}
+
+/// ∫φ dx and ∫(x − x̄)φ dx from a subsonic leading edge x_LE to the
+/// first centre q, where φ̂ = φ_q√((x − x_LE)/L), L = q − x_LE (the edge's
+/// square-root potential, Ribner & Malvestuto, NACA Rep. 908): (2/3)φ_q L
+/// and φ_q((x_LE − x̄)(2/3)L + (2/5)L²).
+fn first_segment(le: f64, q: (f64, Complex64), x_mac: f64) -> [Complex64; 2] {
+    let l = q.0 - le;
+    [
+        q.1 * (2.0 / 3.0 * l),
+        q.1 * ((le - x_mac) * 2.0 / 3.0 * l + 0.4 * l * l),
+    ]
 }
 
 /// ∫φ dx and ∫(x − x̄)φ dx over one segment of a piecewise-linear φ (exact).

@@ -33,16 +33,18 @@
 //! - [`march`]: the row-by-row sweep and the loads;
 //! - [`direct`]: the wing's own part of the potential, by quadrature at
 //!   each receiving point;
+//! - [`edge`]: the diaphragm's edge singularity (box weights and exact
+//!   near-field coefficients of the upwash a/√d);
 //! - [`cache`]: one solve per (wing, M, ω̄), as [`crate::lifting_surface::cache`].
 //!
 //! # Convergence
 //! With supersonic edges the error falls as the square of the box size
 //! (the wing's potential is exact, the loads' quadrature along the strips
 //! second order); [`MachBoxSpec::richardson`] combines the solutions of N
-//! and N/2 strips, (4X_N − X_{N/2})/3. The diaphragm of subsonic edges
-//! converges less regularly: `docs/supersonic-oscillatory.md` tabulates
-//! the convergence against the exact reverse-flow values and against the
-//! first-order theories.
+//! and N/2 strips, (4X_N − X_{N/2})/3. With a subsonic leading edge the
+//! α̇ parts converge about as 1/N: `docs/supersonic-oscillatory.md`
+//! tabulates the convergence against the exact reverse-flow values and
+//! against the first-order theories (eq (36)).
 //!
 //! # Limits
 //! Linear, inviscid, thin, flat wing, M > 1 and below the hypersonic
@@ -50,16 +52,18 @@
 //! the wake does not act on the wing; no Kutta condition). Near M = 1 the
 //! boxes (Δx = βΔy) grow short and the grid long ([`MAX_ROWS`];
 //! [`MachBoxSpec::for_wing`] takes fewer strips there). Subsonic leading
-//! edges: the diaphragm's march converges irregularly (within 1 % of eq
-//! (36) at β cot Λ = 0.72 with 128 strips; drifting by 1–2 % with
-//! refinement at β cot Λ = 0.66, `docs/supersonic-oscillatory.md`): a known
-//! weakness of the Mach box at subsonic leading edges, not yet cured.
+//! edges: the diaphragm's upwash carries the edge's 1/√d singularity
+//! exactly ([`edge`]); on the default grid within 0.6 % of eq (36) in
+//! C_Lα, H₀, z_θ̇ and m_θ̇ (on m_q) for β cot Λ from 0.3 to 0.93, 1–4 %
+//! in z_θ̇ between 0.95 and 1, where the diaphragm is narrower than a box
+//! (`docs/supersonic-oscillatory.md`).
 //! Below ω̄ = [`OMEGA_BAR_QUASI_STEADY`] the quasi-steady values are those
 //! at ω̄ = 10⁻⁴ (the quadrature parts divided by ω̄; an O(ω̄²) error of
 //! 10⁻⁸).
 
 pub mod cache;
 pub mod direct;
+pub mod edge;
 pub mod grid;
 pub mod influence;
 pub mod march;
