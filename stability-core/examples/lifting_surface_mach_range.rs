@@ -15,6 +15,12 @@ fn main() {
             "A = 3, λ = 0.5, Λ = 10°",
             cache::unit_wing(3.0, 0.5, 10f64.to_radians()),
         ),
+        // the note's deltas: A = 4 cot Λ (45°: 4, 60°: 2.309)
+        ("delta 45°", cache::unit_wing(4.0, 0.0, 45f64.to_radians())),
+        (
+            "delta 60°",
+            cache::unit_wing(4.0 / 3f64.sqrt(), 0.0, 60f64.to_radians()),
+        ),
     ];
     for (name, wing) in wings {
         let wing: Trapezoid = wing.expect("a valid wing");
@@ -22,7 +28,7 @@ fn main() {
         println!("{name}: Mach box from M = {first:.5}");
         println!("| M | method | C_Lα | H₀ | z_θ̇ | m_θ̇ | z_ẇ | m_ẇ |");
         println!("|---|---|---|---|---|---|---|---|");
-        for m in [0.98, 0.99, 1.0, first, 1.02, 1.05, 1.1, 1.2] {
+        for m in [0.98, 0.99, 1.0, first, 1.02, 1.05, 1.1, 1.2, 1.3] {
             match solution(&wing, m, 0.6, Harmonic::Direct) {
                 Ok(at) => {
                     let s = at.solution;
