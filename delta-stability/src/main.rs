@@ -231,7 +231,8 @@ enum Command {
     /// ours, reproduced, …}, swept over the unstated i_B and C_L·M²;
     /// `assumptions`) and index.html (the same conclusions with the numbers,
     /// a table of contents and the figures; its links work wherever DIR
-    /// is). About 8 s on 2 cores, most of it the doublet lattice. The files
+    /// is). About 22 s on 2 cores, most of it the doublet lattice (13 s of
+    /// it §10 (ours), sizing the tail the 45° delta needs). The files
     /// are written into a temporary directory beside DIR that replaces DIR
     /// only when complete, so a killed run leaves the previous report whole;
     /// DIR, if it exists, must be an earlier report or empty: everything in
