@@ -38,12 +38,6 @@ fn main() {
         )
         .unwrap()
         .derivatives;
-        let want = [
-            e.lift_slope,
-            e.aerodynamic_centre,
-            e.damping.z_q + e.damping.z_wdot,
-            e.damping.m_q + e.damping.m_wdot,
-        ];
         for (label, strips, richardson) in [
             ("32", 32, false),
             ("64", 64, false),
@@ -52,38 +46,7 @@ fn main() {
         ] {
             let spec = MachBoxSpec { strips, richardson };
             let row = match solve(&wing, mach, 0.01, spec) {
-                Ok(s) => {
-                    let d = s.derivatives(0.25, 0.0).unwrap();
-                    let got = [
-                        d.lift_slope,
-                        d.aerodynamic_centre,
-                        d.z_thetadot,
-                        d.m_thetadot,
-                    ];
-                    if std::env::var("PARTS").is_ok() {
-                        eprintln!(
-                            "{sweep} {mach} {strips}: z_q {:+.2e} m_q {:+.2e} z_wdot {:+.2e} m_wdot {:+.2e} (m_q {:.4} m_thetadot {:.4})",
-                            d.z_q / e.damping.z_q - 1.0,
-                            d.m_q / e.damping.m_q - 1.0,
-                            d.z_wdot / e.damping.z_wdot - 1.0,
-                            d.m_wdot / e.damping.m_wdot - 1.0,
-                            e.damping.m_q,
-                            e.damping.m_q + e.damping.m_wdot
-                        );
-                    }
-                    let mut cells: Vec<String> = got
-                        .iter()
-                        .zip(want)
-                        .enumerate()
-                        .map(|(k, (g, w))| {
-                            let err = if k == 1 { g - w } else { (g - w) / w.abs() };
-                            format!("{err:+.1e}")
-                        })
-                        .collect();
-                    let scaled = (got[3] - want[3]) / e.damping.m_q.abs();
-                    cells.push(format!("{scaled:+.1e}"));
-                    cells.join(" | ")
-                }
+                Ok(s) => row(&s, &e, sweep, mach, strips),
                 Err(MachBoxError::TooManyRows { rows, .. }) => {
                     format!("({rows} rows: over the limit) | | | |")
                 }
@@ -92,4 +55,51 @@ fn main() {
             println!("| {sweep}°, M {mach} | {beta_cot:.3} | {label} | {row} |");
         }
     }
+}
+
+/// One table row's cells: the errors of C_Lα, H₀ (absolute), z_θ̇, m_θ̇ and
+/// m_θ̇ on m_q against eq (36)'s `e`.
+fn row(
+    s: &stability_core::lifting_surface::Solution,
+    e: &stability_core::supersonic::Derivatives,
+    sweep: f64,
+    mach: f64,
+    strips: usize,
+) -> String {
+    let want = [
+        e.lift_slope,
+        e.aerodynamic_centre,
+        e.damping.z_q + e.damping.z_wdot,
+        e.damping.m_q + e.damping.m_wdot,
+    ];
+    let d = s.derivatives(0.25, 0.0).unwrap();
+    let got = [
+        d.lift_slope,
+        d.aerodynamic_centre,
+        d.z_thetadot,
+        d.m_thetadot,
+    ];
+    if std::env::var("PARTS").is_ok() {
+        eprintln!(
+            "{sweep} {mach} {strips}: z_q {:+.2e} m_q {:+.2e} z_wdot {:+.2e} m_wdot {:+.2e} (m_q {:.4} m_thetadot {:.4})",
+            d.z_q / e.damping.z_q - 1.0,
+            d.m_q / e.damping.m_q - 1.0,
+            d.z_wdot / e.damping.z_wdot - 1.0,
+            d.m_wdot / e.damping.m_wdot - 1.0,
+            e.damping.m_q,
+            e.damping.m_q + e.damping.m_wdot
+        );
+    }
+    let mut cells: Vec<String> = got
+        .iter()
+        .zip(want)
+        .enumerate()
+        .map(|(k, (g, w))| {
+            let err = if k == 1 { g - w } else { (g - w) / w.abs() };
+            format!("{err:+.1e}")
+        })
+        .collect();
+    let scaled = (got[3] - want[3]) / e.damping.m_q.abs();
+    cells.push(format!("{scaled:+.1e}"));
+    cells.join(" | ")
 }

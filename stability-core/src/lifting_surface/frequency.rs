@@ -115,7 +115,7 @@ impl FrequencyTable {
 }
 
 /// The interpolation's stencil at `omega_bar`: the first of its four nodes,
-/// j, and the weights of nodes j … j + 3 — for NODES[0] < ω̄ ≤ NODES[last]
+/// j, and the weights of nodes j … j + 3 — for `NODES[0] < ω̄ ≤ NODES[last]`
 /// (`None` outside). Any solution tabled at [`NODES`] (a configuration's,
 /// `crate::configuration::lattice::cache`) is interpolated with it.
 pub fn stencil(omega_bar: f64) -> Option<(usize, [f64; 4])> {
