@@ -60,6 +60,7 @@ pub mod invalid;
 pub mod json;
 pub mod lifting_surface;
 pub mod linear;
+pub mod memo;
 pub mod mode_shape;
 pub mod modes;
 pub mod notation;

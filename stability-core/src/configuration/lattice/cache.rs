@@ -16,22 +16,15 @@ use super::ConfigurationLattice;
 use crate::geometry::Trapezoid;
 use crate::lifting_surface::derivatives::Extrapolate;
 use crate::lifting_surface::{Harmonic, LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, frequency};
-use std::collections::HashMap;
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Arc, OnceLock, PoisonError, RwLock};
+use crate::memo::Memo;
 
 /// Most entries.
 pub const CAPACITY: usize = 1 << 12;
 
-type Slot = Arc<OnceLock<Result<ConfigurationSolution, ConfigurationError>>>;
 type Key = (Vec<u64>, u64, u64);
 
-fn map() -> &'static RwLock<HashMap<Key, Slot>> {
-    static MAP: OnceLock<RwLock<HashMap<Key, Slot>>> = OnceLock::new();
-    MAP.get_or_init(Default::default)
-}
-
-static SOLVES: AtomicUsize = AtomicUsize::new(0);
+static SOLUTIONS: Memo<Key, Result<ConfigurationSolution, ConfigurationError>> =
+    Memo::new(CAPACITY);
 
 fn shape(t: &Trapezoid) -> [u64; 4] {
     [t.root_chord, t.tip_chord, t.semi_span, t.sweep_le].map(f64::to_bits)
@@ -70,23 +63,9 @@ pub fn solution(
         omega_bar
     };
     let key = (key(cfg), mach.to_bits(), omega_bar.to_bits());
-    let read = map().read().unwrap_or_else(PoisonError::into_inner);
-    if let Some(done) = read.get(&key).and_then(|slot| slot.get()) {
-        return done.clone();
-    }
-    drop(read);
-    let slot = {
-        let mut write = map().write().unwrap_or_else(PoisonError::into_inner);
-        if write.len() >= CAPACITY && !write.contains_key(&key) {
-            write.clear();
-        }
-        write.entry(key).or_default().clone()
-    };
-    slot.get_or_init(|| {
-        SOLVES.fetch_add(1, Ordering::SeqCst);
+    SOLUTIONS.get_or_solve(key, || {
         ConfigurationLattice::new(cfg)?.solve(mach, omega_bar)
     })
-    .clone()
 }
 
 /// As [`solution`], with the harmonic solution had as `harmonic` says:
@@ -136,14 +115,10 @@ fn scale(acc: &mut ConfigurationSolution, w: f64, add: Option<&ConfigurationSolu
 
 /// How many solves the cache has made.
 pub fn solves() -> usize {
-    SOLVES.load(Ordering::SeqCst)
+    SOLUTIONS.solves()
 }
 
 /// Empties the cache (and zeroes [`solves`]).
 pub fn clear() {
-    map()
-        .write()
-        .unwrap_or_else(PoisonError::into_inner)
-        .clear();
-    SOLVES.store(0, Ordering::SeqCst);
+    SOLUTIONS.clear();
 }

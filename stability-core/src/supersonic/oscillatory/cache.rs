@@ -7,22 +7,14 @@
 use super::{MachBoxError, MachBoxSpec, OMEGA_BAR_QUASI_STEADY, solve};
 use crate::geometry::Trapezoid;
 use crate::lifting_surface::Solution;
-use std::collections::HashMap;
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::{Arc, OnceLock, PoisonError, RwLock};
+use crate::memo::Memo;
 
 /// Most entries before the cache starts afresh.
 pub const CAPACITY: usize = 1 << 14;
 
 type Key = ([u64; 4], u64, u64);
-type Slot = Arc<OnceLock<Result<Solution, MachBoxError>>>;
 
-fn map() -> &'static RwLock<HashMap<Key, Slot>> {
-    static MAP: OnceLock<RwLock<HashMap<Key, Slot>>> = OnceLock::new();
-    MAP.get_or_init(Default::default)
-}
-
-static SOLVES: AtomicUsize = AtomicUsize::new(0);
+static SOLUTIONS: Memo<Key, Result<Solution, MachBoxError>> = Memo::new(CAPACITY);
 
 /// The solution of `wing` at (`mach`, `omega_bar`), from the cache or
 /// solved into it.
@@ -40,35 +32,17 @@ pub fn solution(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<Solution,
     ]
     .map(f64::to_bits);
     let key = (shape, mach.to_bits(), omega_bar.to_bits());
-    let read = map().read().unwrap_or_else(PoisonError::into_inner);
-    if let Some(done) = read.get(&key).and_then(|slot| slot.get()) {
-        return done.clone();
-    }
-    drop(read);
-    let slot = {
-        let mut write = map().write().unwrap_or_else(PoisonError::into_inner);
-        if write.len() >= CAPACITY && !write.contains_key(&key) {
-            write.clear();
-        }
-        write.entry(key).or_default().clone()
-    };
-    slot.get_or_init(|| {
-        SOLVES.fetch_add(1, Ordering::SeqCst);
+    SOLUTIONS.get_or_solve(key, || {
         solve(wing, mach, omega_bar, MachBoxSpec::for_wing(wing, mach))
     })
-    .clone()
 }
 
 /// How many solves the cache has made.
 pub fn solves() -> usize {
-    SOLVES.load(Ordering::SeqCst)
+    SOLUTIONS.solves()
 }
 
 /// Empties the cache (and zeroes [`solves`]).
 pub fn clear() {
-    map()
-        .write()
-        .unwrap_or_else(PoisonError::into_inner)
-        .clear();
-    SOLVES.store(0, Ordering::SeqCst);
+    SOLUTIONS.clear();
 }
