@@ -15,22 +15,11 @@
 //! by 8-point Gauss–Legendre. With supersonic trailing edges no point of
 //! the cone lies behind the trailing edge.
 
+use super::influence::GAUSS_8;
 use super::march::Pair;
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
 use std::f64::consts::PI;
-
-/// 8-point Gauss–Legendre on [−1, 1] (as [`super::influence`]).
-const GAUSS_8: [(f64, f64); 8] = [
-    (-0.960_289_856_497_536_2, 0.101_228_536_290_376_26),
-    (-0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
-    (-0.525_532_409_916_329, 0.313_706_645_877_887_3),
-    (-0.183_434_642_495_649_8, 0.362_683_783_378_362),
-    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
-    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
-    (0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
-    (0.960_289_856_497_536_2, 0.101_228_536_290_376_26),
-];
 
 /// The flow of one solve: β, σ, ν, and the rate's x̄ and c̄.
 #[derive(Debug, Clone, Copy)]

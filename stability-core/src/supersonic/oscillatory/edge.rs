@@ -31,21 +31,10 @@
 //! before (the kernel is smooth across a box there).
 
 use super::grid::Grid;
+use super::influence::GAUSS_8;
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
 use std::f64::consts::FRAC_PI_2;
-
-/// 8-point Gauss–Legendre on [−1, 1] (as [`super::influence`]).
-const GAUSS_8: [(f64, f64); 8] = [
-    (-0.960_289_856_497_536_2, 0.101_228_536_290_376_26),
-    (-0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
-    (-0.525_532_409_916_329, 0.313_706_645_877_887_3),
-    (-0.183_434_642_495_649_8, 0.362_683_783_378_362),
-    (0.183_434_642_495_649_8, 0.362_683_783_378_362),
-    (0.525_532_409_916_329, 0.313_706_645_877_887_3),
-    (0.796_666_477_413_626_7, 0.222_381_034_453_374_47),
-    (0.960_289_856_497_536_2, 0.101_228_536_290_376_26),
-];
 
 /// The wing's half-width η_w(ξ) = min(s, ξ cot Λ) (Λ > 0; the full span
 /// for an unswept leading edge).
