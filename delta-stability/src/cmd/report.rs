@@ -14,9 +14,8 @@ use crate::output::{AtomicDir, Refused};
 use crate::report::certainty::Certainty;
 use crate::report::conclusions::{self, Judged};
 use crate::report::manifest::{self, MANIFEST, Manifest};
-use crate::report::study::Assumed;
 use crate::report::summary::{self, Findings};
-use crate::report::tail::{self, TailNeeded};
+use crate::report::tail::TailNeeded;
 use crate::report::{Plate, SECTIONS, Study, html};
 
 /// The progress bar's and the page's title of §10 (ours).
@@ -143,7 +142,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
             // assumptions (Study::new's, Assumed::ours): begun beside the
             // study, whose sweeps leave a core idle between their parallel
             // parts
-            let sizing = scope.spawn(|| TailNeeded::over(Assumed::ours(), tail::machs()));
+            let sizing = scope.spawn(TailNeeded::ours);
             done = Some(contents(write, out, &bar, sizing)?);
             Ok(())
         })

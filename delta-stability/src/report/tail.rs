@@ -18,8 +18,8 @@
 //! meeting §8's one-cycle standard at every one of them, up to the wing's
 //! area.
 
+use super::Plate;
 use super::study::{Assumed, mach_fig};
-use super::{Plate, Study};
 use crate::plot::Series;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -79,9 +79,11 @@ pub struct TailNeeded {
 }
 
 impl TailNeeded {
-    /// Sized over [`machs`].
-    pub fn new(study: &Study) -> Result<TailNeeded, String> {
-        TailNeeded::over(study.assumed, machs())
+    /// The report's: sized over [`machs`] with the study's assumptions
+    /// ([`Assumed::ours`], as [`super::Study::new`] takes), so that it can run beside
+    /// the study.
+    pub fn ours() -> Result<TailNeeded, String> {
+        TailNeeded::over(Assumed::ours(), machs())
     }
 
     /// Sized over `ms`.
