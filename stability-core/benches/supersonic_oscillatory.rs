@@ -61,3 +61,16 @@ fn mach_box_default_subsonic_edge(bencher: Bencher) {
     bencher
         .bench_local(|| solve(black_box(&w), 1.6, black_box(0.5), MachBoxSpec::default()).unwrap());
 }
+
+/// Near M = 1 with a subsonic leading edge: the 45° delta at M = 1.05
+/// (β cot Λ = 0.32) on `MachBoxSpec::for_wing`'s grid (96 strips with 48,
+/// 298 rows: the diaphragm out to the apex's Mach cone, four times the
+/// wing's width), the grid the frequency iteration of
+/// `--damping lifting-surface-frequency` solves there.
+#[divan::bench(sample_count = 5)]
+fn mach_box_near_sonic_subsonic_edge(bencher: Bencher) {
+    let p = Planform::new(45f64.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();
+    let w = Trapezoid::from(&p);
+    let spec = MachBoxSpec::for_wing(&w, 1.05);
+    bencher.bench_local(|| solve(black_box(&w), 1.05, black_box(0.5), spec).unwrap());
+}

@@ -57,6 +57,13 @@ impl Influence {
         Influence { rows, c }
     }
 
+    /// C(m, 0..=m): row m of the table.
+    #[inline]
+    pub fn row(&self, m: usize) -> &[Complex64] {
+        let start = m * (self.rows + 1);
+        &self.c[start..=start + m]
+    }
+
     /// C(m, n) (zero outside the cone, |n| > m).
     #[inline]
     pub fn get(&self, m: usize, n: usize) -> Complex64 {

@@ -22,6 +22,7 @@ use super::grid::{Grid, Kind};
 use super::influence::Influence;
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
+use rayon::prelude::*;
 use std::f64::consts::PI;
 
 /// The two right-hand sides: unit incidence, unit rate (x − x̄)/c̄.
@@ -48,23 +49,40 @@ pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> V
         c00: table.get(0, 0),
     };
     let mut any_diaphragm = false;
+    // each row's columns of non-zero sources (empty: lo > hi)
+    let mut spans = vec![(usize::MAX, 0usize); grid.rows];
+    // each box's own potential and the earlier rows' sum, row by row
+    let mut ahead = vec![[zero; 2]; grid.columns];
     for i in 0..grid.rows {
+        let width = reach(grid, i);
+        let earlier = Earlier {
+            grid,
+            table,
+            source: &source,
+            spans: &spans,
+            near: &near,
+            wash: &wash,
+            any: any_diaphragm,
+        };
+        // independent across the row (earlier rows only): in parallel, in
+        // pieces of at least PARALLEL_PIECE boxes, once there are sources to
+        // sum (without, each box costs one quadrature: not worth a thread)
+        let row = &mut ahead[..width];
+        let at = |(j, slot): (usize, &mut [Pair; 2])| *slot = earlier.at(wing, flow, &edge, i, j);
+        if any_diaphragm {
+            row.par_iter_mut()
+                .with_min_len(PARALLEL_PIECE)
+                .enumerate()
+                .for_each(at);
+        } else {
+            row.iter_mut().enumerate().for_each(at);
+        }
         for pass in [Kind::Diaphragm, Kind::Wing] {
-            for j in 0..grid.columns {
+            for (j, &[own, before]) in ahead.iter().enumerate().take(width) {
                 let k = i * grid.columns + j;
                 let cell = grid.cells[k];
                 if cell.kind != pass {
                     continue;
-                }
-                let (x, y) = grid.centre(i, j);
-                let own = wing_potential(wing, flow, x, y);
-                let mut before = if any_diaphragm {
-                    upstream(grid, table, &source, i, j)
-                } else {
-                    zero
-                };
-                if edge.singular && any_diaphragm {
-                    edge.near_field(wing, grid, table, (&near, &wash), (i, j), &mut before);
                 }
                 let (q, s) = edge.weights(wing, grid, i, j, cell.fraction);
                 if edge.singular && edge.is_near(wing, grid, i, j) {
@@ -79,7 +97,6 @@ pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> V
                         };
                         source[k][r] = wash[k][r] * q;
                     }
-                    any_diaphragm |= source[k].iter().any(|s| s.norm() > 0.0);
                 } else {
                     let beside = neighbour_wash(grid, &wash, i, j);
                     wash[k] = beside;
@@ -88,11 +105,57 @@ pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> V
                         phi[k][r] = own[r] + (before[r] + beside[r] * s) * scale;
                     }
                 }
+                if source[k].iter().any(|s| s.norm() > 0.0) {
+                    spans[i] = (spans[i].0.min(j), spans[i].1.max(j));
+                }
             }
         }
+        any_diaphragm |= spans[i].0 <= spans[i].1;
     }
     phi
 }
+
+/// What the boxes of a row see of the rows before it.
+struct Earlier<'a> {
+    grid: &'a Grid,
+    table: &'a Influence,
+    source: &'a [Pair],
+    spans: &'a [(usize, usize)],
+    near: &'a [f64],
+    wash: &'a [Pair],
+    /// Whether any earlier row has a source.
+    any: bool,
+}
+
+impl Earlier<'_> {
+    /// [own, before] of box (i, j): the wing's own potential at its centre
+    /// and the earlier rows' sources' (zero for boxes neither on the wing
+    /// nor in the diaphragm).
+    fn at(&self, wing: &Trapezoid, flow: &Flow, edge: &EdgeBoxes, i: usize, j: usize) -> [Pair; 2] {
+        let zero = [Complex64::default(); 2];
+        let g = self.grid;
+        if !matches!(
+            g.cells[i * g.columns + j].kind,
+            Kind::Wing | Kind::Diaphragm
+        ) {
+            return [zero; 2];
+        }
+        let (x, y) = g.centre(i, j);
+        let own = wing_potential(wing, flow, x, y);
+        if !self.any {
+            return [own, zero];
+        }
+        let mut before = upstream(g, self.table, (self.source, &self.spans[..i]), i, j);
+        if edge.singular {
+            let field = (self.near, self.wash);
+            edge.near_field(wing, g, self.table, field, (i, j), &mut before);
+        }
+        [own, before]
+    }
+}
+
+/// The fewest boxes of a row one thread takes.
+const PARALLEL_PIECE: usize = 48;
 
 /// Rows back over which the near field's coefficients are the exact
 /// weighted ones ([`edge::coefficient`]).
@@ -198,28 +261,66 @@ fn neighbour_wash(grid: &Grid, wash: &[Pair], i: usize, j: usize) -> Pair {
     }
 }
 
+/// The columns 0..reach of row i whose boxes can act on the wing: a box's
+/// influence runs only down its aft Mach cone (|Δj| ≤ Δi), which from
+/// column j of row i reaches a wing strip (j′ < strips) by the last row
+/// only if j ≤ strips − 1 + (rows − 1 − i). The diaphragm beyond is never
+/// solved: its normalwash acts on nothing the loads use (exact pruning).
+fn reach(grid: &Grid, i: usize) -> usize {
+    (grid.strips + grid.rows - i).min(grid.columns)
+}
+
 /// Σ sources × C over the earlier rows, with the mirror image of each box
-/// (the half wing's symmetric motion).
-fn upstream(grid: &Grid, table: &Influence, source: &[Pair], i: usize, j: usize) -> Pair {
+/// (the half wing's symmetric motion); `spans` bounds each row's non-zero
+/// sources.
+fn upstream(
+    grid: &Grid,
+    table: &Influence,
+    (source, spans): (&[Pair], &[(usize, usize)]),
+    i: usize,
+    j: usize,
+) -> Pair {
     let mut sum = [Complex64::default(); 2];
-    for ip in 0..i {
+    for (ip, &(slo, shi)) in spans.iter().enumerate().take(i) {
+        if slo > shi {
+            continue;
+        }
         let m = i - ip;
+        let c = table.row(m);
         let row = &source[ip * grid.columns..(ip + 1) * grid.columns];
-        let lo = j.saturating_sub(m);
-        let hi = (j + m).min(grid.columns - 1);
-        for (jp, s) in row.iter().enumerate().take(hi + 1).skip(lo) {
-            let c = table.get(m, j.abs_diff(jp));
-            sum[0] += s[0] * c;
-            sum[1] += s[1] * c;
+        let (lo, hi) = (j.saturating_sub(m).max(slo), (j + m).min(shi));
+        // ahead and inboard of the receiver: C(m, j − j′), j′ ≤ j
+        if lo <= j.min(hi) {
+            let a = j.min(hi);
+            accumulate(&row[lo..=a], c[j - a..=j - lo].iter().rev(), &mut sum);
+        }
+        // outboard: C(m, j′ − j), j′ > j
+        let b = (j + 1).max(lo);
+        if b <= hi {
+            accumulate(&row[b..=hi], c[b - j..=hi - j].iter(), &mut sum);
         }
         // mirror images at −j′, j′ ≥ 1: offset j + j′ ≤ m
-        for (jp, s) in row.iter().enumerate().take(m.saturating_sub(j) + 1).skip(1) {
-            let c = table.get(m, j + jp);
-            sum[0] += s[0] * c;
-            sum[1] += s[1] * c;
+        let (mlo, mhi) = (slo.max(1), (m.saturating_sub(j)).min(shi));
+        if mlo <= mhi {
+            accumulate(&row[mlo..=mhi], c[j + mlo..=j + mhi].iter(), &mut sum);
         }
     }
     sum
+}
+
+/// sum += Σ sources × coefficients, term by term.
+#[inline]
+fn accumulate<'a>(
+    sources: &[Pair],
+    coefficients: impl Iterator<Item = &'a Complex64>,
+    sum: &mut Pair,
+) {
+    let (mut s0, mut s1) = (sum[0], sum[1]);
+    for (s, &c) in sources.iter().zip(coefficients) {
+        s0 += s[0] * c;
+        s1 += s[1] * c;
+    }
+    *sum = [s0, s1];
 }
 
 /// C_L and C_m (about the M.A.C.'s leading edge, on c̄) of the two
