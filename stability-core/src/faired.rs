@@ -14,23 +14,26 @@
 //!
 //! The bands are where the curve is a guess: the report draws them shaded.
 //!
-//! # Narrowing the joins (not done)
-//! [`crate::lifting_surface::mach_range`] now gives one lifting-surface
-//! solution at every M from 0 to 3 at ω̄ ≥ 0.3 near M = 1. Using it here
-//! would take: the damping from it through 0.9 < M ≤ 1 instead of the join
-//! to Mangler's (39)–(40), the short period's ω̄ iterated through
-//! [`Harmonic::Interpolated`] (its refined tables exist,
-//! [`cache::near_sonic`]); a fallback below ω̄ = 0.3 near M = 1 (Mangler's
-//! theory, as now); the lift slope and aerodynamic centre, which are
-//! quasi-steady, kept on the present join between 0.99 and the Mach box
-//! (`mach_range::steady` refuses there); and above M = 1 the Mach box only
-//! where the leading edge is supersonic or β cot Λ ≥ 0.72 — below that its
-//! diaphragm drifts by 1–14 % and (36) is the better number. The measured
-//! step between the two sides at M = 1 (≈ 10 % of C_Lα on the A = 2
-//! rectangle at ω̄ = 0.6, `docs/lattice-near-sonic.md`, "Across M = 1") would
-//! then be a discontinuity of the default model, and its cost 2–3 s per
-//! wing near M = 1 (the anchor lattices) against milliseconds: both would
-//! change the report's numbers and runtime, which is why it is not done.
+//! # Narrowing the joins (not done yet)
+//! [`crate::lifting_surface::mach_range`] gives one lifting-surface
+//! solution at every M from 0 to 3 (ω̄ ≥ 0.3 near M = 1), and
+//! `--damping lifting-surface-frequency` already iterates the short
+//! period's ω̄ on it. Making it this model's damping needs: the lift
+//! slope and aerodynamic centre, which are quasi-steady, joined between
+//! M = 0.99 and the Mach box (`mach_range::steady` refuses there: the
+//! quasi-steady α̇ derivatives are infinite at M = 1); a fallback below
+//! ω̄ = 0.3 near M = 1 (Mangler's theory, as now); and the Mach box close
+//! enough to M = 1 for a join narrower than ±0.03. The last is what holds
+//! it: the Mach box's subsonic edge is verified down to β cot Λ = 0.3
+//! (M = 1.044 on the 45° delta), and at β cot Λ = 0.25 (M = 1.03) its
+//! derivatives jump by ±5 % between ω̄ = 0.45 and 0.7, the short period's
+//! range (`docs/supersonic-oscillatory.md`, "Near M = 1 in frequency").
+//! The cost is no longer what holds it: with the march's exact pruning and
+//! its rows in parallel a near-sonic Mach box solve takes 0.75 s (was
+//! 5.5 s), and `sweep --damping lifting-surface-frequency` over
+//! M = 0.5–2 (31 points) takes 11 s on the 45° delta and 22 s on the 60°
+//! (2 cores) — still a multiple of the whole report's 22 s, so the
+//! report's sweeps would need the Mach box tabulated in Mach number too.
 
 use crate::aero::{TheoryCoefficients, Value, hermite, monotone_slopes};
 use crate::damping::{

@@ -122,7 +122,7 @@ pub fn solution(
     }
     let first = first_mach_box_mach(wing);
     if mach >= first {
-        return supersonic(wing, mach, omega_bar);
+        return supersonic(wing, mach, omega_bar, harmonic);
     }
     if mach > SONIC_ANCHORS[0] && omega_bar < SONIC_OMEGA_BAR_MIN {
         return Err(LiftingSurfaceError::SonicFrequency {
@@ -136,7 +136,7 @@ pub fn solution(
         return Ok(plain(s, Method::NearSonic));
     }
     let a = cache::near_sonic(wing, 1.0, omega_bar, harmonic)?;
-    let b = supersonic(wing, first, omega_bar)?.solution;
+    let b = supersonic(wing, first, omega_bar, harmonic)?.solution;
     let t = (mach - 1.0) / (first - 1.0);
     let s = Solution {
         mach,
@@ -152,10 +152,17 @@ pub fn solution(
     })
 }
 
-/// The Mach box's solution (M > 1), warned where the leading edge is
+/// The Mach box's solution (M > 1), solved at ω̄ or interpolated between
+/// the frequency nodes as `harmonic` says
+/// ([`mach_box::cache::solution_with`]), warned where the leading edge is
 /// subsonic beyond the verified β cot Λ.
-fn supersonic(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<AtMach, LiftingSurfaceError> {
-    let s = mach_box::cache::solution(wing, mach, omega_bar)?;
+fn supersonic(
+    wing: &Trapezoid,
+    mach: f64,
+    omega_bar: f64,
+    harmonic: Harmonic,
+) -> Result<AtMach, LiftingSurfaceError> {
+    let s = mach_box::cache::solution_with(wing, mach, omega_bar, harmonic)?;
     let beta_cot = (mach * mach - 1.0).sqrt() / wing.sweep_le.tan();
     let doubtful = beta_cot < MACH_BOX_VERIFIED_BETA_COT
         || (MACH_BOX_NEAR_SONIC_EDGE..1.0).contains(&beta_cot);
