@@ -28,7 +28,7 @@ fn main() {
         println!("{name}: Mach box from M = {first:.5}");
         println!("| M | method | C_Lα | H₀ | z_θ̇ | m_θ̇ | z_ẇ | m_ẇ |");
         println!("|---|---|---|---|---|---|---|---|");
-        for m in [0.98, 0.99, 1.0, first, 1.02, 1.05, 1.1, 1.2, 1.3] {
+        for m in [0.98, 0.99, 1.0, first, 1.02, 1.03, 1.05, 1.1, 1.2, 1.3] {
             match solution(&wing, m, 0.6, Harmonic::Direct) {
                 Ok(at) => {
                     let s = at.solution;
