@@ -18,22 +18,23 @@
 //! [`crate::lifting_surface::mach_range`] gives one lifting-surface
 //! solution at every M from 0 to 3 (ω̄ ≥ 0.3 near M = 1), and
 //! `--damping lifting-surface-frequency` already iterates the short
-//! period's ω̄ on it. Making it this model's damping needs: the lift
-//! slope and aerodynamic centre, which are quasi-steady, joined between
-//! M = 0.99 and the Mach box (`mach_range::steady` refuses there: the
-//! quasi-steady α̇ derivatives are infinite at M = 1); a fallback below
-//! ω̄ = 0.3 near M = 1 (Mangler's theory, as now); and the Mach box close
-//! enough to M = 1 for a join narrower than ±0.03. The last is what holds
-//! it: the Mach box's subsonic edge is verified down to β cot Λ = 0.3
-//! (M = 1.044 on the 45° delta), and at β cot Λ = 0.25 (M = 1.03) its
-//! derivatives jump by ±5 % between ω̄ = 0.45 and 0.7, the short period's
-//! range (`docs/supersonic-oscillatory.md`, "Near M = 1 in frequency").
-//! The cost is no longer what holds it: with the march's exact pruning and
-//! its rows in parallel a near-sonic Mach box solve takes 0.75 s (was
-//! 5.5 s), and `sweep --damping lifting-surface-frequency` over
-//! M = 0.5–2 (31 points) takes 11 s on the 45° delta and 22 s on the 60°
-//! (2 cores) — still a multiple of the whole report's 22 s, so the
-//! report's sweeps would need the Mach box tabulated in Mach number too.
+//! period's ω̄ on it. On the note's deltas it is now one curve through
+//! M = 1 at the short period's frequencies: the sonic point and the Mach
+//! box's first Mach number (1.0055 on the 45° delta, 1.0164 on the 60°)
+//! agree within 1.23 % of C_Lα at ω̄ = 0.3 and 0.6, once the Mach box's
+//! quadrature of the wing's own potential followed the kernel's phases
+//! (`supersonic::oscillatory::direct::PHASE_PER_PIECE`;
+//! `docs/lattice-near-sonic.md`, "The note's deltas across M = 1"). Making
+//! it this model's damping still needs: the lift slope and aerodynamic
+//! centre, which are quasi-steady, joined between M = 0.99 and the Mach
+//! box (`mach_range::steady` refuses there: the quasi-steady α̇
+//! derivatives are infinite at M = 1); a fallback below ω̄ = 0.3 near
+//! M = 1 (Mangler's theory, as now); and the cost. With the march's exact
+//! pruning and its rows in parallel a near-sonic Mach box solve takes
+//! 0.85 s (was 5.5 s), and `sweep --damping lifting-surface-frequency`
+//! over M = 0.5–2 (31 points) takes 11 s on the 45° delta and 22 s on the
+//! 60° (2 cores) — a multiple of the whole report's 22 s, so the report's
+//! sweeps would need the Mach box tabulated in Mach number too.
 
 use crate::aero::{TheoryCoefficients, Value, hermite, monotone_slopes};
 use crate::damping::{

@@ -45,18 +45,18 @@ pub fn solution(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<Solution,
 /// Below this β = √(M² − 1) [`solution_with`] solves at every ω̄ instead
 /// of interpolating: the Mach box's frequency dependence sharpens towards
 /// M = 1 (its phases σx = κM²x/β²), and between the nodes the cubic was
-/// measured 5·10⁻³–2·10⁻² of C_Lα off at M = 1.05 (β = 0.32) on the note's
-/// deltas against 3·10⁻⁴ at M = 1.1 (β = 0.46)
+/// measured 3.9·10⁻³ of C_Lα off at M = 1.03 (β = 0.25, ω̄ = 0.12) on the
+/// 45° delta against 6.3·10⁻⁴ at M = 1.05 (β = 0.32)
 /// (`tests/supersonic_oscillatory_cache.rs`).
-pub const INTERPOLATED_FROM_BETA: f64 = 0.45;
+pub const INTERPOLATED_FROM_BETA: f64 = 0.3;
 
 /// The solution at (`mach`, `omega_bar`) solved there
 /// ([`Harmonic::Direct`], [`solution`]) or interpolated
 /// ([`Harmonic::Interpolated`], from β ≥ [`INTERPOLATED_FROM_BETA`]): the
 /// piecewise-cubic Lagrange interpolation of the four [`frequency::NODES`]
 /// around ω̄ ([`frequency::stencil`]), each node solved once; outside the
-/// nodes (ω̄ ≤ 0.001 or > 4) solved there. Within 5·10⁻⁴ of C_Lα of the
-/// direct solve on the note's deltas at M = 1.1–2.
+/// nodes (ω̄ ≤ 0.001 or > 4) solved there. Within 10⁻³ of C_Lα of the
+/// direct solve on the note's deltas at M = 1.05–2.
 pub fn solution_with(
     wing: &Trapezoid,
     mach: f64,
