@@ -443,9 +443,11 @@ pub enum Source {
     Method,
     /// The user's table: wins over every other source.
     Table(Table),
-    /// The doublet lattice's steady solution ([`lifting_surface_steady`]),
-    /// 0 ≤ M < 1 (an error at and above M = 1): for the lift slope and the
-    /// aerodynamic centre, with their exact Mach derivatives. It gives no
+    /// The lifting surface's quasi-steady solution
+    /// ([`lifting_surface_coefficients`]), 0 ≤ M ≤ 3 (the doublet lattice
+    /// below M = 1, the Mach box above, a stated join through the sonic
+    /// point between 0.99 and the Mach box): for the lift slope and the
+    /// aerodynamic centre, with their Mach derivatives. It gives no
     /// drag: for C_D0 and K it means [`Source::Default`] (K = 1/a with the
     /// lattice's a).
     LiftingSurface,
@@ -506,7 +508,8 @@ impl AeroModelName {
 /// the Mach box with the Mach derivatives by a central difference of
 /// ±[`mach_range::MACH_BOX_STEP`]. Between M = 0.99 and the Mach
 /// box's first Mach number an error (the quasi-steady α̇ derivatives are
-/// infinite at M = 1). The Mach box's warning (a subsonic leading edge
+/// infinite at M = 1; [`lifting_surface_coefficients`] joins the lift
+/// slope and aerodynamic centre across). The Mach box's warning (a subsonic leading edge
 /// beyond its verified range) is not carried: see the damping theory's.
 pub fn lifting_surface_steady(p: &Planform, m: f64) -> Result<Steady, AeroError> {
     let wing = cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)
@@ -514,6 +517,21 @@ pub fn lifting_surface_steady(p: &Planform, m: f64) -> Result<Steady, AeroError>
     mach_range::steady(&wing, m)
         .map(|(s, _)| s)
         .map_err(AeroError::LiftingSurface)
+}
+
+/// The lattice's (or the Mach box's) quasi-steady lift slope and
+/// aerodynamic centre with their Mach derivatives at any M in [0, 3]
+/// ([`mach_range::coefficients`]): [`lifting_surface_steady`]'s, and
+/// between M = 0.99 and the Mach box's first Mach number the stated join
+/// through linear theory's sonic point (slender-wing theory, the note's
+/// (37)).
+pub fn lifting_surface_coefficients(
+    p: &Planform,
+    m: f64,
+) -> Result<mach_range::SteadyCoefficients, AeroError> {
+    let wing = cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)
+        .map_err(AeroError::LiftingSurface)?;
+    mach_range::coefficients(&wing, m).map_err(AeroError::LiftingSurface)
 }
 
 /// The aerodynamic model: one source per coefficient.
@@ -647,8 +665,9 @@ fn method(f: fn(&Planform, f64) -> Value, p: &Planform, m: f64) -> Result<Value,
 }
 
 /// Which of the lattice's steady values a coefficient is, with its Mach
-/// derivative ([`Steady::lift_slope`], [`Steady::aerodynamic_centre`]).
-type SteadyValue = fn(&Steady) -> (f64, f64);
+/// derivative (the lift slope or the aerodynamic centre of
+/// [`mach_range::SteadyCoefficients`]).
+type SteadyValue = fn(&mach_range::SteadyCoefficients) -> (f64, f64);
 
 /// The rule of precedence for one coefficient: the table; else the
 /// lattice, under [`Source::LiftingSurface`] for a coefficient it gives
@@ -671,7 +690,7 @@ fn resolve(
             Ok((t.at(m)?, origin))
         }
         (Source::LiftingSurface, _, Some((p, of))) => {
-            let (v, d) = of(&lifting_surface_steady(p, m)?);
+            let (v, d) = of(&lifting_surface_coefficients(p, m)?);
             Ok((Value::new(v, d), Origin::LiftingSurface))
         }
         (Source::Default, Some((v, model)), _) => Ok((v, Origin::DampingModel(model))),
@@ -779,14 +798,14 @@ impl AeroModel {
             &self.lift_slope,
             m,
             own.map(|t| (t.lift_slope, t.model)),
-            Some((p, Steady::lift_slope)),
+            Some((p, |c| c.lift_slope)),
             || method(defaults::lift_slope, p, m),
         )?;
         let (aerodynamic_centre, ac) = resolve(
             &self.aerodynamic_centre,
             m,
             own.map(|t| (t.aerodynamic_centre, t.model)),
-            Some((p, Steady::aerodynamic_centre)),
+            Some((p, |c| c.aerodynamic_centre)),
             || method(defaults::aerodynamic_centre, p, m),
         )?;
         let (zero_lift_drag, cd0) = resolve(&self.zero_lift_drag, m, None, None, || {

@@ -24,12 +24,12 @@
 //! agree within 1.23 % of C_Lα at ω̄ = 0.3 and 0.6, once the Mach box's
 //! quadrature of the wing's own potential followed the kernel's phases
 //! (`supersonic::oscillatory::direct::PHASE_PER_PIECE`;
-//! `docs/lattice-near-sonic.md`, "The note's deltas across M = 1"). Making
-//! it this model's damping still needs: the lift slope and aerodynamic
-//! centre, which are quasi-steady, joined between M = 0.99 and the Mach
-//! box (`mach_range::steady` refuses there: the quasi-steady α̇
-//! derivatives are infinite at M = 1); a fallback below ω̄ = 0.3 near
-//! M = 1 (Mangler's theory, as now); and the cost. With the march's exact
+//! `docs/lattice-near-sonic.md`, "The note's deltas across M = 1"); the
+//! quasi-steady lift slope and aerodynamic centre are joined across the
+//! band 0.99 < M < M_b through linear theory's sonic point
+//! ([`crate::lifting_surface::mach_range::coefficients`]). Making it this
+//! model's damping still needs a fallback below ω̄ = 0.3 near M = 1
+//! (Mangler's theory, as now) and the cost. With the march's exact
 //! pruning and its rows in parallel a near-sonic Mach box solve takes
 //! 0.85 s (was 5.5 s), and `sweep --damping lifting-surface-frequency`
 //! over M = 0.5–2 (31 points) takes 11 s on the 45° delta and 22 s on the

@@ -5,14 +5,16 @@
 //! centre and their Mach derivatives meet the exact 4/β of a delta with
 //! supersonic leading edges; the sonic band refuses small ω̄ with what to
 //! give; the bridge between M = 1 and the Mach box is the line between them;
-//! the subsonic-leading-edge warning; and the approach to M = 1 from both
+//! the steady coefficients' join through the sonic point; the
+//! subsonic-leading-edge warning; and the approach to M = 1 from both
 //! sides (`docs/lattice-near-sonic.md`, "Across M = 1").
 
 use stability_core::aero::lifting_surface_steady;
 use stability_core::damping::{DampingError, Theory, WingInput, damping_derivatives};
 use stability_core::geometry::{Planform, Size, Trapezoid};
 use stability_core::lifting_surface::mach_range::{
-    MACH_BOX_STEP, MACH_BOX_VERIFIED_BETA_COT, Method, first_mach_box_mach, solution, steady,
+    MACH_BOX_STEP, MACH_BOX_VERIFIED_BETA_COT, Method, coefficients, first_mach_box_mach, solution,
+    sonic_steady, steady,
 };
 use stability_core::lifting_surface::{Harmonic, LiftingSurfaceError, Solution, cache};
 use stability_core::supersonic::oscillatory::{self as mach_box, MachBoxSpec};
@@ -254,4 +256,56 @@ fn across_mach_one_the_mach_box_starts_at_the_slender_limit() {
     for v in six(&a).into_iter().chain(six(&b)) {
         assert!(v.is_finite());
     }
+}
+
+/// The quasi-steady lift slope and aerodynamic centre across M = 1
+/// (`mach_range::coefficients`): at M = 1 linear theory's sonic point,
+/// slender-wing theory (C_Lα = πA/2, the centre at ⅔ of the tip's
+/// leading-edge station — the deltas' ⅔ root chord, H₀ = ½), which the
+/// Mach box at its first Mach number approaches from above M = 1 (within
+/// 1.7 % in C_Lα and 4·10⁻⁴ in H₀ on the note's deltas: an independent
+/// route to the anchor); equal to `steady` at both ends of the join, and
+/// monotone on each side (no overshoot of its ends).
+#[test]
+fn the_steady_coefficients_are_joined_through_the_sonic_point() {
+    for deg in [45.0, 60.0] {
+        let p = planform(deg);
+        let w = shape(&p);
+        let (a1, h1) = sonic_steady(&w).unwrap();
+        assert!((a1 / (PI * p.aspect_ratio() / 2.0) - 1.0).abs() < 1e-12);
+        assert!((h1 - 0.5).abs() < 1e-12, "{h1}");
+        let at = |m: f64| coefficients(&w, m).unwrap();
+        let sonic = at(1.0);
+        assert!(sonic.joined);
+        assert_eq!((sonic.lift_slope.0, sonic.aerodynamic_centre.0), (a1, h1));
+        // the Mach box just above M = 1 approaches the same limit
+        let first = first_mach_box_mach(&w);
+        let above = at(first);
+        assert!(!above.joined);
+        println!(
+            "{deg}°: sonic C_Lα {a1:.4}, H₀ {h1:.4}; Mach box at M = {first:.4}: {:.4}, {:.4}",
+            above.lift_slope.0, above.aerodynamic_centre.0
+        );
+        assert!((above.lift_slope.0 / a1 - 1.0).abs() < 0.02);
+        assert!((above.aerodynamic_centre.0 - h1).abs() < 1e-3);
+        // the ends: steady's values
+        let below = steady(&w, 0.99).unwrap().0;
+        let inside = at(0.99 + 1e-9);
+        assert!(inside.joined);
+        assert!((inside.lift_slope.0 - below.lift_slope().0).abs() < 1e-6);
+        let just = at(first - 1e-9);
+        assert!((just.lift_slope.0 - above.lift_slope.0).abs() < 1e-6);
+        // monotone: rising to the sonic point, falling after (the deltas)
+        let ms: Vec<f64> = (0..=20).map(|k| 0.99 + 0.0005 * k as f64).collect();
+        let rise: Vec<f64> = ms.iter().map(|&m| at(m).lift_slope.0).collect();
+        assert!(rise.windows(2).all(|p| p[1] >= p[0]), "{rise:?}");
+        let fall: Vec<f64> = (0..=10)
+            .map(|k| at(1.0 + (first - 1.0) * k as f64 / 10.0).lift_slope.0)
+            .collect();
+        assert!(fall.windows(2).all(|p| p[1] <= p[0]), "{fall:?}");
+        assert!(fall.iter().all(|&v| v <= a1 && v >= above.lift_slope.0));
+    }
+    // a forward-swept leading edge has no sonic point (sections not convex)
+    let w = cache::unit_wing(4.0, 0.5, (-20f64).to_radians()).unwrap();
+    assert_eq!(sonic_steady(&w), None);
 }

@@ -26,10 +26,14 @@
 //! [`steady`] gives the quasi-steady solution with its Mach derivatives
 //! (for eqs 27–29): the lattice's exact ones up to M = 0.99, a central
 //! difference of the Mach box (step [`MACH_BOX_STEP`]) above M = 1.
+//! [`coefficients`] gives its lift slope and aerodynamic centre at every
+//! M, joined between M = 0.99 and [`first_mach_box_mach`] through the
+//! sonic point of linear theory, slender-wing theory ([`sonic_steady`]).
 
 use super::derivatives::Extrapolate;
 use super::near_sonic::{NEAR_SONIC_FROM, SONIC_ANCHORS, SONIC_OMEGA_BAR_MIN};
 use super::{Harmonic, LiftingSurfaceError, Solution, Steady, Trapezoid, cache};
+use crate::aero::{hermite, monotone_slopes};
 use crate::supersonic::oscillatory::{self as mach_box, MAX_ROWS};
 use crate::warnings::Warning;
 
@@ -226,4 +230,113 @@ pub fn steady(
         d_moment_q: d(a.moment_q, b.moment_q),
     };
     Ok((s, at.warning))
+}
+
+/// The quasi-steady lift slope C_Lα and aerodynamic centre H₀ (fraction
+/// of the M.A.C. aft of its leading edge), each with dX/dM, and whether
+/// they come from the join across M = 1 ([`coefficients`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteadyCoefficients {
+    pub lift_slope: (f64, f64),
+    pub aerodynamic_centre: (f64, f64),
+    pub joined: bool,
+}
+
+impl From<&Steady> for SteadyCoefficients {
+    fn from(s: &Steady) -> SteadyCoefficients {
+        SteadyCoefficients {
+            lift_slope: s.lift_slope(),
+            aerodynamic_centre: s.aerodynamic_centre(),
+            joined: false,
+        }
+    }
+}
+
+/// The lift slope and aerodynamic centre of linear theory at M = 1:
+/// there the linearised equation loses its streamwise term and every wing
+/// is a slender wing (R.T. Jones, NACA Rep. 835, 1946; the note's (37)):
+/// C_Lα = πA/2, the lift growing with the square of the local span, so
+/// that with a straight leading edge of sweep Λ ≥ 0 up to the tip's
+/// leading corner x_t = s·tan Λ the centre lies at (2/3)x_t from the apex
+/// (at the apex for Λ = 0). `None` for a forward-swept leading edge, whose
+/// sections are not convex.
+pub fn sonic_steady(wing: &Trapezoid) -> Option<(f64, f64)> {
+    if wing.sweep_le.is_nan() || wing.sweep_le < 0.0 {
+        return None;
+    }
+    let aspect_ratio = 4.0 * wing.semi_span * wing.semi_span / wing.area();
+    let x_ac = 2.0 / 3.0 * wing.semi_span * wing.sweep_le.tan();
+    let h0 = (x_ac - wing.x_mac()) / wing.mac();
+    Some((std::f64::consts::PI * aspect_ratio / 2.0, h0))
+}
+
+/// The quasi-steady lift slope and aerodynamic centre at any M in
+/// [0, [`MACH_RANGE_MAX`]]: [`steady`]'s, and between M = 0.99
+/// ([`SONIC_ANCHORS`]`[0]`) and [`first_mach_box_mach`] (0.0155 of Mach
+/// number on the 45° delta, 0.0264 on the 60°), where the quasi-steady α̇
+/// derivatives are infinite and `steady` refuses, a join: on each of
+/// [0.99, 1] and [1, M_b] the cubic through the ends' values and slopes
+/// (the lattice's exact one at 0.99, the Mach box's difference at M_b),
+/// through the sonic point [`sonic_steady`] at M = 1, the slopes limited as
+/// Fritsch and Carlson's so that no piece overshoots its ends (a peak at
+/// M = 1 gets slope zero there). Without a sonic point (forward sweep) one
+/// cubic from 0.99 to M_b. The join is stated, not a theory: `joined`.
+pub fn coefficients(
+    wing: &Trapezoid,
+    mach: f64,
+) -> Result<SteadyCoefficients, LiftingSurfaceError> {
+    match steady(wing, mach) {
+        Ok((s, _)) => Ok(SteadyCoefficients::from(&s)),
+        Err(LiftingSurfaceError::SonicSteady { .. }) => sonic_join(wing, mach),
+        Err(e) => Err(e),
+    }
+}
+
+/// [`coefficients`] in the band (0.99, M_b).
+fn sonic_join(wing: &Trapezoid, mach: f64) -> Result<SteadyCoefficients, LiftingSurfaceError> {
+    let (m0, m1) = (SONIC_ANCHORS[0], first_mach_box_mach(wing));
+    let (lo, hi) = (steady(wing, m0)?.0, steady(wing, m1)?.0);
+    let ends = |f: fn(&Steady) -> (f64, f64)| {
+        let ((y0, d0), (y1, d1)) = (f(&lo), f(&hi));
+        [(m0, y0, d0), (m1, y1, d1)]
+    };
+    let sonic = sonic_steady(wing);
+    let lift = join(ends(Steady::lift_slope), sonic.map(|s| s.0), mach);
+    let centre = join(ends(Steady::aerodynamic_centre), sonic.map(|s| s.1), mach);
+    Ok(SteadyCoefficients {
+        lift_slope: lift,
+        aerodynamic_centre: centre,
+        joined: true,
+    })
+}
+
+/// The monotone piecewise cubic at `mach` through the ends (m₀, y₀, y₀′)
+/// and (m₁, y₁, y₁′) and the sonic value at M = 1 if any: (value, slope).
+fn join(
+    [(m0, y0, d0), (m1, y1, d1)]: [(f64, f64, f64); 2],
+    sonic: Option<f64>,
+    mach: f64,
+) -> (f64, f64) {
+    let piece = |(xa, ya, da): (f64, f64, f64), (xb, yb, db): (f64, f64, f64)| {
+        let secant = (yb - ya) / (xb - xa);
+        let (da, db) = monotone_slopes(secant, da, db);
+        let v = hermite((xa, ya, da), (xb, yb, db), mach);
+        (v.value, v.d_mach)
+    };
+    let Some(ys) = sonic else {
+        return piece((m0, y0, d0), (m1, y1, d1));
+    };
+    // the slope at M = 1: zero at an extremum, else the harmonic mean of
+    // the two secants (Fritsch & Butland)
+    let (s0, s1) = ((ys - y0) / (1.0 - m0), (y1 - ys) / (m1 - 1.0));
+    let ds = if s0 * s1 > 0.0 {
+        2.0 * s0 * s1 / (s0 + s1)
+    } else {
+        0.0
+    };
+    if mach <= 1.0 {
+        piece((m0, y0, d0), (1.0, ys, ds))
+    } else {
+        piece((1.0, ys, ds), (m1, y1, d1))
+    }
 }
