@@ -481,10 +481,10 @@ impl AeroModelName {
             AeroModelName::LiftingSurface => &Row {
                 name: "lifting-surface",
                 equations: "",
-                summary: "lift slope and aerodynamic centre from the doublet lattice, with exact Mach derivatives",
-                validity: "subsonic only (M ≥ 1 is an error)",
+                summary: "lift slope and aerodynamic centre from the lifting surface: the doublet lattice below M = 1 (exact Mach derivatives), the Mach box above, joined through the sonic point (slender-wing theory) between M = 0.99 and the Mach box (docs/lattice-near-sonic.md)",
+                validity: "0 ≤ M ≤ 3",
                 supplies: "the lift slope and aerodynamic centre with their Mach derivatives (eqs 25–29)",
-                source: "the doublet lattice of `lifting_surface` (Albano & Rodden 1969)",
+                source: "the doublet lattice of `lifting_surface` (Albano & Rodden 1969), the Mach box (Pines, Dugundji & Neuringer 1955), slender-wing theory at M = 1 (Jones, NACA Rep. 835)",
             },
         }
     }
@@ -601,7 +601,7 @@ impl Origin {
             Origin::Datcom => "DATCOM's output (--datcom, [model] datcom)".to_string(),
             Origin::Method => "the default method (docs/models.md)".to_string(),
             Origin::DampingModel(name) => format!("the damping model `{name}`'s own theory"),
-            Origin::LiftingSurface => "the doublet lattice (--aero lifting-surface)".to_string(),
+            Origin::LiftingSurface => "the lifting surface (--aero lifting-surface)".to_string(),
         }
     }
 }
