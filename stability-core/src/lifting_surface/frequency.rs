@@ -106,10 +106,8 @@ impl FrequencyTable {
                 ..self.node(0)?
             });
         }
-        let (j, w) = stencil(omega_bar).ok_or(LiftingSurfaceError::Frequency(omega_bar))?;
-        let out = self.node(j)?.combine(&self.node(j + 1)?, w[0], w[1]);
-        let out = out.combine(&self.node(j + 2)?, 1.0, w[2]);
-        let out = out.combine(&self.node(j + 3)?, 1.0, w[3]);
+        let at = stencil(omega_bar).ok_or(LiftingSurfaceError::Frequency(omega_bar))?;
+        let out = combine_stencil(at, |k| self.node(k))?;
         Ok(Solution { omega_bar, ..out })
     }
 }
@@ -126,6 +124,20 @@ pub fn stencil(omega_bar: f64) -> Option<(usize, [f64; 4])> {
     let i = NODES.partition_point(|&w| w < omega_bar) - 1;
     let j = i.saturating_sub(1).min(NODES.len() - 4);
     Some((j, [0, 1, 2, 3].map(|m| lagrange(j, m, omega_bar))))
+}
+
+/// Σₘ wₘ·node(j + m): the solutions at the stencil's four nodes
+/// ([`stencil`]) combined with its weights; `node(k)` gives the solution
+/// at `NODES[k]` (the lattice's table, the Mach box's cache).
+pub(crate) fn combine_stencil<E>(
+    (j, w): (usize, [f64; 4]),
+    node: impl Fn(usize) -> Result<Solution, E>,
+) -> Result<Solution, E> {
+    let mut out = node(j)?.combine(&node(j + 1)?, w[0], w[1]);
+    for (m, &wm) in w.iter().enumerate().skip(2) {
+        out = out.combine(&node(j + m)?, 1.0, wm);
+    }
+    Ok(out)
 }
 
 /// The weight of node j + m in the cubic through nodes j … j + 3 at x.

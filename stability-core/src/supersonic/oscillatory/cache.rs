@@ -10,7 +10,6 @@
 
 use super::{MachBoxError, MachBoxSpec, OMEGA_BAR_QUASI_STEADY, solve};
 use crate::geometry::Trapezoid;
-use crate::lifting_surface::derivatives::Extrapolate;
 use crate::lifting_surface::{Harmonic, Solution, frequency};
 use crate::memo::Memo;
 
@@ -68,14 +67,10 @@ pub fn solution_with(
         Harmonic::Interpolated if interpolable => frequency::stencil(omega_bar),
         _ => None,
     };
-    let Some((j, w)) = stencil else {
+    let Some(at) = stencil else {
         return solution(wing, mach, omega_bar);
     };
-    let node = |m: usize| solution(wing, mach, frequency::NODES[j + m]);
-    let mut out = node(0)?.combine(&node(1)?, w[0], w[1]);
-    for (m, &wm) in w.iter().enumerate().skip(2) {
-        out = out.combine(&node(m)?, 1.0, wm);
-    }
+    let out = frequency::combine_stencil(at, |k| solution(wing, mach, frequency::NODES[k]))?;
     Ok(Solution { omega_bar, ..out })
 }
 
