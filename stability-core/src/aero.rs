@@ -505,8 +505,8 @@ impl AeroModelName {
 ///
 /// At any M in [0, 3] ([`mach_range::steady`]): the lattice's exact Mach
 /// derivatives up to M = 0.99 (the refined lattice above 0.9); above M = 1
-/// the Mach box with the Mach derivatives by a central difference of
-/// ±[`mach_range::MACH_BOX_STEP`]. Between M = 0.99 and the Mach
+/// the Mach box's table in Mach number and its slope
+/// ([`crate::lifting_surface::mach_table`]). Between M = 0.99 and the Mach
 /// box's first Mach number an error (the quasi-steady α̇ derivatives are
 /// infinite at M = 1; [`lifting_surface_coefficients`] joins the lift
 /// slope and aerodynamic centre across). The Mach box's warning (a subsonic leading edge

@@ -54,6 +54,7 @@ pub mod examples;
 pub mod faired;
 pub mod figures;
 pub mod flight;
+pub mod frozen;
 pub mod geometry;
 pub mod grid;
 pub mod invalid;

@@ -60,6 +60,17 @@ impl<K: Eq + Hash, V: Clone> Memo<K, V> {
         .clone()
     }
 
+    /// Every solved entry, key and value (in no order).
+    pub fn entries(&self) -> Vec<(K, V)>
+    where
+        K: Clone,
+    {
+        let read = self.map().read().unwrap_or_else(PoisonError::into_inner);
+        read.iter()
+            .filter_map(|(k, slot)| slot.get().map(|v| (k.clone(), v.clone())))
+            .collect()
+    }
+
     /// How many solves the table has made since it was last cleared.
     pub fn solves(&self) -> usize {
         self.solves.load(Ordering::SeqCst)

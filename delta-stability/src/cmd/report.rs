@@ -21,6 +21,7 @@ use crate::report::{Plate, SECTIONS, Study, html};
 /// The progress bar's and the page's title of §10 (ours).
 const TAIL_TITLE: &str = "§10 (ours): the tail the 45° delta needs";
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use stability_core::frozen;
 use stability_io::diag::IoError;
 use stability_io::files::write_error;
 use std::path::Path;
@@ -148,12 +149,25 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         })
     })?;
     bar.finish_and_clear();
+    write_solutions()?;
     let (figures, summary) = done.unwrap_or_default();
     let text = format!(
         "wrote {figures} figures (SVG and CSV), summary.json and index.html to {}\n{summary}",
         out.display(),
     );
     crate::output::print(&text)
+}
+
+/// With [`frozen::WRITE_ENV`] set to a path, the lifting-surface
+/// solutions this run solved written there, in the form of
+/// `stability-core/data/lifting-surface-solutions.csv` (`cargo xtask
+/// tables`).
+fn write_solutions() -> Result<(), Failure> {
+    let Some(path) = std::env::var_os(frozen::WRITE_ENV) else {
+        return Ok(());
+    };
+    let text = frozen::write(&mut frozen::solved());
+    std::fs::write(&path, text).map_err(|e| Failure::Io(write_error(Path::new(&path), &e)))
 }
 
 /// The note's report written through `write`: its figures' count and the

@@ -96,13 +96,23 @@ fn table_in(
     mach: f64,
     make: impl FnOnce(&Trapezoid) -> Result<Lattice, LiftingSurfaceError>,
 ) -> Result<Arc<FrequencyTable>, LiftingSurfaceError> {
+    table_made_in(map, wing, mach, |w| FrequencyTable::new(make(w)?, mach))
+}
+
+/// [`table_in`], the table made by `make`.
+fn table_made_in(
+    map: &RwLock<HashMap<(Shape, u64), Arc<FrequencyTable>>>,
+    wing: &Trapezoid,
+    mach: f64,
+    make: impl FnOnce(&Trapezoid) -> Result<FrequencyTable, LiftingSurfaceError>,
+) -> Result<Arc<FrequencyTable>, LiftingSurfaceError> {
     let key = (shape(wing), mach.to_bits());
     let read = map.read().unwrap_or_else(PoisonError::into_inner);
     if let Some(t) = read.get(&key) {
         return Ok(t.clone());
     }
     drop(read);
-    let table = Arc::new(FrequencyTable::new(make(wing)?, mach)?);
+    let table = Arc::new(make(wing)?);
     let mut write = map.write().unwrap_or_else(PoisonError::into_inner);
     if write.len() >= CAPACITY {
         write.clear();
@@ -126,7 +136,11 @@ pub fn near_sonic(
     let refined = |w: &Trapezoid, m: f64| Lattice::new(w, LatticeSpec::for_mach(w, m));
     super::near_sonic::near_sonic_by(mach, omega_bar, |m| {
         if harmonic == Harmonic::Interpolated && omega_bar >= OMEGA_BAR_QUASI_STEADY {
-            return table_in(&c.near_sonic_tables, wing, m, |w| refined(w, m))?.at(omega_bar);
+            let make = |w: &Trapezoid| {
+                let t = FrequencyTable::new(refined(w, m)?, m)?;
+                Ok(t.frozen(crate::frozen::Kind::NearSonicLattice, shape(w)))
+            };
+            return table_made_in(&c.near_sonic_tables, wing, m, make)?.at(omega_bar);
         }
         let key = (shape(wing), m.to_bits(), omega_bar.to_bits());
         get_or_solve(&c.near_sonic, key, || refined(wing, m)?.solve(m, omega_bar))
@@ -143,6 +157,17 @@ pub fn near_sonic_steady(wing: &Trapezoid, mach: f64) -> Result<Steady, LiftingS
     get_or_solve(&cache().near_sonic_steady, key, || {
         Lattice::new(wing, LatticeSpec::for_mach(wing, mach))?.solve_steady(mach)
     })
+}
+
+/// The near-sonic frequency tables' nodes this process has solved (not
+/// those read from [`crate::frozen`]): part of what `cargo xtask tables`
+/// writes.
+pub fn near_sonic_solved() -> Vec<(crate::frozen::Key, Solution)> {
+    let tables = cache()
+        .near_sonic_tables
+        .read()
+        .unwrap_or_else(PoisonError::into_inner);
+    tables.values().flat_map(|t| t.solved_nodes()).collect()
 }
 
 /// Empties the cache (and zeroes [`solves`]).

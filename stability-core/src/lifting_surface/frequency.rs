@@ -48,6 +48,9 @@ type Slot = OnceLock<Result<Solution, LiftingSurfaceError>>;
 pub struct FrequencyTable {
     lattice: Lattice,
     mach: f64,
+    /// Where [`crate::frozen`] may hold the nodes: the solver and the unit
+    /// wing's shape (as bits).
+    frozen: Option<(crate::frozen::Kind, [u64; 4])>,
     quasi_steady: Slot,
     nodes: [Slot; NODES.len()],
 }
@@ -62,20 +65,53 @@ impl FrequencyTable {
         Ok(FrequencyTable {
             lattice,
             mach,
+            frozen: None,
             quasi_steady: OnceLock::new(),
             nodes: std::array::from_fn(|_| OnceLock::new()),
         })
+    }
+
+    /// The table, its nodes read from [`crate::frozen`] where it holds
+    /// them under `kind` and the unit wing's `shape` (as bits).
+    pub(crate) fn frozen(self, kind: crate::frozen::Kind, shape: [u64; 4]) -> FrequencyTable {
+        FrequencyTable {
+            frozen: Some((kind, shape)),
+            ..self
+        }
     }
 
     pub fn mach(&self) -> f64 {
         self.mach
     }
 
-    /// The solution at node `k`, solved on first use.
+    /// The solution at node `k`, solved on first use (or read from
+    /// [`crate::frozen`]).
     pub fn node(&self, k: usize) -> Result<Solution, LiftingSurfaceError> {
         self.nodes[k]
-            .get_or_init(|| self.lattice.solve(self.mach, NODES[k]))
+            .get_or_init(|| {
+                let frozen = self.frozen.and_then(|(kind, shape)| {
+                    crate::frozen::get(&(kind, shape, self.mach.to_bits(), NODES[k].to_bits()))
+                });
+                frozen.map_or_else(|| self.lattice.solve(self.mach, NODES[k]), Ok)
+            })
             .clone()
+    }
+
+    /// The nodes solved so far, each as [`crate::frozen`] keys it (none
+    /// for a table without a frozen key, or nodes read from the file).
+    pub(crate) fn solved_nodes(&self) -> Vec<(crate::frozen::Key, Solution)> {
+        let Some((kind, shape)) = self.frozen else {
+            return Vec::new();
+        };
+        NODES
+            .iter()
+            .zip(&self.nodes)
+            .filter_map(|(&w, slot)| {
+                let s = slot.get()?.clone().ok()?;
+                let key = (kind, shape, self.mach.to_bits(), w.to_bits());
+                crate::frozen::get(&key).is_none().then_some((key, s))
+            })
+            .collect()
     }
 
     /// How many nodes have been solved.
@@ -117,13 +153,18 @@ impl FrequencyTable {
 /// (`None` outside). Any solution tabled at [`NODES`] (a configuration's,
 /// `crate::configuration::lattice::cache`) is interpolated with it.
 pub fn stencil(omega_bar: f64) -> Option<(usize, [f64; 4])> {
-    if !(omega_bar > NODES[0] && omega_bar <= NODES[NODES.len() - 1]) {
+    stencil_in(&NODES, omega_bar)
+}
+
+/// [`stencil`] on the increasing `nodes` (at least four).
+pub fn stencil_in(nodes: &[f64], omega_bar: f64) -> Option<(usize, [f64; 4])> {
+    if !(omega_bar > nodes[0] && omega_bar <= nodes[nodes.len() - 1]) {
         return None;
     }
-    // NODES[i] < ω̄ ≤ NODES[i + 1]; the stencil i − 1 … i + 2, shifted
-    let i = NODES.partition_point(|&w| w < omega_bar) - 1;
-    let j = i.saturating_sub(1).min(NODES.len() - 4);
-    Some((j, [0, 1, 2, 3].map(|m| lagrange(j, m, omega_bar))))
+    // nodes[i] < ω̄ ≤ nodes[i + 1]; the stencil i − 1 … i + 2, shifted
+    let i = nodes.partition_point(|&w| w < omega_bar) - 1;
+    let j = i.saturating_sub(1).min(nodes.len() - 4);
+    Some((j, [0, 1, 2, 3].map(|m| lagrange(nodes, j, m, omega_bar))))
 }
 
 /// Σₘ wₘ·node(j + m): the solutions at the stencil's four nodes
@@ -141,11 +182,11 @@ pub(crate) fn combine_stencil<E>(
 }
 
 /// The weight of node j + m in the cubic through nodes j … j + 3 at x.
-fn lagrange(j: usize, m: usize, x: f64) -> f64 {
-    let xm = NODES[j + m];
+fn lagrange(nodes: &[f64], j: usize, m: usize, x: f64) -> f64 {
+    let xm = nodes[j + m];
     (0..4)
         .filter(|&k| k != m)
-        .map(|k| (x - NODES[j + k]) / (xm - NODES[j + k]))
+        .map(|k| (x - nodes[j + k]) / (xm - nodes[j + k]))
         .product()
 }
 
@@ -159,7 +200,7 @@ mod tests {
             let x = 0.5 * (NODES[j + 1] + NODES[j + 2]);
             for p in 0..4 {
                 let s: f64 = (0..4)
-                    .map(|m| lagrange(j, m, x) * NODES[j + m].powi(p))
+                    .map(|m| lagrange(&NODES, j, m, x) * NODES[j + m].powi(p))
                     .sum();
                 assert!((s - x.powi(p)).abs() < 1e-12 * (1.0 + x.powi(p)), "{j} {p}");
             }

@@ -24,15 +24,16 @@
 //!   with [`Warning::SonicBridge`] — a bridge, not a theory.
 //!
 //! [`steady`] gives the quasi-steady solution with its Mach derivatives
-//! (for eqs 27–29): the lattice's exact ones up to M = 0.99, a central
-//! difference of the Mach box (step [`MACH_BOX_STEP`]) above M = 1.
+//! (for eqs 27–29): the lattice's exact ones up to M = 0.99, above M = 1
+//! the Mach box's table in Mach number and the slope of its cubic
+//! ([`super::mach_table`]).
 //! [`coefficients`] gives its lift slope and aerodynamic centre at every
 //! M, joined between M = 0.99 and [`first_mach_box_mach`] through the
 //! sonic point of linear theory, slender-wing theory ([`sonic_steady`]).
 
 use super::derivatives::Extrapolate;
 use super::near_sonic::{NEAR_SONIC_FROM, SONIC_ANCHORS, SONIC_OMEGA_BAR_MIN};
-use super::{Harmonic, LiftingSurfaceError, Solution, Steady, Trapezoid, cache};
+use super::{Harmonic, LiftingSurfaceError, Solution, Steady, Trapezoid, cache, mach_table};
 use crate::aero::{hermite, monotone_slopes};
 use crate::supersonic::oscillatory::{self as mach_box, MAX_ROWS};
 use crate::warnings::Warning;
@@ -59,11 +60,13 @@ pub const MACH_BOX_VERIFIED_BETA_COT: f64 = 0.3;
 /// 0.25 % again at 1): warned.
 pub const MACH_BOX_NEAR_SONIC_EDGE: f64 = 0.95;
 
-/// The Mach-number step of the Mach box's central differences: long
+/// The Mach-number step of a central difference of the Mach box long
 /// enough that its discretisation error (≈ 10⁻⁴ of C_Lα, varying with M as
 /// the edges cut the boxes differently) is not amplified into the
 /// derivative (at 0.005 the 45° delta's dC_Lα/dM at M = 2 was 3 % off the
-/// exact −4M/β³).
+/// exact −4M/β³): what the tests difference the Mach box over. ([`steady`]
+/// takes the slope of [`super::mach_table`]'s cubic, on nodes 0.05 apart
+/// in β, instead.)
 pub const MACH_BOX_STEP: f64 = 0.05;
 
 /// Which method gave a [`Solution`].
@@ -166,17 +169,24 @@ fn supersonic(
     omega_bar: f64,
     harmonic: Harmonic,
 ) -> Result<AtMach, LiftingSurfaceError> {
-    let s = mach_box::cache::solution_with(wing, mach, omega_bar, harmonic)?;
-    let beta_cot = (mach * mach - 1.0).sqrt() / wing.sweep_le.tan();
-    let doubtful = beta_cot < MACH_BOX_VERIFIED_BETA_COT
-        || (MACH_BOX_NEAR_SONIC_EDGE..1.0).contains(&beta_cot);
-    let warning = (wing.sweep_le > 0.0 && doubtful)
-        .then_some(Warning::MachBoxSubsonicEdge { mach, beta_cot });
+    let s = match harmonic {
+        Harmonic::Direct => mach_box::cache::solution(wing, mach, omega_bar)?,
+        Harmonic::Interpolated => mach_table::solution(wing, mach, omega_bar)?.0,
+    };
     Ok(AtMach {
         solution: s,
         method: Method::MachBox,
-        warning,
+        warning: subsonic_edge_warning(wing, mach),
     })
+}
+
+/// [`Warning::MachBoxSubsonicEdge`] where the leading edge is subsonic
+/// beyond the verified β cot Λ or just below sonic.
+fn subsonic_edge_warning(wing: &Trapezoid, mach: f64) -> Option<Warning> {
+    let beta_cot = (mach * mach - 1.0).sqrt() / wing.sweep_le.tan();
+    let doubtful = beta_cot < MACH_BOX_VERIFIED_BETA_COT
+        || (MACH_BOX_NEAR_SONIC_EDGE..1.0).contains(&beta_cot);
+    (wing.sweep_le > 0.0 && doubtful).then_some(Warning::MachBoxSubsonicEdge { mach, beta_cot })
 }
 
 /// The quasi-steady solution at `mach` with its Mach derivatives (eqs
@@ -184,9 +194,9 @@ fn supersonic(
 /// ([`Lattice::solve_steady`](super::Lattice::solve_steady)) below M = 0.99
 /// — on the default lattice below 0.9 ([`cache::steady`]), on the refined
 /// one of [`cache::near_sonic`] above ([`cache::near_sonic_steady`]); from
-/// [`first_mach_box_mach`] on, the Mach box's with the central difference
-/// over M ± [`MACH_BOX_STEP`] (forward where M − step is below the Mach
-/// box's first Mach number). Between M = 0.99 and [`first_mach_box_mach`]
+/// [`first_mach_box_mach`] on, the Mach box's table in Mach number
+/// ([`super::mach_table`], quasi-steady): the cubic through its four nodes
+/// around M and the cubic's slope. Between M = 0.99 and [`first_mach_box_mach`]
 /// an error ([`LiftingSurfaceError::SonicSteady`]): the quasi-steady α̇
 /// derivatives are infinite at M = 1.
 pub fn steady(
@@ -206,30 +216,19 @@ pub fn steady(
             first_mach_box: first,
         });
     }
-    let at = solution(wing, mach, 0.0, Harmonic::Direct)?;
-    let lo = if mach - MACH_BOX_STEP < first {
-        mach
-    } else {
-        mach - MACH_BOX_STEP
-    };
-    let hi = if mach + MACH_BOX_STEP > MACH_RANGE_MAX {
-        mach
-    } else {
-        mach + MACH_BOX_STEP
-    };
-    let (a, b) = (
-        solution(wing, lo, 0.0, Harmonic::Direct)?.solution,
-        solution(wing, hi, 0.0, Harmonic::Direct)?.solution,
-    );
-    let d = |x: f64, y: f64| (y - x) / (hi - lo);
+    if !mach.is_finite() || mach > MACH_RANGE_MAX {
+        return Err(LiftingSurfaceError::MachRange(mach));
+    }
+    let (at, slope) = mach_table::solution(wing, mach, 0.0)?;
     let s = Steady {
-        solution: at.solution,
-        d_lift_alpha: d(a.lift_alpha, b.lift_alpha),
-        d_moment_alpha: d(a.moment_alpha, b.moment_alpha),
-        d_lift_q: d(a.lift_q, b.lift_q),
-        d_moment_q: d(a.moment_q, b.moment_q),
+        solution: at,
+        d_lift_alpha: slope.lift_alpha,
+        d_moment_alpha: slope.moment_alpha,
+        d_lift_q: slope.lift_q,
+        d_moment_q: slope.moment_q,
     };
-    Ok((s, at.warning))
+    let warning = subsonic_edge_warning(wing, mach);
+    Ok((s, warning))
 }
 
 /// The quasi-steady lift slope C_Lα and aerodynamic centre H₀ (fraction

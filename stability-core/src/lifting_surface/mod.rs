@@ -78,6 +78,7 @@ pub mod frequency;
 pub mod kernel;
 pub(crate) mod lattice;
 pub mod mach_range;
+pub mod mach_table;
 pub mod near_sonic;
 pub(crate) mod solve;
 

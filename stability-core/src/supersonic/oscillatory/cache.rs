@@ -9,6 +9,7 @@
 //! [`crate::lifting_surface::FrequencyTable`].
 
 use super::{MachBoxError, MachBoxSpec, OMEGA_BAR_QUASI_STEADY, solve};
+use crate::frozen;
 use crate::geometry::Trapezoid;
 use crate::lifting_surface::{Harmonic, Solution, frequency};
 use crate::memo::Memo;
@@ -16,6 +17,8 @@ use crate::memo::Memo;
 /// Most entries before the cache starts afresh.
 pub const CAPACITY: usize = 1 << 14;
 
+/// A solution's key: the wing's root chord, tip chord, semi-span and
+/// leading-edge sweep, M and ω̄, as bits.
 type Key = ([u64; 4], u64, u64);
 
 static SOLUTIONS: Memo<Key, Result<Solution, MachBoxError>> = Memo::new(CAPACITY);
@@ -36,9 +39,22 @@ pub fn solution(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<Solution,
     ]
     .map(f64::to_bits);
     let key = (shape, mach.to_bits(), omega_bar.to_bits());
+    if let Some(s) = frozen::get(&(frozen::Kind::MachBox, key.0, key.1, key.2)) {
+        return Ok(s);
+    }
     SOLUTIONS.get_or_solve(key, || {
         solve(wing, mach, omega_bar, MachBoxSpec::for_wing(wing, mach))
     })
+}
+
+/// Every solution this process has solved (not those read from
+/// [`frozen`]): part of what `cargo xtask tables` writes.
+pub fn solved() -> Vec<(frozen::Key, Solution)> {
+    SOLUTIONS
+        .entries()
+        .into_iter()
+        .filter_map(|(k, v)| v.ok().map(|s| ((frozen::Kind::MachBox, k.0, k.1, k.2), s)))
+        .collect()
 }
 
 /// Below this β = √(M² − 1) [`solution_with`] solves at every ω̄ instead
@@ -71,6 +87,40 @@ pub fn solution_with(
         return solution(wing, mach, omega_bar);
     };
     let out = frequency::combine_stencil(at, |k| solution(wing, mach, frequency::NODES[k]))?;
+    Ok(Solution { omega_bar, ..out })
+}
+
+/// The Mach box's own frequency nodes from β = [`INTERPOLATED_FROM_BETA`]
+/// on: the quasi-steady solution and the lattice's [`frequency::NODES`]
+/// from 0.05, without their geometric run towards 0. There the lattice
+/// needs it for the ω̄ ln ω̄ of subsonic flow; supersonic flow has none —
+/// the Mach box's numbers go as c₀ + c₂ω̄² (measured: the 45° delta at
+/// M = 1.3 and the 60° at M = 2, ω̄ = 0.001 to 0.1), which the cubic
+/// through 0, 0.05, 0.1, 0.15 carries exactly.
+pub const SUPERSONIC_NODES: [f64; 33] = [
+    0.0, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4, //
+    0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 2.0, //
+    2.25, 2.5, 2.75, 3.0, 3.25, 3.5, 3.75, 4.0,
+];
+
+/// The solution at (`mach`, `omega_bar`) interpolated between the four
+/// frequency nodes around ω̄ at any M the Mach box takes (solved at ω̄
+/// outside the nodes): on [`SUPERSONIC_NODES`] from β =
+/// [`INTERPOLATED_FROM_BETA`], on the lattice's [`frequency::NODES`] (their
+/// geometric run towards 0 following the quasi-steady logarithm's onset)
+/// below — [`solution_with`]'s interpolation without its lower bound in β,
+/// for [`crate::lifting_surface::mach_table`], whose report- and
+/// sweep-wide use states the error below β = 0.3.
+pub fn interpolated(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<Solution, MachBoxError> {
+    let nodes: &[f64] = if mach * mach - 1.0 >= INTERPOLATED_FROM_BETA * INTERPOLATED_FROM_BETA {
+        &SUPERSONIC_NODES
+    } else {
+        &frequency::NODES
+    };
+    let Some(at) = frequency::stencil_in(nodes, omega_bar) else {
+        return solution(wing, mach, omega_bar);
+    };
+    let out = frequency::combine_stencil(at, |k| solution(wing, mach, nodes[k]))?;
     Ok(Solution { omega_bar, ..out })
 }
 
