@@ -221,8 +221,9 @@ enum Command {
     /// The built-in cases are the note's: tailless true deltas of 45° and 60°
     /// leading-edge sweep, c.g. at h = 0.25, μ₁ = 50, Mach 0.5 to 2.0, with
     /// the variations it studies (sweep 30°–75°, c.g., μ₁ up to 400, taper),
-    /// under the default `faired` damping model (the note's fairing of its
-    /// theories: docs/damping-theories.md). Writes into DIR: figNN.svg and
+    /// under the default `faired` damping model (one linear lifting-surface
+    /// theory at the short period's own ω̄ through M = 1:
+    /// docs/damping-theories.md). Writes into DIR: figNN.svg and
     /// figNN.csv under the note's figure numbers (Figs 1–38), summary.json
     /// (`delta_45`, `delta_60`: the intervals of Mach where each wing's short
     /// period diverges or takes more than one cycle to halve, the largest μ₁
@@ -231,8 +232,9 @@ enum Command {
     /// ours, reproduced, …}, swept over the unstated i_B and C_L·M²;
     /// `assumptions`) and index.html (the same conclusions with the numbers,
     /// a table of contents and the figures; its links work wherever DIR
-    /// is). About 22 s on 2 cores, most of it the doublet lattice (13 s of
-    /// it §10 (ours), sizing the tail the 45° delta needs). The files
+    /// is). About 26 s on 2 cores, most of it the doublet lattice (13 s of
+    /// it §10 (ours), sizing the tail the 45° delta needs; the near-sonic
+    /// solutions solved ahead of time, `cargo xtask tables`). The files
     /// are written into a temporary directory beside DIR that replaces DIR
     /// only when complete, so a killed run leaves the previous report whole;
     /// DIR, if it exists, must be an earlier report or empty: everything in

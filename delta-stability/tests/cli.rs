@@ -560,22 +560,26 @@ fn assert_summary_findings(summary: &serde_json::Value) {
         .as_f64()
         .unwrap();
     assert!((100.0..400.0).contains(&at), "{at}");
-    // the 45° delta fails it somewhere supersonic
+    // by one lifting surface at the short period's frequency the 45° delta
+    // meets it everywhere (the note's fairing failed it at M 0.98–1.50:
+    // docs/lattice-near-sonic.md, "The headline, recomputed")
     let fails_45 = summary["delta_45"]["fails_one_cycle_mach"]
         .as_array()
         .unwrap();
-    assert!(!fails_45.is_empty());
+    assert!(fails_45.is_empty(), "{fails_45:?}");
 }
 
 /// The conclusions are generated from what was computed: the 45° delta's
 /// intervals in summary.json appear, as numbers, in its row.
 fn assert_conclusions_are_computed(html: &str, summary: &serde_json::Value) {
-    let fails = &summary["delta_45"]["fails_one_cycle_mach"][0];
-    let interval = format!(
-        "{:.2}–{:.2}",
-        fails[0].as_f64().unwrap(),
-        fails[1].as_f64().unwrap()
-    );
+    let interval = match summary["delta_45"]["fails_one_cycle_mach"].get(0) {
+        Some(fails) => format!(
+            "{:.2}–{:.2}",
+            fails[0].as_f64().unwrap(),
+            fails[1].as_f64().unwrap()
+        ),
+        None => "fails one cycle nowhere".to_string(),
+    };
     let row = html
         .split("<tr>")
         .find(|r| r.contains("0.97 &lt; M &lt; 1.5"))
@@ -1022,11 +1026,12 @@ fn sweep_points_are_those_analyze_computes_alone() {
             .iter()
             .find(|m| m["name"] == "short_period")
             .unwrap();
-        // the default faired model iterates ω̄ through the lattice below
-        // M = 1.2: a sweep interpolates it in the lattice's frequency table,
-        // `analyze` solves it at each iterate (within the table's accuracy,
-        // docs/damping-theories.md); from 1.2 it is quasi-steady and exact
-        let tol = if *mach == "0.9" { 1e-5 } else { 1e-12 };
+        // the default faired model iterates ω̄ through the lifting surface
+        // at every Mach number: a sweep interpolates the lattice in its
+        // frequency table and the Mach box in ω̄ and in Mach number
+        // (`lifting_surface::mach_table`, within 2.5·10⁻³ of C_Lα of the
+        // direct solves), `analyze` solves at each iterate
+        let tol = if *mach == "0.9" { 1e-5 } else { 2e-3 };
         for (col, key) in [(7, "re"), (8, "im")] {
             let ours: f64 = row[col].parse().unwrap();
             let alone = sp[key].as_f64().unwrap();
@@ -1377,11 +1382,15 @@ fn the_neutral_point_and_static_margin_are_on_the_page_the_json_and_the_sweep() 
         // there as well (the Mach-number term is small at M = 0.8)
         assert_eq!(pct > 0.0, k_n > 0.0, "h {h}");
     }
+    // the note's fairing at M = 1.2: linear theory's exact aerodynamic
+    // centre of a true delta, two thirds of the root chord (H₀ = ½)
     let page = common::stdout(&run_ok(&[
         "analyze",
         "examples/delta-60.toml",
         "--cg",
         "0.3",
+        "--damping",
+        "faired-theories",
     ]));
     assert!(
         page.contains("neutral point h_n = 0.5000")

@@ -204,8 +204,9 @@ fn a_physical_designs_report_agrees_with_analyze_sweep_and_the_atmosphere() {
             "M = {m}: CAP {cap}"
         );
     }
-    // a third route: the sweep's lean path (its lattice interpolated in
-    // frequency, so within 1e-3) at the same Mach numbers
+    // a third route: the sweep's lean path (the lifting surface
+    // interpolated in frequency, and the Mach box in Mach number, within
+    // 2.5·10⁻³ of C_Lα: so within 3·10⁻³) at the same Mach numbers
     let csv = dir.path().join("sweep.csv");
     run_ok(&["sweep", config, "--mach", "0.6,0.9,1.5", "-o", path(&csv)]);
     let text = std::fs::read_to_string(&csv).unwrap();
@@ -222,7 +223,7 @@ fn a_physical_designs_report_agrees_with_analyze_sweep_and_the_atmosphere() {
         ] {
             let (a, b) = (v(c), sp[k].as_f64().unwrap());
             assert!(
-                (a - b).abs() < 1e-3 * b.abs(),
+                (a - b).abs() < 3e-3 * b.abs(),
                 "M = {}: {c} {a} vs {b}",
                 p["mach"]
             );

@@ -88,7 +88,7 @@ fn analyze_json_carries_the_lattices_derivatives_under_the_same_keys() {
         0.0
     ));
     assert_eq!(v["damping"]["theory"], "lifting-surface");
-    assert_eq!(v["damping"]["equations"], "§7, doublet lattice");
+    assert_eq!(v["damping"]["equations"], "§7, doublet lattice, Mach box");
     assert_eq!(v["case"]["damping"], "lifting-surface");
     // the headline: slender-wing theory's two real roots there,
     // the lattice's oscillation
@@ -184,7 +184,7 @@ fn what_does_not_apply_is_an_error_naming_the_flag_or_field() {
     assert!(
         err.contains("--omega-bar: the damping model `faired-slender` takes no frequency parameter")
             && err.contains(
-                "the models that do: faired, transonic-frequency, lifting-surface, lifting-surface-frequency"
+                "the models that do: faired, faired-theories, transonic-frequency, lifting-surface, lifting-surface-frequency"
             ),
         "{err}"
     );

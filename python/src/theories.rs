@@ -55,8 +55,9 @@ pub fn theories(py: Python<'_>, details: bool) -> PyResult<Bound<'_, PyAny>> {
 }
 
 /// The damping models a config or `analyze(…, damping=…)` takes: the
-/// fairings (`faired`, the default, through the §7 theories across Mach
-/// number as Figs 19–24; `faired-slender`) and the theories. With
+/// fairings (`faired`, the default: one lifting surface at the short
+/// period's ω̄ through M = 1; `faired-theories`, the note's fairing of its
+/// §7 theories as Figs 19–24; `faired-slender`) and the theories. With
 /// `details=True`, each model's registry row as a dict (see `theories`).
 #[pyfunction]
 #[pyo3(signature = (*, details=false))]

@@ -14,9 +14,10 @@ BASE = "examples/delta-60.toml"
 PHYSICAL = "examples/delta-60-physical.toml"
 #: The sweep's short-period roots against analyze's where the point iterates
 #: its frequency parameter: the sweep interpolates in the wing's table of
-#: solved frequencies, analyze solves at every iterate (stability-core's
-#: sweep_rows_are_what_analyze_gives_each_point holds 2e-4).
-INTERPOLATED = 1e-3
+#: solved frequencies (the near-sonic lattice's, and the Mach box's in Mach
+#: number too: within 2.5e-3 of C_Lα), analyze solves at every iterate
+#: (measured: 1.2e-3 in m_θ̇ at M = 0.95).
+INTERPOLATED = 3e-3
 
 
 def same(column_value, value, scale=0.0):
@@ -53,7 +54,9 @@ def assert_point(s, i, a, what):
         lam = 10 * rel * abs(ph.root)
         assert same(s["ph_re"][i], ph.re, lam) and same(s["ph_im"][i], ph.im, lam), what
     d = a.criteria["damping_standard"]
-    m = rel * abs(d["m_thetadot"])
+    # on the scale of the lift slope where m_θ̇ is small (the tables' error
+    # is stated on C_Lα's scale: a heavy wing's small ω̄ near M = 1)
+    m = rel * max(abs(d["m_thetadot"]), 1.0)
     assert same(s["m_thetadot"][i], d["m_thetadot"], m), what
     assert same(s["delta_m_thetadot"][i], d["margin"], m), what
     return rel
@@ -98,8 +101,7 @@ def test_a_sweep_is_a_loop_over_analyze(damping):
     s = ds.sweep(BASE, damping=damping, **grid)
     assert s.shape == (5, 3, 2, 2, 2) and len(s["mach"]) == 120
     c = loop(s, grid, report_wing, damping=damping)
-    # the supersonic points (M = 1.3, 1.9) at least are quasi-steady
-    assert c["exact"] + c["interpolated"] + c["error"] == 120 and c["exact"] >= 48, c
+    assert c["exact"] + c["interpolated"] + c["error"] == 120, c
     assert c["error"] <= 12, c
     if damping == "faired-slender":
         assert c["interpolated"] == 0, c

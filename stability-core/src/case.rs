@@ -38,14 +38,22 @@ use serde::Serialize;
 pub enum DampingModel {
     /// One theory, wherever it is asked for (errors outside its domain).
     Theory(Theory),
-    /// The theories faired through Mach number as the note built its Figs
-    /// 19–24 ([`crate::faired`]): lifting-surface theory at the short
-    /// period's own ω̄ to M = 0.9, Mangler's transonic theory (38)–(40) at
-    /// M = 1, linear supersonic theory from M = 1.2 ((36), then the
-    /// supersonic-edge theory past the sonic leading edge), joined between
-    /// by stated cubics; the lift slope and aerodynamic centre from the
-    /// same theories.
+    /// The default ([`crate::faired`]): one frequency-dependent linear
+    /// lifting-surface theory at the short period's own ω̄ from M = 0 to 3
+    /// — the doublet lattice, its sonic extrapolation at M = 1, the Mach box
+    /// above — with one stated join narrower than ±0.03 about M = 1 through
+    /// the sonic point; linear supersonic theory beyond M = 3; the lift
+    /// slope and aerodynamic centre from the same theory.
     Faired,
+    /// The theories faired through Mach number as the note built its Figs
+    /// 19–24, `faired-theories` ([`crate::faired::theories`], the default
+    /// until stop 28): lifting-surface theory at the short period's own ω̄
+    /// to M = 0.9, Mangler's transonic theory (38)–(40) at M = 1, linear
+    /// supersonic theory from M = 1.2 ((36), then the supersonic-edge
+    /// theory past the sonic leading edge), joined between by stated
+    /// cubics; the lift slope and aerodynamic centre from the same
+    /// theories.
+    FairedTheories,
     /// The previous slender-wing fairing, `faired-slender`
     /// ([`crate::faired::slender_fairing`]): slender-wing theory (37) to
     /// M = 1, blended into linear supersonic theory over 1 ≤ M ≤ 1.2, (36)
@@ -79,7 +87,7 @@ impl DampingModel {
     pub fn uses_frequency(self) -> bool {
         match self {
             DampingModel::Theory(t) => t.uses_frequency(),
-            DampingModel::Faired => true,
+            DampingModel::Faired | DampingModel::FairedTheories => true,
             DampingModel::FairedSlender => false,
         }
     }
@@ -90,19 +98,21 @@ impl DampingModel {
     /// at §9's estimate of the short period's ω̄ as `supersonic` does).
     pub fn uses_frequency_at(self, mach: f64) -> bool {
         match self {
-            DampingModel::Faired => mach < faired::SUPERSONIC_FROM,
+            DampingModel::Faired => mach <= faired::MACH_RANGE_MAX,
+            DampingModel::FairedTheories => mach < faired::SUPERSONIC_FROM,
             _ => self.uses_frequency(),
         }
     }
 
     /// Every model: the two fairings, then the theories (in the order of
     /// [`Theory::ALL`]).
-    pub const ALL: [DampingModel; 2 + Theory::ALL.len()] = {
-        let mut out = [DampingModel::Faired; 2 + Theory::ALL.len()];
-        out[1] = DampingModel::FairedSlender;
+    pub const ALL: [DampingModel; 3 + Theory::ALL.len()] = {
+        let mut out = [DampingModel::Faired; 3 + Theory::ALL.len()];
+        out[1] = DampingModel::FairedTheories;
+        out[2] = DampingModel::FairedSlender;
         let mut i = 0;
         while i < Theory::ALL.len() {
-            out[2 + i] = DampingModel::Theory(Theory::ALL[i]);
+            out[3 + i] = DampingModel::Theory(Theory::ALL[i]);
             i += 1;
         }
         out
@@ -113,6 +123,7 @@ impl DampingModel {
         match self {
             DampingModel::Theory(t) => t.row(),
             DampingModel::Faired => &FAIRED,
+            DampingModel::FairedTheories => &FAIRED_THEORIES,
             DampingModel::FairedSlender => &FAIRED_SLENDER,
         }
     }
@@ -122,7 +133,7 @@ impl DampingModel {
     pub fn takes_omega_bar(self) -> bool {
         match self {
             DampingModel::Theory(t) => t.takes_omega_bar(),
-            DampingModel::Faired => true,
+            DampingModel::Faired | DampingModel::FairedTheories => true,
             DampingModel::FairedSlender => false,
         }
     }
@@ -153,19 +164,30 @@ impl DampingModel {
         match self {
             DampingModel::Theory(t) => theory_coefficients(t, planform, mach),
             DampingModel::Faired => faired::coefficients(planform, mach),
+            DampingModel::FairedTheories => faired::theories::coefficients(planform, mach),
             DampingModel::FairedSlender => Ok(None),
         }
     }
 }
 
-/// The note's fairing: the default model.
+/// The default model: one lifting-surface theory through M = 1.
 const FAIRED: Row = Row {
     name: "faired",
     equations: "Figs 19–24",
-    summary: "the default, the note's fairing: the lifting surface at the short period's own ω̄ to M = 0.9, Mangler's transonic theory (39)–(40) at M = 1, linear supersonic theory (36) from 1.2, joined between by stated cubics; the lift slope and aerodynamic centre from the same theories",
+    summary: "the default: one frequency-dependent linear lifting-surface theory at the short period's own ω̄ from M = 0 to 3 (the doublet lattice, its sonic extrapolation at M = 1, the Mach box), one stated join through the sonic point between M = 0.99 and the Mach box's first Mach number (within ±0.03 of M = 1), linear supersonic theory beyond M = 3; the lift slope and aerodynamic centre from the same theory",
+    validity: "any Mach number (the lifting surface 0 ≤ M ≤ 3); true and cropped deltas, trapezoids",
+    supplies: "z_q, z_ẇ, m_q, m_ẇ, the lift slope and the aerodynamic centre",
+    source: "Albano & Rodden (AIAA J. 7(2), 1969); Pines, Dugundji & Neuringer (J. Aero. Sci. 22(10), 1955); docs/damping-theories.md, \"The faired model\"",
+};
+
+/// The note's fairing of its theories, the default until stop 28.
+const FAIRED_THEORIES: Row = Row {
+    name: "faired-theories",
+    equations: "Figs 19–24",
+    summary: "the note's own fairing: the lifting surface at the short period's own ω̄ to M = 0.9, Mangler's transonic theory (39)–(40) at M = 1, linear supersonic theory (36) from 1.2, joined between by stated cubics; the lift slope and aerodynamic centre from the same theories",
     validity: "any Mach number; true and cropped deltas",
     supplies: "z_q, z_ẇ, m_q, m_ẇ, the lift slope and the aerodynamic centre",
-    source: "the note's Figs 19–24 (docs/damping-theories.md, \"The faired model\")",
+    source: "the note's Figs 19–24 (docs/damping-theories.md, \"The note's fairing\")",
 };
 
 /// The previous, quasi-steady fairing.
@@ -180,7 +202,7 @@ const FAIRED_SLENDER: Row = Row {
 
 /// A damping model's name that is neither a fairing's nor a theory's.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{0}; or the fairings `faired` (the default) and `faired-slender`")]
+#[error("{0}; or the fairings `faired` (the default), `faired-theories` and `faired-slender`")]
 pub struct UnknownDampingModel(#[from] pub UnknownTheory);
 
 /// A design point.
@@ -356,6 +378,9 @@ fn damping_at(
             t, wing, h, m, omega_bar, harmonic,
         )?),
         DampingModel::Faired => Ok(faired::damping(wing, h, m, omega_bar, harmonic)?),
+        DampingModel::FairedTheories => {
+            Ok(faired::theories::damping(wing, h, m, omega_bar, harmonic)?)
+        }
         DampingModel::FairedSlender => Ok(faired::slender_fairing(wing, h, m)?),
     }
 }

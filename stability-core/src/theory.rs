@@ -171,11 +171,11 @@ const THEORIES: [Entry; 8] = [
         theory: Theory::LiftingSurface,
         row: Row {
             name: "lifting-surface",
-            equations: "§7, doublet lattice",
-            summary: "Multhopp–Garner and Lehrian's lifting-surface theory by the doublet lattice (Albano & Rodden), quasi-steady or at --omega-bar W",
+            equations: "§7, doublet lattice, Mach box",
+            summary: "Multhopp–Garner and Lehrian's lifting-surface theory by the doublet lattice (Albano & Rodden) below M = 1 and the Mach box (Pines, Dugundji & Neuringer) above, quasi-steady or at --omega-bar W",
             validity: "any straight-tapered wing, 0 ≤ M ≤ 3 (lattice below M = 1, sonic extrapolation at 1, Mach box above)",
             supplies: "z_q, z_ẇ, m_q, m_ẇ (with --aero lifting-surface also the lift slope and aerodynamic centre)",
-            source: "Multhopp–Garner, Lehrian; the doublet lattice of Albano & Rodden (1969) with the kernel of Rodden, Taylor & McIntosh (1998) (`lifting_surface`)",
+            source: "Multhopp–Garner, Lehrian; the doublet lattice of Albano & Rodden (1969) with the kernel of Rodden, Taylor & McIntosh (1998) (`lifting_surface`); the Mach box of Pines, Dugundji & Neuringer (1955) (`supersonic::oscillatory`)",
         },
         frequency: Frequency::Given,
         lattice: true,
@@ -184,7 +184,7 @@ const THEORIES: [Entry; 8] = [
         theory: Theory::LiftingSurfaceFrequency,
         row: Row {
             name: "lifting-surface-frequency",
-            equations: "§7, doublet lattice",
+            equations: "§7, doublet lattice, Mach box",
             summary: "the same at the short period's own ω̄, iterated (a sweep interpolates between solved ω̄)",
             validity: "any straight-tapered wing, 0 ≤ M ≤ 3 (lattice below M = 1, sonic extrapolation at 1, Mach box above)",
             supplies: PAIRS,

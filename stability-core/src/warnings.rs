@@ -67,6 +67,15 @@ pub enum Warning {
     MachBoxSubsonicEdge { mach: f64, beta_cot: f64 },
     /// Between M = 1 and the Mach box's first Mach number: a straight line.
     SonicBridge { mach: f64, mach_box_from: f64 },
+    /// The faired model near M = 1 (0.99 < M < the Mach box's first Mach
+    /// number) at an ω̄ below the sonic solution's verified
+    /// `lifting_surface::near_sonic::SONIC_OMEGA_BAR_MIN`: evaluated there
+    /// instead.
+    SonicFrequencyRaised {
+        mach: f64,
+        omega_bar: f64,
+        used: f64,
+    },
 }
 
 impl fmt::Display for Warning {
@@ -137,7 +146,8 @@ impl fmt::Display for Warning {
             | Warning::LatticeHighFrequency { .. }
             | Warning::DownwashNearWing { .. }
             | Warning::MachBoxSubsonicEdge { .. }
-            | Warning::SonicBridge { .. } => lifting_surface(self, f),
+            | Warning::SonicBridge { .. }
+            | Warning::SonicFrequencyRaised { .. } => lifting_surface(self, f),
         }
     }
 }
@@ -182,6 +192,18 @@ fn lifting_surface(w: &Warning, f: &mut fmt::Formatter<'_>) -> fmt::Result {
             f,
             "lifting surface at M = {}: between the sonic point (M = 1) and the Mach box's first Mach number {mach_box_from:.4}, interpolated linearly in M — a bridge, not a theory",
             Num(mach)
+        ),
+        Warning::SonicFrequencyRaised {
+            mach,
+            omega_bar,
+            used,
+        } => write!(
+            f,
+            "faired at M = {}: the short period's ω̄ = {} is below the ω̄ = {} at which the sonic solution was verified; the derivatives are those at ω̄ = {} (the α̇ pair grows like ln(1/ω̄) as ω̄ → 0 near M = 1, so they understate it)",
+            Num(mach),
+            Num(omega_bar),
+            Num(used),
+            Num(used)
         ),
         _ => Ok(()),
     }

@@ -16,7 +16,9 @@ use std::sync::Arc;
 fn tailed(mach: f64) -> (Case, Configuration) {
     let mut case = report_wing(45.0, mach);
     case.planform = Planform::new(45f64.to_radians(), 0.0, Size::RootChord(10.0)).unwrap();
-    case.damping = DampingModel::Faired;
+    // the note's fairing: linear theory's exact a = 4/β and H₀ = ½ at
+    // M = 2, which the classical formula below takes
+    case.damping = DampingModel::FairedTheories;
     let tail = Planform::new(45f64.to_radians(), 0.0, Size::RootChord(2.5)).unwrap();
     let config = Configuration {
         tailplane: Some(Surface {

@@ -129,7 +129,9 @@ fn unknown_names_are_quoted_as_excerpts() {
     let e = DampingModel::parse("mangler").unwrap_err().to_string();
     assert!(e.starts_with("unknown damping theory `mangler`; the theories are `garrick`"));
     assert!(
-        e.ends_with("; or the fairings `faired` (the default) and `faired-slender`"),
+        e.ends_with(
+            "; or the fairings `faired` (the default), `faired-theories` and `faired-slender`"
+        ),
         "{e}"
     );
 }

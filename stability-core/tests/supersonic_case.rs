@@ -130,7 +130,7 @@ fn tables_win_and_method_opts_out() {
     // supersonic theory's from M = 1.2
     let f = eval(45.0, 0.0, 1.2, DampingModel::FairedSlender);
     assert_eq!(f.coefficients.origin.lift_slope, Origin::Method);
-    let f = eval(45.0, 0.0, 1.2, DampingModel::Faired);
+    let f = eval(45.0, 0.0, 1.2, DampingModel::FairedTheories);
     assert_eq!(
         f.coefficients.origin.lift_slope,
         Origin::DampingModel("supersonic")
@@ -260,7 +260,7 @@ fn the_60_degree_delta_at_exactly_m_2() {
     let f = r.damping.fig18.expect("at the sonic edge");
     assert!((f.e - std::f64::consts::FRAC_PI_2).abs() < 1e-12 && (f.h - 2.0 / 3.0).abs() < 1e-12);
     // and the faired model there is the same theory (w = 1 above M = 1.2)
-    let faired = eval(60.0, 0.0, 2.0, DampingModel::Faired);
+    let faired = eval(60.0, 0.0, 2.0, DampingModel::FairedTheories);
     assert_eq!(faired.damping.derivatives, d);
 }
 
@@ -386,7 +386,7 @@ const SWEEPS: [f64; 3] = [45.0, 55.0, 60.0];
 const TAPERS: [f64; 4] = [0.0, 1.0 / 7.0, 0.3, 0.5];
 const MODELS: [DampingModel; 3] = [
     SUPERSONIC,
-    DampingModel::Faired,
+    DampingModel::FairedTheories,
     DampingModel::FairedSlender,
 ];
 
@@ -447,7 +447,7 @@ fn the_issues_case_at_the_sonic_edge() {
     let edge = supersonic::evvard::integrals(&w, s)
         .unwrap()
         .derivatives(&w, s, 0.25);
-    for model in [SUPERSONIC, DampingModel::Faired] {
+    for model in [SUPERSONIC, DampingModel::FairedTheories] {
         // the issue's M = 1.41421356 and 1.414214
         let sqrt2 = std::f64::consts::SQRT_2;
         let below = eval(45.0, 1.0 / 7.0, sqrt2 - 2.4e-9, model);
@@ -534,7 +534,7 @@ fn faired_continues_into_the_supersonic_edge_theory_and_faired_slender_holds() {
         // dE/dm's closed form loses digits, apart by 2e-11 of z_u)
         for i in 0..=40 {
             let mach = 1.2 + (sonic - 1.2 - 1e-6) * i as f64 / 40.0;
-            let a = eval(deg, 0.0, mach, DampingModel::Faired);
+            let a = eval(deg, 0.0, mach, DampingModel::FairedTheories);
             let b = eval(deg, 0.0, mach, DampingModel::FairedSlender);
             assert_eq!(
                 a.damping.derivatives, b.damping.derivatives,
@@ -552,7 +552,7 @@ fn faired_continues_into_the_supersonic_edge_theory_and_faired_slender_holds() {
             }
         }
         for mach in [sonic * 1.05, sonic + 0.5] {
-            let f = eval(deg, 0.0, mach, DampingModel::Faired);
+            let f = eval(deg, 0.0, mach, DampingModel::FairedTheories);
             let s = eval(deg, 0.0, mach, SUPERSONIC);
             assert_eq!(f.damping.derivatives, s.damping.derivatives);
             assert!(
@@ -571,10 +571,10 @@ fn faired_continues_into_the_supersonic_edge_theory_and_faired_slender_holds() {
         }
         // faired is continuous across the sonic edge
         let jump = |eps: f64| {
-            let a = eval(deg, 0.0, sonic * (1.0 - eps), DampingModel::Faired)
+            let a = eval(deg, 0.0, sonic * (1.0 - eps), DampingModel::FairedTheories)
                 .damping
                 .derivatives;
-            let b = eval(deg, 0.0, sonic * (1.0 + eps), DampingModel::Faired)
+            let b = eval(deg, 0.0, sonic * (1.0 + eps), DampingModel::FairedTheories)
                 .damping
                 .derivatives;
             (a.m_q - b.m_q)

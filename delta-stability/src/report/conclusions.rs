@@ -112,7 +112,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
         claim: "Inadequately damped at transonic speeds (μ₁ = 50): a tailplane is needed “to correct the serious instability in the range 0.97 < M < 1.5”.",
         assess: transonic_45,
         depends_on: BOTH,
-        when_they_part: "The transonic short period rests on the damping derivatives between M = 0.9 and 1.2, where the note's Figs 19–24 were “plausible guides” faired through data we do not have, and ours join the §7 theories by a stated rule (stability_core::faired); the note's edges 0.97 and 1.5 are read off its lost Fig 33.",
+        when_they_part: "The transonic short period rests on the damping derivatives between M = 0.9 and 1.2, where the note's Figs 19–24 were “plausible guides” faired through data we do not have. Ours come from one linear lifting-surface theory at the short period's own frequency through M = 1 (the lattice, its sonic point, the Mach box; stability_core::faired), which the note could not afford; the note's own fairing of its theories (`faired-theories`) reproduces its verdict. The note's edges 0.97 and 1.5 are read off its lost Fig 33.",
     },
     Conclusion {
         id: "60-mu1-limit",
@@ -142,7 +142,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
         claim: "“The moment-acceleration derivative m_ẇ can be safely neglected at sub-critical speeds.”",
         assess: mwdot_negligible,
         depends_on: BOTH,
-        when_they_part: "The note judged m_ẇ on its faired Fig 23; we judge its share of the short period's damping, with the subsonic derivatives of our faired model (stability_core::faired).",
+        when_they_part: "The note judged m_ẇ on its faired Fig 23; we judge its share of the short period's damping, with the subsonic derivatives of our default model (the doublet lattice below M = 1; stability_core::faired).",
     },
     Conclusion {
         id: "45-m-thetadot-positive",
@@ -161,7 +161,9 @@ pub const CONCLUSIONS: &[Conclusion] = &[
         section: "§10, Fig 36",
         claim: "Cropping the tips (taper 1/7) gives “a substantial increase in −m_θ̇ at M = 1.2” for the 45° delta, “but this is not the case for the 60° delta”.",
         assess: cropping,
-        depends_on: &[],
+        // the default model's damping at M = 1.2 is at the short period's
+        // ω̄, which i_B and C_L·M² set
+        depends_on: BOTH,
         when_they_part: "The note reasoned from Fig 17 with cropping as a shift of axis: the true delta's (36) about another c.g. We evaluate the cropped wing itself, the c.g. in place, as Fig 36 draws it, with its own linear theory (the true delta's potentials less the tips' Mach-cone corrections), which keeps more lift and moves the aerodynamic centre forward.",
     },
     Conclusion {

@@ -1,6 +1,6 @@
 //! §7: the damping theories (Figs 13, 16–18; Figs 14–15, Garrick beside
-//! the lifting surface, from [`super::lifting_surface`]) and the faired
-//! damping derivatives (Figs 19–24), with Mangler's frequency-consistent
+//! the lifting surface, from [`super::lifting_surface`]) and the default
+//! model's damping derivatives (Figs 19–24), with Mangler's frequency-consistent
 //! theory near M = 1 beside them.
 
 use super::regimes::{self, Basis};
@@ -167,7 +167,7 @@ fn positive_zwdot(study: &Study) -> String {
 }
 
 fn faired(study: &Study) -> Vec<Plate> {
-    let base = "The faired model (docs/damping-theories.md): the doublet lattice at the short period's own ω̄ to M = 0.9, Mangler's (39)–(40) at M = 1, linear supersonic theory (36) from 1.2 (the supersonic-edge theory past the sonic leading edge), joined by monotone cubics in the shaded bands; beside them Mangler's (39)–(40) alone, ω̄ iterated, near M = 1.";
+    let base = "The default model (docs/damping-theories.md, \"The faired model\"): one linear lifting-surface theory at the short period's own ω̄ — the doublet lattice below M = 1, its sonic extrapolation at M = 1, the Mach box above — joined only in the shaded band between M = 0.99 and the Mach box's first Mach number; beside them Mangler's (39)–(40) alone, ω̄ iterated, near M = 1.";
     FAIRED
         .iter()
         .map(|&(id, title, y, f)| {

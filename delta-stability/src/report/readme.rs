@@ -17,7 +17,6 @@ use super::summary::{Findings, Wing, Worst, show_intervals};
 use stability_core::case::Case;
 use stability_core::criteria::Verdict;
 use stability_core::display::sig;
-use stability_core::faired::{LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM};
 use stability_core::study::intervals;
 
 /// The name of README.md's markers around [`Readme::conclusions`]:
@@ -149,7 +148,7 @@ fn figure_paragraph(f: &Findings, heavy: &Inadequate) -> String {
         format!("it diverges at M {}", show_intervals(&w45.unstable))
     };
     format!(
-        "Fig. 33 of the note, recomputed under the note's own fairing of its theories (the default `faired` model: the doublet lattice below M = {LIFTING_SURFACE_LIMIT} at the short period's own frequency, Mangler's transonic theory at M = 1, linear supersonic theory from {SUPERSONIC_FROM}, joined across the shaded band). At μ₁ = 50 the 45° tailless delta (blue) {}{least} — the note finds “serious instability in the range {lo} < M < {hi}” — and {diverges}. At μ₁ = 50 the 60° delta {}; at μ₁ = {HEAVY_MU1} it {}. {}",
+        "Fig. 33 of the note, recomputed by one linear lifting-surface theory at the short period's own frequency (the default `faired` model: the doublet lattice below M = 1, its sonic extrapolation at M = 1, the Mach box above; joined only across the shaded band, within 0.03 of M = 1). At μ₁ = 50 the 45° tailless delta (blue) {}{least} — the note finds “serious instability in the range {lo} < M < {hi}” — and {diverges}. At μ₁ = 50 the 60° delta {}; at μ₁ = {HEAVY_MU1} it {}. {}",
         against_standard(&inadequate(w45)),
         against_standard(&inadequate(w60)),
         against_standard(heavy),

@@ -26,7 +26,7 @@
 use super::Study;
 use crate::plot::{Band, Figure, VerticalLine};
 use stability_core::aero::{Origin, defaults};
-use stability_core::case::CaseResult;
+use stability_core::case::{CaseResult, DampingModel};
 use stability_core::faired::{self, RegimeKind};
 use stability_core::geometry::{Planform, Size, sonic_leading_edge_mach};
 
@@ -64,17 +64,35 @@ pub(crate) fn faired_label() -> &'static str {
 pub(crate) fn damping_joins(sweeps: &[f64]) -> Vec<(f64, f64)> {
     sweeps
         .iter()
-        .flat_map(|&deg| regimes(deg))
+        .filter_map(|&deg| delta(deg))
+        .flat_map(|p| model_damping_joins(DampingModel::Faired, &p))
+        .collect()
+}
+
+/// The damping derivatives' joins of the fairing `model` on `planform`
+/// (none for a single theory).
+pub(crate) fn model_damping_joins(model: DampingModel, planform: &Planform) -> Vec<(f64, f64)> {
+    let regimes = match model {
+        DampingModel::Faired => faired::regimes(planform),
+        DampingModel::FairedTheories => faired::theories::regimes(planform),
+        _ => Vec::new(),
+    };
+    regimes
+        .iter()
         .filter(|r| r.kind == RegimeKind::Faired)
         .map(|r| (r.from, r.to))
         .collect()
 }
 
-/// The coefficients' joins, as the results had them.
+/// The coefficients' joins, as the results (of the wings `planforms`)
+/// had them: the methods' band, the default model's (and the lifting
+/// surface's) join through the sonic point, `faired-theories`' joins.
 pub(crate) fn coefficient_joins<'a>(
     results: impl Iterator<Item = &'a CaseResult>,
+    planforms: &[Planform],
 ) -> Vec<(f64, f64)> {
     let methods = (defaults::SUBSONIC_LIMIT, defaults::SUPERSONIC_LIMIT);
+    let sonic: Vec<(f64, f64)> = planforms.iter().filter_map(faired::sonic_join).collect();
     let mut out = Vec::new();
     for r in results {
         let o = r.coefficients.origin;
@@ -86,7 +104,10 @@ pub(crate) fn coefficient_joins<'a>(
         ] {
             match origin {
                 Origin::Method => out.push(methods),
-                Origin::DampingModel(_) | Origin::LiftingSurface => out.extend(faired::JOINS),
+                Origin::DampingModel("lifting-surface") | Origin::LiftingSurface => {
+                    out.extend(sonic.iter().copied())
+                }
+                Origin::DampingModel(_) => out.extend(faired::JOINS),
                 Origin::Table | Origin::Datcom => {}
             }
         }
@@ -114,7 +135,11 @@ pub(crate) fn merged(mut joins: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
 pub fn faired(mut fig: Figure, study: &Study, sweeps: &[f64], basis: Basis) -> Figure {
     let mut joins = Vec::new();
     if basis != Basis::Damping {
-        joins.extend(coefficient_joins(study.results.iter().flatten().flatten()));
+        let planforms: Vec<Planform> = sweeps.iter().filter_map(|&d| delta(d)).collect();
+        joins.extend(coefficient_joins(
+            study.results.iter().flatten().flatten(),
+            &planforms,
+        ));
     }
     if basis != Basis::Coefficients {
         joins.extend(damping_joins(sweeps));
@@ -181,6 +206,13 @@ mod tests {
             let r = regimes(deg);
             let sup = r
                 .iter()
+                .find(|r| r.kind == RegimeKind::MachBoxSupersonicEdge)
+                .unwrap();
+            assert_eq!(sup.from, x, "{deg}°");
+            let p = delta(deg).unwrap();
+            let old = faired::theories::regimes(&p);
+            let sup = old
+                .iter()
                 .find(|r| r.kind == RegimeKind::SupersonicEdge)
                 .unwrap();
             assert_eq!(sup.from, x, "{deg}°");
@@ -191,8 +223,9 @@ mod tests {
     /// the methods' coefficients (`faired-slender`), below it the lift
     /// slope (Fig 5) is the subsonic method's, above it the supersonic
     /// method's, inside it neither. (Under the default `faired` model the
-    /// lift slope is the lattice's to 0.9 and linear theory's from 1.2, C_D0
-    /// the method's: the band is their union, 0.8 to 1.2.)
+    /// lift slope is the lifting surface's, joined from 0.99 to the Mach
+    /// box's first Mach number, C_D0 the method's: the band is the
+    /// methods', 0.8 to 1.2, which holds the join.)
     #[test]
     fn the_coefficients_band_is_where_the_lift_slope_is_neither_method() {
         use stability_core::case::{Case, DampingModel, evaluate};
@@ -213,9 +246,13 @@ mod tests {
             .iter()
             .filter_map(|&m| at(m, DampingModel::Faired))
             .collect();
-        assert_eq!(merged(coefficient_joins(faired.iter())), vec![(0.8, 1.2)]);
+        let p45 = [delta(45.0).unwrap()];
+        assert_eq!(
+            merged(coefficient_joins(faired.iter(), &p45)),
+            vec![(0.8, 1.2)]
+        );
         assert_eq!(results.len(), ms.len());
-        let bands = merged(coefficient_joins(results.iter().map(|(_, r)| r)));
+        let bands = merged(coefficient_joins(results.iter().map(|(_, r)| r), &p45));
         let [(from, to)] = bands[..] else {
             panic!("{bands:?}")
         };
@@ -241,9 +278,18 @@ mod tests {
             merged(vec![(1.0, 1.2), (0.8, 1.2), (0.9, 1.0), (1.5, 1.6)]),
             vec![(0.8, 1.2), (1.5, 1.6)]
         );
-        // the faired model's two joins touch at M = 1: one band, 0.9 to 1.2
+        // the default model's one join on each wing, from 0.99 to the
+        // Mach box's first Mach number (1.0055 on the 45° delta, 1.0164 on
+        // the 60°): one band, within 0.03 of M = 1
+        let [(from, to)] = merged(damping_joins(&[45.0, 60.0]))[..] else {
+            panic!()
+        };
+        assert_eq!(from, faired::SONIC_JOIN);
+        assert!((to - 1.0164).abs() < 1e-3 && to < 1.03, "{to}");
+        // the note's fairing's two joins touch at M = 1: 0.9 to 1.2
+        let p = delta(45.0).unwrap();
         assert_eq!(
-            merged(damping_joins(&[45.0, 60.0])),
+            merged(model_damping_joins(DampingModel::FairedTheories, &p)),
             vec![(faired::LIFTING_SURFACE_LIMIT, faired::SUPERSONIC_FROM)]
         );
     }

@@ -184,6 +184,10 @@ impl Family<'_> {
 
     /// V̄ at `area`.
     fn volume(&self, area: f64) -> f64 {
+        if area == 0.0 {
+            // no surface (its scaled shape has no M.A.C.)
+            return 0.0;
+        }
         let w = &self.config.wing;
         let f = (area / self.surface.shape.area()).sqrt();
         let shape = scaled(&self.surface.shape, f);

@@ -18,10 +18,10 @@
 //! # or rho with speed_of_sound), mass (or weight), I_y
 //!
 //! [model]               # optional
-//! damping = "faired"    # the default: the note's fairing (docs/damping-theories.md); or faired-slender,
+//! damping = "faired"    # the default: one lifting surface through M = 1 (docs/damping-theories.md); or faired-theories, faired-slender,
 //!                       # garrick, garner-taper, slender, supersonic, transonic, transonic-frequency,
 //!                       # lifting-surface, lifting-surface-frequency
-//! aero = "default"      # or lifting-surface: lift slope and aerodynamic centre from the lattice (M < 1)
+//! aero = "default"      # or lifting-surface: lift slope and aerodynamic centre from the lifting surface (0 ≤ M ≤ 3)
 //! omega_bar = 0.3       # lifting-surface: the ω̄ it is evaluated at (default 0, quasi-steady);
 //!                       # the iterated theories and faired: the starting ω̄ (default √(−m_w/(μ₁i_B)))
 //! iterate_frequency = true

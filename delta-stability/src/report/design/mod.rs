@@ -18,7 +18,6 @@ pub mod page;
 
 use crate::plot::{Band, Figure, Series};
 use rayon::prelude::*;
-use stability_core::case::DampingModel;
 use stability_core::geometry::sonic_leading_edge_mach;
 use stability_core::grid::grid;
 use stability_core::modes::Mode;
@@ -138,11 +137,15 @@ impl Design {
     /// number named along the top, and where the leading edge turns sonic.
     pub fn figure(&self, title: &str, y: &str) -> Figure {
         let mut fig = Figure::new("design", title, "Mach number M", y);
-        let mut joins = super::regimes::coefficient_joins(self.results().map(|(_, r)| &r.result));
-        if self.cfg.case.damping == DampingModel::Faired {
-            let deg = self.cfg.case.planform.sweep_le.to_degrees();
-            joins.extend(super::regimes::damping_joins(&[deg]));
-        }
+        let planform = self.cfg.case.planform;
+        let mut joins = super::regimes::coefficient_joins(
+            self.results().map(|(_, r)| &r.result),
+            std::slice::from_ref(&planform),
+        );
+        joins.extend(super::regimes::model_damping_joins(
+            self.cfg.case.damping,
+            &planform,
+        ));
         let (lo, hi) = self.mach_range();
         let joins: Vec<(f64, f64)> = super::regimes::merged(joins)
             .into_iter()

@@ -1,8 +1,8 @@
-//! The faired model (`faired`, the default): the §7 theories joined through
+//! The previous default, `faired-theories`: the §7 theories joined through
 //! Mach number as the note built its Figs 19–24 — "with the aid of the
 //! results of the various theories … the curves of Figs. 19 to 24 were
 //! prepared" — each theory where the note trusts it, and between them a
-//! stated join (docs/damping-theories.md, "The faired model"):
+//! stated join (docs/damping-theories.md, "The note's fairing"):
 //!
 //! | Mach number | damping derivatives | lift slope, aerodynamic centre |
 //! | --- | --- | --- |
@@ -12,30 +12,12 @@
 //! | 1 < M < 1.2 | faired: Mangler's at M = 1 joined to linear theory's at 1.2 | (faired, as above) |
 //! | M ≥ [`SUPERSONIC_FROM`] (1.2) | linear supersonic theory: (36) while the leading edge is subsonic (a cropped wing: its potentials less the tips' corrections, `supersonic::subsonic_edge`), the supersonic-edge theory past it (`supersonic::edge_theory`; continuous at the sonic edge) | the same theory's |
 //!
-//! The bands are where the curve is a guess: the report draws them shaded.
-//!
-//! # Narrowing the joins (not done yet)
-//! [`crate::lifting_surface::mach_range`] gives one lifting-surface
-//! solution at every M from 0 to 3 (ω̄ ≥ 0.3 near M = 1), and
-//! `--damping lifting-surface-frequency` already iterates the short
-//! period's ω̄ on it. On the note's deltas it is now one curve through
-//! M = 1 at the short period's frequencies: the sonic point and the Mach
-//! box's first Mach number (1.0055 on the 45° delta, 1.0164 on the 60°)
-//! agree within 1.23 % of C_Lα at ω̄ = 0.3 and 0.6, once the Mach box's
-//! quadrature of the wing's own potential followed the kernel's phases
-//! (`supersonic::oscillatory::direct::PHASE_PER_PIECE`;
-//! `docs/lattice-near-sonic.md`, "The note's deltas across M = 1"); the
-//! quasi-steady lift slope and aerodynamic centre are joined across the
-//! band 0.99 < M < M_b through linear theory's sonic point
-//! ([`crate::lifting_surface::mach_range::coefficients`]). Making it this
-//! model's damping still needs a fallback below ω̄ = 0.3 near M = 1
-//! (Mangler's theory, as now) and the cost. With the march's exact
-//! pruning and its rows in parallel a near-sonic Mach box solve takes
-//! 0.85 s (was 5.5 s), and `sweep --damping lifting-surface-frequency`
-//! over M = 0.5–2 (31 points) takes 11 s on the 45° delta and 22 s on the
-//! 60° (2 cores) — a multiple of the whole report's 22 s, so the report's
-//! sweeps would need the Mach box tabulated in Mach number too.
+//! The bands are where the curve is a guess. Until stop 28 this was the
+//! default `faired`; the default is now one lifting-surface theory through
+//! M = 1 ([`super`]), and this model is kept for comparison and for the
+//! note's own construction.
 
+use super::{Regime, RegimeKind};
 use crate::aero::{TheoryCoefficients, Value, hermite, monotone_slopes};
 use crate::damping::{
     Damping, DampingError, Theory, WingInput, damping_derivatives_with, theory_coefficients,
@@ -64,33 +46,7 @@ pub const SUPERSONIC_FROM: f64 = 1.2;
 /// (Mangler's theory to linear supersonic theory).
 pub const JOINS: [(f64, f64); 2] = [(LIFTING_SURFACE_LIMIT, SONIC), (SONIC, SUPERSONIC_FROM)];
 
-/// What the faired model is over a range of Mach numbers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum RegimeKind {
-    /// Subsonic: lifting-surface theory.
-    Subsonic,
-    /// Faired between two theories: a guess.
-    Faired,
-    /// Supersonic, the leading edge subsonic: (36).
-    SubsonicEdge,
-    /// Supersonic, the leading edge supersonic: the supersonic-edge theory.
-    SupersonicEdge,
-}
-
-/// A range of Mach numbers and what the faired model is there.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct Regime {
-    pub from: f64,
-    /// `f64::INFINITY` for the last.
-    pub to: f64,
-    pub kind: RegimeKind,
-    /// In words, for a legend: "lifting surface", "faired between
-    /// theories", "(36), subsonic leading edge", "supersonic leading edge".
-    pub label: &'static str,
-}
-
-/// The faired model's regimes for a planform, in Mach order: subsonic to
+/// The note's fairing's regimes for a planform, in Mach order: subsonic to
 /// 0.9, the two joins, then (36) up to the Mach number where the leading
 /// edge turns sonic, 1/cos Λ (`geometry::sonic_leading_edge_mach`), and the
 /// supersonic-edge theory beyond. (Where the leading edge is already sonic
