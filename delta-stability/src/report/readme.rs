@@ -143,9 +143,12 @@ fn figure_paragraph(f: &Findings, heavy: &Inadequate) -> String {
         )
     });
     let diverges = if w45.unstable.is_empty() {
-        "it never diverges".to_string()
+        "its short period never diverges".to_string()
     } else {
-        format!("it diverges at M {}", show_intervals(&w45.unstable))
+        format!(
+            "its short period diverges at M {}",
+            show_intervals(&w45.unstable)
+        )
     };
     format!(
         "Fig. 33 of the note, recomputed by one linear lifting-surface theory at the short period's own frequency (the default `faired` model: the doublet lattice below M = 1, its sonic extrapolation at M = 1, the Mach box above; joined only across the shaded band, within 0.03 of M = 1). At μ₁ = 50 the 45° tailless delta (blue) {}{least} — the note finds “serious instability in the range {lo} < M < {hi}” — and {diverges}. At μ₁ = 50 the 60° delta {}; at μ₁ = {HEAVY_MU1} it {}. {}",
