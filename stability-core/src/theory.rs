@@ -228,7 +228,7 @@ impl Theory {
     }
 
     /// The equations as messages cite them, in parentheses: `(39)–(40)`,
-    /// `(§7, doublet lattice)`.
+    /// `(§7, doublet lattice, Mach box)`.
     pub fn cited(self) -> String {
         match self.equations() {
             e if e.starts_with('(') => e.to_string(),
@@ -318,10 +318,13 @@ mod tests {
         assert!(Theory::Slender.row().help().contains(" (eq (37)); valid: "));
         let h = Theory::LiftingSurface.row().help();
         assert!(
-            h.contains(" (§7, doublet lattice); valid: any straight-tapered wing"),
+            h.contains(" (§7, doublet lattice, Mach box); valid: any straight-tapered wing"),
             "{h}"
         );
-        assert_eq!(Theory::LiftingSurface.cited(), "(§7, doublet lattice)");
+        assert_eq!(
+            Theory::LiftingSurface.cited(),
+            "(§7, doublet lattice, Mach box)"
+        );
         assert_eq!(Theory::TransonicFrequency.cited(), "(39)–(40)");
     }
 }
