@@ -10,8 +10,8 @@
 
 use divan::{Bencher, black_box};
 use stability_core::geometry::{Planform, Size, Trapezoid};
+use stability_core::lifting_surface::mach_box::{MachBoxSpec, solve};
 use stability_core::lifting_surface::{Extrapolation, Lattice, LatticeSpec};
-use stability_core::supersonic::oscillatory::{MachBoxSpec, solve};
 
 fn main() {
     divan::main();
@@ -54,7 +54,7 @@ fn mach_box_default(bencher: Bencher) {
 
 /// The default grid with a subsonic leading edge (M = 1.6, β cot Λ =
 /// 0.72): the diaphragm's march, with the edge's weights and near-field
-/// coefficients (`supersonic::oscillatory::edge`).
+/// coefficients (`lifting_surface::mach_box::edge`).
 #[divan::bench(sample_count = 10)]
 fn mach_box_default_subsonic_edge(bencher: Bencher) {
     let w = wing();

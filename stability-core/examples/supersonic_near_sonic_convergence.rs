@@ -11,7 +11,7 @@
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
 use stability_core::lifting_surface::Solution;
-use stability_core::supersonic::oscillatory::{MachBoxSpec, solve};
+use stability_core::lifting_surface::mach_box::{MachBoxSpec, solve};
 
 fn main() {
     let text = std::fs::read_to_string(concat!(

@@ -8,7 +8,7 @@
 //! `cargo run --release -p stability-core --example supersonic_subsonic_edge_convergence [sweep mach]...`
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::supersonic::oscillatory::{MachBoxError, MachBoxSpec, solve};
+use stability_core::lifting_surface::mach_box::{MachBoxError, MachBoxSpec, solve};
 use stability_core::supersonic::{Wing, edge_theory};
 
 fn main() {

@@ -33,7 +33,7 @@
 //! takes the M.A.C. as the reference chord ([`Planform::reference_chord`]),
 //! as §3 says, and reproduces (34)–(35) as printed.
 
-use crate::display::Num;
+use crate::numerics::display::Num;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -445,3 +445,5 @@ impl From<&Planform> for Trapezoid {
         }
     }
 }
+
+pub mod configuration;

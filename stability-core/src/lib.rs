@@ -5,82 +5,69 @@
 //!
 //! Equation numbers in this crate's documentation are the report's.
 //!
-//! The modules follow the report's method, planform to response:
+//! The crate is in layers, each folder naming only those below it (no
+//! module imports one that imports it back: `cargo xtask modules` checks
+//! it), from the numbers up to the study:
 //!
-//! | the report | module |
-//! | --- | --- |
-//! | §2.2 the planform | [`geometry`] |
-//! | §5–6 aerodynamic coefficients, stiffness derivatives | [`aero`], [`stiffness`] |
-//! | §7 the damping derivatives and their theories; the faired model of Figs 19–24 | [`theory`], [`damping`], [`faired`], [`supersonic`] (supersonic leading edges), [`lifting_surface`] (subsonic lifting surface) |
-//! | §3 the derivative set; the user's tables of derivatives; DATCOM's derivatives in the report's notation | [`derivatives`], [`derivative_tables`], [`datcom`] |
-//! | §3–4, eqs (4)–(6) the stability quartic; its roots | [`quartic`], [`roots`] |
-//! | §4, eqs (7)–(8) the modes; the report's own method | [`modes`], [`classical`] |
-//! | §4 Routh, §8 the damping standard, §9 margins | [`criteria`] |
-//! | the overall verdict: every root judged, never "meets" with a growing mode | [`verdict`] |
-//! | a derivative set's analysis; a design point; a grid of them; the study | [`analysis`], [`case`], [`sweep`], [`study`] |
-//! | §10 which derivative drives the damping | [`sensitivity`] |
-//! | §11 responses | [`response`] |
-//! | the appendix's notations | [`notation`] |
-//! | the flight condition | [`atmosphere`] (U.S. Standard Atmosphere, 1976), [`flight`] (physical → μ₁, i_B, C_L·M², τ) |
-//! | the engineer's outputs | [`linear`] (state space), [`mode_shape`], [`damp`] (modes in seconds), [`cap`] (MIL-F-8785C short-period frequency), [`engineering`] (all of them) |
-//! | handbook data: dimensional derivatives, body or stability axes (issue 12) | [`dimensional`] |
-//!
-//! The data of the note's figures that set one theory beside another
-//! (Fig 4, Figs 14–15): [`figures`]; grids of values and their one
-//! tolerance: [`grid`].
-//!
-//! Around them: [`warnings`] (validity limits approached), [`invalid`]
-//! (an input that is not finite or not positive), [`json`] (the
-//! results as the command line prints them), [`display`] (numbers and
-//! quotes in messages), [`examples`] (the example aircraft).
+//! | layer | the report | modules |
+//! | --- | --- | --- |
+//! | [`numerics`] | — | roots of the quartic, interpolation, the solve-once table, grids, input checks, numbers in messages |
+//! | [`units`], [`geometry`], [`derivatives`] | §2.2, §3 | units and constants; the planform and a configuration's surfaces; the derivative set |
+//! | [`aerodynamics`] | §5–7, §10 | the lifting surface (lattice, near-sonic, Mach box) and its store of solutions; the closed-form theories; the damping models; the aerodynamic model |
+//! | [`dynamics`] | §3–4, §11 | the quartic (eqs 4–6), modes (eqs 7–8), responses, state space |
+//! | [`criteria`] | §4, §8, §9 | Routh, the damping standard, margins, MIL-F-8785C, verdicts |
+//! | [`analysis`] | — | a derivative set's analysis, whole, and the engineer's outputs |
+//! | [`design`] | §9–10 | design points, flight conditions, configurations' shares and tail sizing, sweeps, the study's grids |
+//! | [`uncertainty`] | — | uncertainty propagation and Sobol indices |
+//! | [`data`] | appendix | notations, handbook dimensional derivatives, DATCOM, the results as JSON |
 
-pub mod aero;
+pub mod aerodynamics;
 pub mod analysis;
-pub mod atmosphere;
-pub mod cap;
-pub mod case;
-pub mod classical;
-pub mod configuration;
 pub mod criteria;
-pub mod damp;
-pub mod damping;
-pub mod datcom;
-pub mod derivative_tables;
+pub mod data;
 pub mod derivatives;
-pub mod dimensional;
-pub mod display;
-pub mod engineering;
-pub mod examples;
-pub mod faired;
-pub mod figures;
-pub mod flight;
-pub mod frozen;
+pub mod design;
+pub mod dynamics;
 pub mod geometry;
-pub mod grid;
-pub mod invalid;
-pub mod json;
-pub mod lifting_surface;
-pub mod linear;
-pub mod memo;
-pub mod mode_shape;
-pub mod modes;
-pub mod notation;
-pub mod quartic;
-pub mod response;
-pub mod roots;
-pub mod sensitivity;
-pub mod stiffness;
-pub mod study;
-pub mod supersonic;
-pub mod sweep;
-pub mod theory;
+pub mod numerics;
 pub mod uncertainty;
 pub mod units;
-pub mod verdict;
-pub mod warnings;
 
 pub use derivatives::Derivatives;
-pub use quartic::{Quartic, QuarticGradient};
+pub use dynamics::quartic::{Quartic, QuarticGradient};
+
+// The module paths before the crate was put in layers, for the crates
+// that use them (to be removed once they name the layers).
+#[doc(hidden)]
+pub use aerodynamics::{
+    damping, figures, lifting_surface, models::aero, models::derivative_tables, models::faired,
+    models::stiffness, supersonic, theory, warnings,
+};
+#[doc(hidden)]
+pub use analysis::engineering;
+#[doc(hidden)]
+pub use criteria::{cap, verdict};
+#[doc(hidden)]
+pub use data::{datcom, dimensional, json, notation};
+#[doc(hidden)]
+pub use design::{atmosphere, case, examples, flight, study, sweep};
+#[doc(hidden)]
+pub use dynamics::{classical, damp, linear, mode_shape, modes, quartic, response, sensitivity};
+#[doc(hidden)]
+pub use lifting_surface::precomputed as frozen;
+#[doc(hidden)]
+pub use numerics::{display, grid, invalid, memo, roots};
+#[doc(hidden)]
+pub mod configuration {
+    pub use crate::aerodynamics::body;
+    pub use crate::aerodynamics::lifting_surface::configuration as lattice;
+    pub use crate::aerodynamics::lifting_surface::configuration::ConfigurationError;
+    pub use crate::aerodynamics::lifting_surface::{ConfigurationSolution, Contribution};
+    pub use crate::aerodynamics::models::increment;
+    pub use crate::aerodynamics::supersonic::{configuration as supersonic, downwash};
+    pub use crate::design::{shares, sizing};
+    pub use crate::geometry::configuration::*;
+}
 
 /// The README's example, compiled and run as a doctest.
 #[cfg(doctest)]

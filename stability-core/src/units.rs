@@ -1,11 +1,11 @@
 //! The two systems of units of the program's inputs, defined once: SI
 //! (metres, kilograms, newtons, seconds) and the foot–slug system (feet,
 //! slugs, pounds-force, seconds), used by physical flight conditions
-//! ([`crate::flight`]) and by handbook derivative sets
-//! ([`crate::dimensional`]).
+//! ([`crate::design::flight`]) and by handbook derivative sets
+//! ([`crate::data::dimensional`]).
 
 use crate::analysis::STANDARD_GRAVITY;
-use crate::atmosphere::{FOOT, KG_PER_SLUG, NEWTON_PER_LBF};
+use crate::design::atmosphere::{FOOT, KG_PER_SLUG, NEWTON_PER_LBF};
 use serde::Serialize;
 
 /// The handbooks' g in ft/s², 32.174 (g₀/0.3048 = 32.174 05 to more

@@ -8,8 +8,8 @@
 
 use stability_core::frozen::{self, Kind};
 use stability_core::geometry::Trapezoid;
+use stability_core::lifting_surface::mach_box::{MachBoxSpec, solve};
 use stability_core::lifting_surface::{Lattice, LatticeSpec, Solution};
-use stability_core::supersonic::oscillatory::{MachBoxSpec, solve};
 
 fn fresh(kind: Kind, wing: &Trapezoid, mach: f64, omega_bar: f64) -> Solution {
     match kind {

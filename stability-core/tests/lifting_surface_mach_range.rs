@@ -12,12 +12,12 @@
 use stability_core::aero::lifting_surface_steady;
 use stability_core::damping::{DampingError, Theory, WingInput, damping_derivatives};
 use stability_core::geometry::{Planform, Size, Trapezoid};
+use stability_core::lifting_surface::mach_box::{self as mach_box, MachBoxSpec};
 use stability_core::lifting_surface::mach_range::{
     MACH_BOX_STEP, MACH_BOX_VERIFIED_BETA_COT, Method, coefficients, first_mach_box_mach, solution,
     sonic_steady, steady,
 };
 use stability_core::lifting_surface::{Harmonic, LiftingSurfaceError, Solution, cache};
-use stability_core::supersonic::oscillatory::{self as mach_box, MachBoxSpec};
 use stability_core::warnings::Warning;
 use std::f64::consts::PI;
 

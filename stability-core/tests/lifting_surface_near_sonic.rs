@@ -8,12 +8,12 @@
 
 use stability_core::damping::mangler_k;
 use stability_core::geometry::Trapezoid;
+use stability_core::lifting_surface::mach_box::cache as mach_box;
 use stability_core::lifting_surface::mach_range::first_mach_box_mach;
 use stability_core::lifting_surface::{
     Lattice, LatticeSpec, LiftingSurfaceError, Solution, Spacing, near_sonic, sonic_limit,
 };
 use stability_core::supersonic::Wing;
-use stability_core::supersonic::oscillatory::cache as mach_box;
 use stability_core::supersonic::transonic::z_wdot_eq36_near_sonic;
 use std::f64::consts::PI;
 

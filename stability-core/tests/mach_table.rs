@@ -6,9 +6,9 @@
 //! quasi-steady Mach derivatives `mach_range::steady` takes from it.
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
+use stability_core::lifting_surface::mach_box::cache::solution;
 use stability_core::lifting_surface::mach_range::steady;
 use stability_core::lifting_surface::{Solution, mach_table};
-use stability_core::supersonic::oscillatory::cache::solution;
 
 fn wing(deg: f64, taper: f64) -> Trapezoid {
     let p = Planform::new(deg.to_radians(), taper, Size::RootChord(1.0)).unwrap();

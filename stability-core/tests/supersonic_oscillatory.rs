@@ -8,7 +8,7 @@
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
 use stability_core::lifting_surface::Solution;
-use stability_core::supersonic::oscillatory::{MachBoxError, MachBoxSpec, cache, solve};
+use stability_core::lifting_surface::mach_box::{MachBoxError, MachBoxSpec, cache, solve};
 use stability_core::supersonic::{Wing, edge_theory};
 
 fn fixture() -> Vec<serde_json::Value> {

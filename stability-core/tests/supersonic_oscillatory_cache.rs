@@ -1,12 +1,12 @@
-//! The Mach box's frequency interpolation (`supersonic::oscillatory::cache::
+//! The Mach box's frequency interpolation (`lifting_surface::mach_box::cache::
 //! solution_with`, `Harmonic::Interpolated`) against its direct solves, on
 //! the note's 45° and 60° deltas between the frequency nodes; and the
 //! direct solve it keeps near M = 1, where the cubic between the nodes is
 //! not good enough.
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
+use stability_core::lifting_surface::mach_box::cache::{INTERPOLATED_FROM_BETA, solution_with};
 use stability_core::lifting_surface::{Harmonic, Solution};
-use stability_core::supersonic::oscillatory::cache::{INTERPOLATED_FROM_BETA, solution_with};
 
 fn delta(deg: f64) -> Trapezoid {
     let p = Planform::new(deg.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();

@@ -7,6 +7,7 @@
 //! when anything is stale, and a test runs that check under `cargo test`.
 
 mod bench;
+mod modules;
 mod regen;
 
 use std::path::{Path, PathBuf};
@@ -77,6 +78,8 @@ fn main() -> ExitCode {
         ["tables"] => tables(&root(), false),
         ["tables", "--add"] => tables(&root(), true),
         ["bench-report"] => bench::bench_report(&root()),
+        ["modules"] => modules::check(&root(), None),
+        ["modules", src] => modules::check(&root(), Some(src)),
         ["help"] | ["--help"] | ["-h"] | [] => {
             println!("{USAGE}");
             Ok(())

@@ -26,10 +26,10 @@
 //! Where the model is quasi-steady at the Mach number and only μ₁, i_B
 //! (or I_y) and the derivatives are uncertain, the aerodynamics are
 //! evaluated once per Mach number and damping theory and a sample costs a
-//! quartic and its analysis (as [`crate::sweep`] reuses them). Otherwise
-//! each sample is a design point ([`crate::case::evaluate_point_with`]),
+//! quartic and its analysis (as [`crate::design::sweep`] reuses them). Otherwise
+//! each sample is a design point ([`crate::design::case::evaluate_point_with`]),
 //! the lifting surface's solves interpolated in its cached
-//! [`crate::lifting_surface::FrequencyTable`] (shared by every sample).
+//! [`crate::aerodynamics::lifting_surface::FrequencyTable`] (shared by every sample).
 
 pub mod dist;
 pub mod quasi;

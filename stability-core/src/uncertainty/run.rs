@@ -8,9 +8,9 @@ use super::study::{
     AtMach, BATCH, CHUNK, Levels, MAX_FACTORS, Options, Outcome, Prepared, Sensitivity, Study,
     Summary,
 };
-use crate::case::Case;
 use crate::criteria::Verdict;
-use crate::roots::{Complex64, RootsError, solve_quartics};
+use crate::design::case::Case;
+use crate::numerics::roots::{Complex64, RootsError, solve_quartics};
 use rand::rngs::ChaCha8Rng;
 use rand::{RngExt, SeedableRng};
 use rand_distr::StandardNormal;
@@ -222,7 +222,7 @@ impl AtMach<'_> {
     /// Rows `rows` of chunk `chunk` (a generator on stream `chunk`), a
     /// [`BLOCK`] of rows at a time: each row's samples prepared up to
     /// their quartics, the block's quartics solved in one
-    /// [`solve_quartics`] call (the bits of one [`crate::roots::solve_quartic`]
+    /// [`solve_quartics`] call (the bits of one [`crate::numerics::roots::solve_quartic`]
     /// each), then added row by row as [`AtMach::chunk_per_sample`] adds
     /// them.
     fn chunk(&self, options: &Options, chunk: u64, rows: usize, cases: &mut [Case]) -> Tally {

@@ -4,12 +4,12 @@ use super::dist::{CorrelationError, Dist, DistError, cholesky, phi};
 use super::quasi::Sampling;
 use super::sobol::Indices;
 use super::stats::{Proportion, Quantiles};
+use crate::aerodynamics::lifting_surface::Harmonic;
 use crate::analysis::Analysis;
-use crate::case::{Case, DampingModel, evaluate_point_with};
 use crate::criteria::{Category, Verdict, phugoid_level, short_period_level};
-use crate::flight::{Air, Altitude, FlightCondition, Mass};
-use crate::lifting_surface::Harmonic;
-use crate::roots::{Complex64, RootsError, solve_quartic};
+use crate::design::case::{Case, DampingModel, evaluate_point_with};
+use crate::design::flight::{Air, Altitude, FlightCondition, Mass};
+use crate::numerics::roots::{Complex64, RootsError, solve_quartic};
 use crate::{Derivatives, Quartic};
 use serde::Serialize;
 
@@ -286,7 +286,7 @@ fn check_inputs(inputs: &[Input], flight: Option<&FlightCondition>) -> Result<()
 pub struct Outcome {
     /// The §8 standard on the short period ([`crate::criteria::Verdict::of`]).
     pub standard: Verdict,
-    /// The overall verdict, every root judged ([`crate::verdict::overall`]).
+    /// The overall verdict, every root judged ([`crate::criteria::verdict::overall`]).
     pub overall: Verdict,
     /// The short period's MIL-F-8785C levels in Categories A, B, C and the
     /// phugoid's: 1–3, 4 for worse than Level 3, 0 not assessed.
@@ -320,7 +320,7 @@ impl Outcome {
         };
         Outcome {
             standard: a.verdict,
-            overall: crate::verdict::overall(a),
+            overall: crate::criteria::verdict::overall(a),
             levels: [
                 sp_level(Category::A),
                 sp_level(Category::B),
@@ -538,7 +538,7 @@ pub struct Prepared {
 
 impl Prepared {
     /// The sample's outcome from its quartic's roots as [`solve_quartic`]
-    /// gives them (or [`crate::roots::solve_quartics`], the same bits):
+    /// gives them (or [`crate::numerics::roots::solve_quartics`], the same bits):
     /// [`AtMach::evaluate`]'s result.
     pub fn finish(
         &self,

@@ -1,0 +1,12 @@
+//! The models a design point is computed with: the damping model
+//! ([`faired`] and the others, each a [`DampingModel`]), the aerodynamic
+//! model of the coefficients ([`aero`]), the stiffness derivatives
+//! ([`stiffness`]), a configuration's increment over its wing
+//! ([`increment`]) and the user's derivative tables
+//! ([`derivative_tables`]).
+
+pub mod aero;
+pub mod derivative_tables;
+pub mod faired;
+pub mod increment;
+pub mod stiffness;

@@ -1,0 +1,685 @@
+//! A design point of the report's study, whole: a planform at a flight
+//! condition, with its aerodynamic model and a damping theory → the
+//! derivative set (§5–7) → the quartic, its modes and criteria (§4, §8).
+//!
+//! Where the damping theory depends on the frequency parameter ω̄ (Mangler's
+//! (39)–(40), the lifting surface's `lifting-surface-frequency`, the
+//! default `faired` model below M = 1.2), ω̄ is
+//! iterated to the short-period frequency it produces, ω̄ = s/μ₁ — the
+//! consistency the report could not afford ("quasi-static derivatives are
+//! used in cases where frequency effects should properly be included",
+//! Summary); the result records the starting and converged ω̄ and what the
+//! iteration changed ([`FrequencyIteration`]). One iteration, the secant
+//! method on the residual s(ω̄)/μ₁ − ω̄, serves every such theory.
+
+use crate::Derivatives;
+use crate::aerodynamics::damping::{
+    Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,
+    damping_derivatives_with, theory_coefficients, x_q, x_wdot,
+};
+use crate::aerodynamics::lifting_surface::Harmonic;
+use crate::aerodynamics::lifting_surface::configuration::ConfigurationError;
+use crate::aerodynamics::models::aero::{
+    AeroError, AeroModel, Coefficients, Configured, TheoryCoefficients, level_flight_lift,
+};
+use crate::aerodynamics::models::derivative_tables::TableUse;
+use crate::aerodynamics::models::faired;
+use crate::aerodynamics::models::stiffness::{Stiffness, stiffness};
+use crate::aerodynamics::theory::Row;
+use crate::aerodynamics::warnings::{Warning, Warnings};
+use crate::analysis::{Analysis, AnalysisError};
+use crate::design::shares::Shares;
+use crate::geometry::Planform;
+use crate::numerics::invalid::{self, Invalid};
+use serde::Serialize;
+
+/// Which damping derivatives a case uses; serializes as its name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DampingModel {
+    /// One theory, wherever it is asked for (errors outside its domain).
+    Theory(Theory),
+    /// The default ([`crate::aerodynamics::models::faired`]): one frequency-dependent linear
+    /// lifting-surface theory at the short period's own ω̄ from M = 0 to 3
+    /// — the doublet lattice, its sonic extrapolation at M = 1, the Mach box
+    /// above — with one stated join narrower than ±0.03 about M = 1 through
+    /// the sonic point; linear supersonic theory beyond M = 3; the lift
+    /// slope and aerodynamic centre from the same theory.
+    Faired,
+    /// The theories faired through Mach number as the note built its Figs
+    /// 19–24, `faired-theories` ([`crate::aerodynamics::models::faired::theories`], the default
+    /// until stop 28): lifting-surface theory at the short period's own ω̄
+    /// to M = 0.9, Mangler's transonic theory (38)–(40) at M = 1, linear
+    /// supersonic theory from M = 1.2 ((36), then the supersonic-edge
+    /// theory past the sonic leading edge), joined between by stated
+    /// cubics; the lift slope and aerodynamic centre from the same
+    /// theories.
+    FairedTheories,
+    /// The previous slender-wing fairing, `faired-slender`
+    /// ([`crate::aerodynamics::models::faired::slender_fairing`]): slender-wing theory (37) to
+    /// M = 1, blended into linear supersonic theory over 1 ≤ M ≤ 1.2, (36)
+    /// held at its sonic-leading-edge values past the sonic edge, with a
+    /// warning; quasi-steady, and the default methods' lift slope and
+    /// aerodynamic centre.
+    FairedSlender,
+}
+
+impl Serialize for DampingModel {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
+impl DampingModel {
+    /// Whether the derivatives depend on μ₁ and i_B. They do not, except
+    /// through the frequency parameter ω̄ = s/μ₁ of a frequency-dependent
+    /// theory: μ₁ and i_B enter the equations of motion (eqs 2, 4), not the
+    /// derivatives of §5–7. So a sweep over them need evaluate the
+    /// aerodynamics once per planform, Mach number and c.g. (The warnings
+    /// may depend on them: `supersonic`'s low-frequency rule is checked at
+    /// the short period's ω̄.)
+    pub fn depends_on_mass(self) -> bool {
+        self.uses_frequency()
+    }
+
+    /// Whether the model's derivatives depend on the frequency parameter ω̄
+    /// (at some Mach number) and it is iterated (Mangler's (39)–(40),
+    /// `lifting-surface-frequency`, `faired`).
+    pub fn uses_frequency(self) -> bool {
+        match self {
+            DampingModel::Theory(t) => t.uses_frequency(),
+            DampingModel::Faired | DampingModel::FairedTheories => true,
+            DampingModel::FairedSlender => false,
+        }
+    }
+
+    /// Whether the model's derivatives depend on ω̄ at Mach `mach`: the
+    /// faired model's below [`faired::SUPERSONIC_FROM`] only (linear
+    /// supersonic theory is quasi-steady; it checks its low-frequency rule
+    /// at §9's estimate of the short period's ω̄ as `supersonic` does).
+    pub fn uses_frequency_at(self, mach: f64) -> bool {
+        match self {
+            DampingModel::Faired => mach <= faired::MACH_RANGE_MAX,
+            DampingModel::FairedTheories => mach < faired::SUPERSONIC_FROM,
+            _ => self.uses_frequency(),
+        }
+    }
+
+    /// Every model: the two fairings, then the theories (in the order of
+    /// [`Theory::ALL`]).
+    pub const ALL: [DampingModel; 3 + Theory::ALL.len()] = {
+        let mut out = [DampingModel::Faired; 3 + Theory::ALL.len()];
+        out[1] = DampingModel::FairedTheories;
+        out[2] = DampingModel::FairedSlender;
+        let mut i = 0;
+        while i < Theory::ALL.len() {
+            out[3 + i] = DampingModel::Theory(Theory::ALL[i]);
+            i += 1;
+        }
+        out
+    };
+
+    /// The model's row of the registry ([`crate::aerodynamics::theory`]).
+    pub fn row(self) -> &'static Row {
+        match self {
+            DampingModel::Theory(t) => t.row(),
+            DampingModel::Faired => &FAIRED,
+            DampingModel::FairedTheories => &FAIRED_THEORIES,
+            DampingModel::FairedSlender => &FAIRED_SLENDER,
+        }
+    }
+
+    /// Whether the model takes a frequency parameter ω̄ at all
+    /// ([`Theory::takes_omega_bar`]).
+    pub fn takes_omega_bar(self) -> bool {
+        match self {
+            DampingModel::Theory(t) => t.takes_omega_bar(),
+            DampingModel::Faired | DampingModel::FairedTheories => true,
+            DampingModel::FairedSlender => false,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        self.row().name
+    }
+
+    /// `faired`, `faired-slender` or a theory's name.
+    pub fn parse(s: &str) -> Result<Self, UnknownDampingModel> {
+        match DampingModel::ALL.into_iter().find(|m| m.name() == s) {
+            Some(m) => Ok(m),
+            None => Err(UnknownDampingModel(s.parse::<Theory>().unwrap_err())),
+        }
+    }
+
+    /// The lift slope and aerodynamic centre the model's own theory gives
+    /// at `mach`, with their Mach derivatives — taken by
+    /// [`aero::Source::Default`](crate::aerodynamics::models::aero::Source::Default) in place of
+    /// the default methods: the supersonic theory's at M > 1
+    /// (`damping::theory_coefficients`), the faired model's everywhere
+    /// ([`faired::coefficients`]). `faired-slender` gives none.
+    pub fn own_coefficients(
+        self,
+        planform: &Planform,
+        mach: f64,
+    ) -> Result<Option<TheoryCoefficients>, DampingError> {
+        match self {
+            DampingModel::Theory(t) => theory_coefficients(t, planform, mach),
+            DampingModel::Faired => faired::coefficients(planform, mach),
+            DampingModel::FairedTheories => faired::theories::coefficients(planform, mach),
+            DampingModel::FairedSlender => Ok(None),
+        }
+    }
+}
+
+/// The default model: one lifting-surface theory through M = 1.
+const FAIRED: Row = Row {
+    name: "faired",
+    equations: "Figs 19–24",
+    summary: "the default: one frequency-dependent linear lifting-surface theory at the short period's own ω̄ from M = 0 to 3 (the doublet lattice, its sonic extrapolation at M = 1, the Mach box), one stated join through the sonic point between M = 0.99 and the Mach box's first Mach number (within ±0.03 of M = 1), linear supersonic theory beyond M = 3; the lift slope and aerodynamic centre from the same theory",
+    validity: "any Mach number (the lifting surface 0 ≤ M ≤ 3); true and cropped deltas, trapezoids",
+    supplies: "z_q, z_ẇ, m_q, m_ẇ, the lift slope and the aerodynamic centre",
+    source: "Albano & Rodden (AIAA J. 7(2), 1969); Pines, Dugundji & Neuringer (J. Aero. Sci. 22(10), 1955); docs/damping-theories.md, \"The faired model\"",
+};
+
+/// The note's fairing of its theories, the default until stop 28.
+const FAIRED_THEORIES: Row = Row {
+    name: "faired-theories",
+    equations: "Figs 19–24",
+    summary: "the note's own fairing: the lifting surface at the short period's own ω̄ to M = 0.9, Mangler's transonic theory (39)–(40) at M = 1, linear supersonic theory (36) from 1.2, joined between by stated cubics; the lift slope and aerodynamic centre from the same theories",
+    validity: "any Mach number; true and cropped deltas",
+    supplies: "z_q, z_ẇ, m_q, m_ẇ, the lift slope and the aerodynamic centre",
+    source: "the note's Figs 19–24 (docs/damping-theories.md, \"The note's fairing\")",
+};
+
+/// The previous, quasi-steady fairing.
+const FAIRED_SLENDER: Row = Row {
+    name: "faired-slender",
+    equations: "(37), (36)",
+    summary: "the previous, quasi-steady fairing (fast: no lattice): slender-wing theory (37) through M = 1, blended into (36) by M = 1.2, (36) held at its sonic-leading-edge values beyond the sonic edge",
+    validity: "any Mach number; true and cropped deltas",
+    supplies: "z_q, z_ẇ, m_q, m_ẇ",
+    source: "Ribner (NACA TN 1423); Mangler; Ribner & Malvestuto (NACA Rep. 908)",
+};
+
+/// A damping model's name that is neither a fairing's nor a theory's.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("{0}; or the fairings `faired` (the default), `faired-theories` and `faired-slender`")]
+pub struct UnknownDampingModel(#[from] pub UnknownTheory);
+
+/// A design point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    pub planform: Planform,
+    pub mach: f64,
+    /// c.g. position h (fraction of the M.A.C. aft of its leading edge).
+    pub h: f64,
+    /// Relative density μ₁ = m/(½ρSc̄).
+    pub mu1: f64,
+    /// Pitching inertia i_B = B/(mc̄²).
+    pub i_b: f64,
+    /// C_L·M² = W/(½ρa²S), constant in level flight (eq 24).
+    pub cl_m2: f64,
+    pub aero: AeroModel,
+    pub damping: DampingModel,
+    /// A starting (or fixed) frequency parameter for frequency-dependent
+    /// theories, and the short period's ω̄ at which `supersonic` checks its
+    /// low-frequency rule; `None`: §9's √(−m_w/(μ₁i_B)). For
+    /// `lifting-surface` the ω̄ it is evaluated at; `None`: quasi-steady.
+    pub omega_bar: Option<f64>,
+    /// Iterate ω̄ to consistency (frequency-dependent theories only).
+    pub iterate_frequency: bool,
+}
+
+/// The frequency iteration of a frequency-dependent theory.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct FrequencyIteration {
+    /// ω̄ the derivatives were first evaluated at.
+    pub initial: f64,
+    /// The consistent ω̄ = s/μ₁ (or the last iterate).
+    pub converged: f64,
+    pub iterations: usize,
+    pub converged_ok: bool,
+    /// Short-period cycles to half amplitude at the initial and converged ω̄.
+    pub cycles_to_half_initial: Option<f64>,
+    pub cycles_to_half_converged: Option<f64>,
+    /// m_θ̇ at the initial and converged ω̄.
+    pub m_thetadot_initial: f64,
+    pub m_thetadot_converged: f64,
+}
+
+/// Everything a design point yields.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseResult {
+    pub coefficients: Coefficients,
+    /// C_L of the level flight at this Mach number (eq 24).
+    pub c_l: f64,
+    pub stiffness: Stiffness,
+    pub damping: Damping,
+    pub derivatives: Derivatives,
+    pub analysis: Analysis,
+    pub frequency: Option<FrequencyIteration>,
+    pub warnings: Warnings,
+    /// What each derivative table of the aerodynamic model did
+    /// ([`crate::aerodynamics::models::derivative_tables`]): the derivatives above are with them.
+    pub tables: Vec<TableUse>,
+    /// Each part's share when the model has a configuration
+    /// ([`AeroModel::configuration`]).
+    pub configuration: Option<Shares>,
+}
+
+impl CaseResult {
+    /// The §9 margins of the design point `case` (whose result this is):
+    /// K_n (eq 42) and H_m, the neutral point h_n and the static margin
+    /// h_n − h ([`crate::criteria::NeutralPoint`]).
+    pub fn margins(&self, case: &Case) -> crate::criteria::Margins {
+        crate::criteria::Margins::at_cg(
+            &self.analysis.quartic,
+            &self.derivatives,
+            self.coefficients.lift_slope.value,
+            case.h,
+        )
+    }
+}
+
+/// The inputs of a design point that [`evaluate`] checks before use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CaseInput {
+    Mach,
+    Cg,
+    Mu1,
+    IB,
+    ClM2,
+}
+
+impl CaseInput {
+    /// The name of the field in [`Case`] and in configs.
+    pub fn name(self) -> &'static str {
+        match self {
+            CaseInput::Mach => "mach",
+            CaseInput::Cg => "cg",
+            CaseInput::Mu1 => "mu1",
+            CaseInput::IB => "i_b",
+            CaseInput::ClM2 => "cl_m2",
+        }
+    }
+}
+
+impl std::fmt::Display for CaseInput {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            CaseInput::Mach => "the Mach number",
+            CaseInput::Cg => "the c.g. position h",
+            CaseInput::Mu1 => "the relative density μ₁ (mu1)",
+            CaseInput::IB => "the pitching inertia i_B (i_b)",
+            CaseInput::ClM2 => "C_L·M² (cl_m2, eq 24)",
+        })
+    }
+}
+
+/// Why a design point has no result.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CaseError {
+    #[error(transparent)]
+    Invalid(#[from] Invalid<CaseInput>),
+    #[error("aerodynamic model: {0}")]
+    Aero(#[from] AeroError),
+    #[error("damping theory: {0}")]
+    Damping(#[from] DampingError),
+    #[error("{0}")]
+    Analysis(#[from] AnalysisError),
+    #[error("the configuration's surfaces and body: {0}")]
+    Configuration(#[from] ConfigurationError),
+}
+
+impl Case {
+    /// Check the flight condition: every input finite, and M, μ₁, i_B,
+    /// C_L·M² positive.
+    pub fn check(&self) -> Result<(), CaseError> {
+        let inputs = [
+            (CaseInput::Mach, self.mach),
+            (CaseInput::Cg, self.h),
+            (CaseInput::Mu1, self.mu1),
+            (CaseInput::IB, self.i_b),
+            (CaseInput::ClM2, self.cl_m2),
+        ];
+        for (quantity, value) in inputs {
+            invalid::finite(quantity, value)?;
+        }
+        for (quantity, value) in inputs {
+            if quantity != CaseInput::Cg {
+                invalid::positive(quantity, value)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The damping derivatives of the case's model at ω̄ (used by the
+/// frequency-dependent theories, and by `supersonic` for its low-frequency
+/// warning), the lifting surface's harmonic solutions had as `harmonic`
+/// says.
+fn damping_at(
+    case: &Case,
+    wing: &WingInput,
+    omega_bar: Option<f64>,
+    harmonic: Harmonic,
+) -> Result<Damping, CaseError> {
+    let (h, m) = (case.h, case.mach);
+    match case.damping {
+        // its ω̄ is the case's own (fixed), or none (quasi-steady)
+        DampingModel::Theory(t @ Theory::LiftingSurface) => Ok(damping_derivatives_with(
+            t,
+            wing,
+            h,
+            m,
+            case.omega_bar,
+            harmonic,
+        )?),
+        DampingModel::Theory(t) => Ok(damping_derivatives_with(
+            t, wing, h, m, omega_bar, harmonic,
+        )?),
+        DampingModel::Faired => Ok(faired::damping(wing, h, m, omega_bar, harmonic)?),
+        DampingModel::FairedTheories => {
+            Ok(faired::theories::damping(wing, h, m, omega_bar, harmonic)?)
+        }
+        DampingModel::FairedSlender => Ok(faired::slender_fairing(wing, h, m)?),
+    }
+}
+
+/// Evaluate a design point.
+pub fn evaluate(case: &Case) -> Result<CaseResult, CaseError> {
+    evaluate_with(case, true, Harmonic::Direct)
+}
+
+/// As [`evaluate`], the lifting surface's harmonic solutions had as
+/// `harmonic` says ([`Harmonic::Interpolated`]: the report's, which
+/// evaluates the frequency-dependent models at many design points).
+pub fn evaluate_harmonic(case: &Case, harmonic: Harmonic) -> Result<CaseResult, CaseError> {
+    evaluate_with(case, true, harmonic)
+}
+
+/// As [`evaluate`], without the eq (7) check (`analysis.classical` is
+/// `None`): the lean path of `delta-stability sweep`.
+pub fn evaluate_point(case: &Case) -> Result<CaseResult, CaseError> {
+    evaluate_with(case, false, Harmonic::Direct)
+}
+
+/// As [`evaluate_point`], the lifting surface's harmonic solutions had as
+/// `harmonic` says: [`Harmonic::Interpolated`] is the library sweep's, whose
+/// frequency iterations would otherwise solve the lattice at every iterate
+/// of every point.
+pub fn evaluate_point_with(case: &Case, harmonic: Harmonic) -> Result<CaseResult, CaseError> {
+    evaluate_with(case, false, harmonic)
+}
+
+fn evaluate_with(
+    case: &Case,
+    classical: bool,
+    harmonic: Harmonic,
+) -> Result<CaseResult, CaseError> {
+    case.check()?;
+    let point = Point::new(case, classical, harmonic)?;
+    let (run, frequency) = if case.damping.uses_frequency_at(case.mach) {
+        let (run, f) = point.iterate_frequency()?;
+        (run, Some(f))
+    } else {
+        (point.run(point.omega_bar_estimate())?, None)
+    };
+    let mut warnings = run.damping.warnings.clone();
+    if let Some(f) = &frequency
+        && !f.converged_ok
+    {
+        warnings.push(Warning::FrequencyNotConverged {
+            iterations: f.iterations,
+            last: f.converged,
+        });
+    }
+    Ok(CaseResult {
+        coefficients: point.coefficients,
+        c_l: point.c_l,
+        stiffness: point.stiffness,
+        damping: run.damping,
+        derivatives: run.derivatives,
+        analysis: run.analysis,
+        frequency,
+        warnings,
+        tables: run.tables,
+        configuration: run.configuration,
+    })
+}
+
+/// A design point's aerodynamics (§5–6), which do not depend on the
+/// damping theory or on ω̄.
+struct Point<'a> {
+    case: &'a Case,
+    coefficients: Coefficients,
+    c_l: f64,
+    stiffness: Stiffness,
+    wing: WingInput,
+    classical: bool,
+    harmonic: Harmonic,
+    /// The wing's own coefficients and the configuration's steady
+    /// increment, when the model has a configuration.
+    configured: Option<Configured>,
+}
+
+/// The damping derivatives at one ω̄, the derivative set they complete and
+/// its analysis.
+#[derive(Clone)]
+struct Run {
+    damping: Damping,
+    derivatives: Derivatives,
+    analysis: Analysis,
+    tables: Vec<TableUse>,
+    configuration: Option<Shares>,
+}
+
+impl<'a> Point<'a> {
+    fn new(case: &'a Case, classical: bool, harmonic: Harmonic) -> Result<Self, CaseError> {
+        let own = case.damping.own_coefficients(&case.planform, case.mach)?;
+        let (coefficients, configured) =
+            case.aero
+                .at_configured(&case.planform, case.mach, own.as_ref())?;
+        let c_l = level_flight_lift(case.cl_m2, case.mach).value;
+        Ok(Point {
+            case,
+            coefficients,
+            c_l,
+            stiffness: stiffness(&coefficients, c_l, case.h),
+            wing: WingInput::from(&case.planform),
+            classical,
+            harmonic,
+            configured,
+        })
+    }
+
+    /// The configuration's damping increment at ω̄ added to the wing's
+    /// `damping`, and the parts' shares; nothing without a configuration.
+    fn add_configuration(
+        &self,
+        damping: &mut Damping,
+        omega_bar: Option<f64>,
+    ) -> Result<Option<Shares>, CaseError> {
+        let Some(configured) = &self.configured else {
+            return Ok(None);
+        };
+        let case = self.case;
+        let w = omega_bar.unwrap_or(0.0);
+        let at_omega = match case.aero.configuration_for(&case.planform) {
+            Some(c) if w > 0.0 => c.increment_at_with(case.mach, w, self.harmonic)?,
+            _ => configured.increment.clone(),
+        };
+        let d = at_omega
+            .solution
+            .derivatives(case.h, 0.0)
+            .map_err(ConfigurationError::from)?;
+        let shares = Shares::new(
+            &configured.wing,
+            &damping.derivatives,
+            &configured.increment,
+            &at_omega,
+            case.h,
+        )
+        .map_err(ConfigurationError::from)?;
+        if case.mach >= faired::SUPERSONIC_FROM
+            && let Some(c) = case.aero.configuration_for(&case.planform)
+            && let Some(w) =
+                crate::aerodynamics::supersonic::configuration::downwash_warning(&c, case.mach)
+        {
+            damping.warnings.push(w);
+        }
+        let own = &mut damping.derivatives;
+        own.z_q += d.z_q;
+        own.m_q += d.m_q;
+        own.z_wdot += d.z_wdot;
+        own.m_wdot += d.m_wdot;
+        Ok(Some(shares))
+    }
+
+    /// The derivative set of eqs (9)–(31) with these damping derivatives.
+    fn derivatives(&self, d: &DampingDerivatives) -> Derivatives {
+        let (st, h) = (&self.stiffness, self.case.h);
+        let h0 = self.coefficients.aerodynamic_centre.value;
+        Derivatives {
+            x_u: st.x_u,
+            x_w: st.x_w,
+            x_wdot: x_wdot(h0, h, st.dcd_dalpha),
+            x_q: x_q(h0, h, st.x_w),
+            z_u: st.z_u,
+            z_w: st.z_w,
+            z_wdot: d.z_wdot,
+            z_q: d.z_q,
+            m_u: st.m_u,
+            m_w: st.m_w,
+            m_wdot: d.m_wdot,
+            m_q: d.m_q,
+            c_l: self.c_l,
+            mu1: self.case.mu1,
+            i_b: self.case.i_b,
+        }
+    }
+
+    fn run(&self, omega_bar: Option<f64>) -> Result<Run, CaseError> {
+        let mut damping = damping_at(self.case, &self.wing, omega_bar, self.harmonic)?;
+        let configuration = self.add_configuration(&mut damping, omega_bar)?;
+        let computed = self.derivatives(&damping.derivatives);
+        let (derivatives, tables) =
+            self.case
+                .aero
+                .derivatives
+                .apply(&computed, self.case.h, self.case.mach)?;
+        // the damping four as used, tables included
+        damping.derivatives = DampingDerivatives {
+            z_q: derivatives.z_q,
+            z_wdot: derivatives.z_wdot,
+            m_q: derivatives.m_q,
+            m_wdot: derivatives.m_wdot,
+        };
+        let analysis = if self.classical {
+            Analysis::of(&derivatives)?
+        } else {
+            Analysis::without_classical(&derivatives)?
+        };
+        Ok(Run {
+            damping,
+            derivatives,
+            analysis,
+            tables,
+            configuration,
+        })
+    }
+
+    /// The short period's ω̄ before any iteration: the case's own, else
+    /// §9's √(−m_w/(μ₁i_B)) (Fig 32) where m_w < 0.
+    fn omega_bar_estimate(&self) -> Option<f64> {
+        let case = self.case;
+        let m_w = self.stiffness.m_w;
+        case.omega_bar
+            .or_else(|| (m_w < 0.0).then(|| (-m_w / (case.mu1 * case.i_b)).sqrt()))
+    }
+
+    /// ω̄ iterated to the short period it produces, ω̄ = s/μ₁, from the
+    /// case's ω̄ or §9's √(−m_w/(μ₁i_B)) ([`Point::converge`]); with
+    /// `iterate_frequency` off, the derivatives at the starting ω̄.
+    fn iterate_frequency(&self) -> Result<(Run, FrequencyIteration), CaseError> {
+        let case = self.case;
+        let start = self.omega_bar_estimate().unwrap_or(0.1);
+        let first = self.run(Some(start))?;
+        let (w, current, iterations, ok) = if case.iterate_frequency {
+            self.converge(start, first.clone())
+        } else {
+            (start, first.clone(), 0, true)
+        };
+        let cycles = |r: &Run| {
+            r.analysis
+                .modes
+                .short_period()
+                .and_then(|m| m.cycles_to_half)
+        };
+        let f = FrequencyIteration {
+            initial: start,
+            converged: w,
+            iterations,
+            converged_ok: ok,
+            cycles_to_half_initial: cycles(&first),
+            cycles_to_half_converged: cycles(&current),
+            m_thetadot_initial: first.damping.derivatives.m_thetadot(),
+            m_thetadot_converged: current.damping.derivatives.m_thetadot(),
+        };
+        Ok((current, f))
+    }
+
+    /// The fixed point of g(ω̄) = s(ω̄)/μ₁, s the short period's frequency
+    /// with the derivatives at ω̄: the residual r = g(ω̄) − ω̄ driven below
+    /// 2·10⁻¹²ω̄ by the secant method ([`next_iterate`]), from `start`
+    /// (whose run is `first`). Returns the last ω̄ and its run, the
+    /// iterations (residuals evaluated) and whether it converged; it stops
+    /// unconverged where the short period does not oscillate, where a run
+    /// fails, or after [`MAX_FREQUENCY_ITERATIONS`].
+    fn converge(&self, start: f64, first: Run) -> (f64, Run, usize, bool) {
+        let mu1 = self.case.mu1;
+        let (mut w, mut current) = (start, first);
+        let mut previous = None;
+        for iterations in 1..=MAX_FREQUENCY_ITERATIONS {
+            let target = current.analysis.modes.short_period().map(|sp| sp.im / mu1);
+            let Some(target) = target.filter(|t| *t > 0.0 && t.is_finite()) else {
+                return (w, current, iterations - 1, false);
+            };
+            let r = target - w;
+            if r.abs() <= 2e-12 * w {
+                return (w, current, iterations, true);
+            }
+            let next = next_iterate(w, r, previous);
+            previous = Some((w, r));
+            match self.run(Some(next)) {
+                Ok(run) => (w, current) = (next, run),
+                Err(_) => return (w, current, iterations, false),
+            }
+        }
+        (w, current, MAX_FREQUENCY_ITERATIONS, false)
+    }
+}
+
+/// The frequency iteration gives up after this many residuals.
+pub const MAX_FREQUENCY_ITERATIONS: usize = 200;
+
+/// The next ω̄ from the residual r = g(ω̄) − ω̄ at ω̄ = `w` and the previous
+/// (ω̄, r): the secant step ω̄ − r/r′, r′ from the two, where r′ is that of
+/// a contraction (g′ = r′ + 1 within (−9, 0.75): a step between 0.1|r| and
+/// 4|r|) and the step stays positive; else — the first step, or a slope the
+/// secant cannot trust — the under-relaxed fixed point ω̄ + r/2, which
+/// converges for −3 < g′ < 1 (the map can overshoot). The secant converges
+/// superlinearly near the fixed point: the lattice's frequency iteration
+/// then needs a handful of solves, not the relaxation's forty.
+fn next_iterate(w: f64, r: f64, previous: Option<(f64, f64)>) -> f64 {
+    let relaxed = w + 0.5 * r;
+    let Some((wp, rp)) = previous else {
+        return relaxed;
+    };
+    let slope = (r - rp) / (w - wp);
+    let secant = w - r / slope;
+    if slope.is_finite() && slope > -10.0 && slope < -0.25 && secant > 0.0 {
+        secant
+    } else {
+        relaxed
+    }
+}
