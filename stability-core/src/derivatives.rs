@@ -2,6 +2,8 @@
 //! non-dimensional derivatives of eqs (2)–(4) and the three flight
 //! parameters that enter the stability quartic.
 
+use crate::numerics::invalid::{self, Invalid};
+
 /// A longitudinal derivative set in the report's notation (§3, eqs 2–4).
 ///
 /// Forces are made non-dimensional on ½ρSV (velocity derivatives), ½ρSc̄
@@ -62,5 +64,18 @@ impl DampingDerivatives {
     /// m_θ̇ = m_q + m_ẇ (damping in pitch, moment).
     pub fn m_thetadot(&self) -> f64 {
         self.m_q + self.m_wdot
+    }
+}
+
+impl Derivatives {
+    /// The set's inputs checked: every one finite, μ₁ and i_B positive.
+    pub fn check(&self) -> Result<(), Invalid<&'static str>> {
+        let values = self.quartic_input_values();
+        for (input, value) in Derivatives::QUARTIC_INPUTS.into_iter().zip(values) {
+            invalid::finite(input, value)?;
+        }
+        invalid::positive("mu1", self.mu1)?;
+        invalid::positive("i_b", self.i_b)?;
+        Ok(())
     }
 }

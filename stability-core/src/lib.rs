@@ -46,7 +46,9 @@ pub use aerodynamics::{
 #[doc(hidden)]
 pub use analysis::engineering;
 #[doc(hidden)]
-pub use criteria::{cap, verdict};
+pub use analysis::verdict;
+#[doc(hidden)]
+pub use criteria::cap;
 #[doc(hidden)]
 pub use data::{datcom, dimensional, json, notation};
 #[doc(hidden)]

@@ -4,9 +4,18 @@
 //! ([`crate::design::flight`]) and by handbook derivative sets
 //! ([`crate::data::dimensional`]).
 
-use crate::analysis::STANDARD_GRAVITY;
-use crate::design::atmosphere::{FOOT, KG_PER_SLUG, NEWTON_PER_LBF};
 use serde::Serialize;
+
+/// Standard gravity g₀ = 9.806 65 m/s² (exact, by definition: 3rd CGPM,
+/// 1901; ISO 80000-3).
+pub const STANDARD_GRAVITY: f64 = 9.806_65;
+/// The international foot, 0.3048 m exactly.
+pub const FOOT: f64 = 0.3048;
+/// The newton per pound-force: 1 lbf = 0.453 592 37 kg × g₀ = 4.448 221 615 260 5 N,
+/// exactly.
+pub const NEWTON_PER_LBF: f64 = 0.453_592_37 * STANDARD_GRAVITY;
+/// The kilogram per slug (14.593 902 937 2 kg): lbf·s²/ft, exactly.
+pub const KG_PER_SLUG: f64 = NEWTON_PER_LBF / FOOT;
 
 /// The handbooks' g in ft/s², 32.174 (g₀/0.3048 = 32.174 05 to more
 /// digits): the default g of a dimensional set in feet, as NASA CR-2144 and

@@ -13,11 +13,11 @@ pub use crate::aerodynamics::theory::{Theory, UnknownTheory};
 pub use crate::derivatives::DampingDerivatives;
 
 use crate::aerodynamics::lifting_surface::{Harmonic, LiftingSurfaceError, cache, mach_range};
-use crate::aerodynamics::models::aero::TheoryCoefficients;
 use crate::aerodynamics::supersonic::{self, EdgeRegime, SupersonicError, Wing, transonic};
 use crate::aerodynamics::warnings::{Warning, Warnings};
 use crate::geometry::Planform;
 use crate::numerics::display::{Num, OptNum};
+use crate::numerics::interpolation::Value;
 use crate::numerics::invalid::{self, Invalid};
 use serde::Serialize;
 use std::f64::consts::PI;
@@ -39,6 +39,21 @@ impl From<&Planform> for WingInput {
             taper: p.taper,
         }
     }
+}
+
+/// The lift slope and aerodynamic centre a damping model's own theory
+/// gives at one Mach number, each with its exact Mach derivative (eqs
+/// 27–29 need them): what [`Source::Default`] takes in place of the
+/// methods of [`defaults`], so that z_w, m_w come from the same theory as
+/// z_q, m_q, z_ẇ, m_ẇ.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct TheoryCoefficients {
+    /// The damping model's name (`supersonic`).
+    pub model: &'static str,
+    /// a = ∂C_L/∂α (per radian).
+    pub lift_slope: Value,
+    /// H₀, fraction of the M.A.C. aft of its leading edge.
+    pub aerodynamic_centre: Value,
 }
 
 impl DampingDerivatives {

@@ -2,7 +2,6 @@
 //! a result. Held inline (a design point's evaluation allocates nothing) and
 //! written out only when displayed.
 
-use crate::aerodynamics::lifting_surface::mach_range::MACH_BOX_VERIFIED_BETA_COT;
 use crate::aerodynamics::theory::Theory;
 use crate::numerics::display::Num;
 use arrayvec::ArrayVec;
@@ -62,9 +61,15 @@ pub enum Warning {
     /// `at` behind the wing's apex, where the tips' Mach lines meet the
     /// centre line `from` behind it (in wing M.A.C.s).
     DownwashNearWing { mach: f64, at: f64, from: f64 },
-    /// The Mach box with a subsonic leading edge below the verified
-    /// β cot Λ (`lifting_surface::mach_range::MACH_BOX_VERIFIED_BETA_COT`).
-    MachBoxSubsonicEdge { mach: f64, beta_cot: f64 },
+    /// The Mach box with a subsonic leading edge below the β cot Λ down to
+    /// which it was verified (`verified`,
+    /// `lifting_surface::mach_range::MACH_BOX_VERIFIED_BETA_COT`), or just
+    /// below sonic.
+    MachBoxSubsonicEdge {
+        mach: f64,
+        beta_cot: f64,
+        verified: f64,
+    },
     /// Between M = 1 and the Mach box's first Mach number: a straight line.
     SonicBridge { mach: f64, mach_box_from: f64 },
     /// The faired model near M = 1 (0.99 < M < the Mach box's first Mach
@@ -171,16 +176,18 @@ fn lifting_surface(w: &Warning, f: &mut fmt::Formatter<'_>) -> fmt::Result {
             "tailplane at M = {}: the wing's downwash at it is the far wake's (Trefftz plane), which holds behind the point where the tips' Mach lines meet the centre line, {from:.2} M.A.C.s behind the wing's apex; the tail's centre is {at:.2} behind it, where linear theory's downwash is smaller (docs/configurations.md)",
             Num(mach)
         ),
-        Warning::MachBoxSubsonicEdge { mach, beta_cot }
-            if beta_cot < MACH_BOX_VERIFIED_BETA_COT =>
-        {
+        Warning::MachBoxSubsonicEdge {
+            mach,
+            beta_cot,
+            verified,
+        } if beta_cot < verified => {
             write!(
                 f,
-                "lifting surface at M = {}: the Mach box with a subsonic leading edge at β cot Λ = {beta_cot:.2}, below the {MACH_BOX_VERIFIED_BETA_COT} down to which it was verified (within 1 % of eq (36); docs/supersonic-oscillatory.md)",
+                "lifting surface at M = {}: the Mach box with a subsonic leading edge at β cot Λ = {beta_cot:.2}, below the {verified} down to which it was verified (within 1 % of eq (36); docs/supersonic-oscillatory.md)",
                 Num(mach)
             )
         }
-        Warning::MachBoxSubsonicEdge { mach, beta_cot } => write!(
+        Warning::MachBoxSubsonicEdge { mach, beta_cot, .. } => write!(
             f,
             "lifting surface at M = {}: the Mach box with a leading edge just subsonic, β cot Λ = {beta_cot:.3}: the diaphragm is narrower than one box, and z_θ̇ was measured up to 4 % off eq (36) there (docs/supersonic-oscillatory.md)",
             Num(mach)

@@ -3,12 +3,13 @@
 //! the damping standard (§8).
 
 pub mod engineering;
+pub mod verdict;
 
 use crate::criteria::{DampingStandard, FlyingQualities, Routh, ShortPeriodApproximation, Verdict};
 use crate::dynamics::classical::{first_approximation, refine, relative_errors};
 use crate::dynamics::modes::Modes;
 use crate::numerics::display::Num;
-use crate::numerics::invalid::{self, Invalid};
+use crate::numerics::invalid::Invalid;
 use crate::numerics::roots::{RootsError, solve_quartic};
 use crate::{Derivatives, Quartic};
 use num_complex::Complex64;
@@ -45,8 +46,7 @@ pub enum AnalysisError {
 /// verdict is not checked against it.
 pub const ON_AXIS: f64 = 1e-9;
 
-/// |A| at or below this is a degenerate quartic ([`AnalysisError::LeadingCoefficientZero`]).
-pub const LEADING_COEFFICIENT_MIN: f64 = 1e-12;
+pub use crate::dynamics::quartic::LEADING_COEFFICIENT_MIN;
 
 /// Routh's verdict against the roots' real parts: they must agree unless
 /// the quartic is on the stability boundary to working precision (R
@@ -66,21 +66,12 @@ pub(crate) fn agree(routh: &Routh, roots: &[Complex64; 4]) -> Result<(), Analysi
     }
 }
 
-/// A derivative set's inputs checked: every one finite, μ₁ and i_B
-/// positive.
+/// A derivative set's inputs checked ([`Derivatives::check`]).
 pub fn check(d: &Derivatives) -> Result<(), AnalysisError> {
-    let values = d.quartic_input_values();
-    for (input, value) in Derivatives::QUARTIC_INPUTS.into_iter().zip(values) {
-        invalid::finite(input, value)?;
-    }
-    invalid::positive("mu1", d.mu1)?;
-    invalid::positive("i_b", d.i_b)?;
-    Ok(())
+    Ok(d.check()?)
 }
 
-/// Standard gravity g₀ = 9.806 65 m/s² (exact, by definition: 3rd CGPM,
-/// 1901; ISO 80000-3).
-pub const STANDARD_GRAVITY: f64 = 9.806_65;
+pub use crate::units::STANDARD_GRAVITY;
 
 /// The flight condition in dimensional form, for times in seconds.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

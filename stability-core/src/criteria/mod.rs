@@ -4,7 +4,6 @@
 
 pub use crate::dynamics::modes::CYCLES_CONSTANT;
 pub mod cap;
-pub mod verdict;
 
 use crate::dynamics::modes::{Mode, ModeName, Modes, Origin};
 use crate::{Derivatives, Quartic};

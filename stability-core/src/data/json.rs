@@ -14,8 +14,8 @@
 //! pins them, and the values, against the command line's output as it was
 //! assembled by hand.
 
+use crate::analysis::verdict::Overall;
 use crate::analysis::{Analysis, Characteristic, ClassicalCheck, Timebase};
-use crate::criteria::verdict::Overall;
 use crate::criteria::{
     DampingStandard, FlyingQualities, Margins, ShortPeriodApproximation, Verdict,
 };
@@ -227,7 +227,7 @@ impl<'a> CriteriaJson<'a> {
     pub(crate) fn new(c: &Characteristic, time: Timebase) -> Self {
         // the standard is met only where no mode grows: the overall
         // verdict, not the short period's alone
-        let verdict = crate::criteria::verdict::overall(c);
+        let verdict = crate::analysis::verdict::overall(c);
         CriteriaJson {
             one_cycle_standard_met: verdict.is_met(),
             verdict,

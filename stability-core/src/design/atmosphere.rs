@@ -34,11 +34,12 @@
 //!   linearly in Z; the standard tabulates it without prescribing an
 //!   interpolation.
 
+pub use crate::units::{FOOT, KG_PER_SLUG, NEWTON_PER_LBF};
 use serde::Serialize;
 
 /// Standard acceleration of gravity g₀ = 9.80665 m/s²; also g₀′, the
 /// constant that defines the geopotential metre (m²/(s²·m′)).
-pub const G0: f64 = crate::analysis::STANDARD_GRAVITY;
+pub const G0: f64 = crate::units::STANDARD_GRAVITY;
 /// Universal gas constant R* = 8.31432 × 10³ N·m/(kmol·K), the standard's
 /// value (not the later CODATA one).
 pub const R_STAR: f64 = 8.314_32e3;
@@ -56,16 +57,9 @@ pub const SUTHERLAND_S: f64 = 110.4;
 pub const P0: f64 = 101_325.0;
 /// Sea-level temperature T₀ = 288.15 K.
 pub const T0: f64 = 288.15;
-/// The international foot, 0.3048 m exactly.
-pub const FOOT: f64 = 0.3048;
 /// Upper limit of the model, geometric: 86 km.
 pub const Z_MAX: f64 = 86_000.0;
 
-/// The newton per pound-force: 1 lbf = 0.453 592 37 kg × g₀ = 4.448 221 615 260 5 N,
-/// exactly.
-pub const NEWTON_PER_LBF: f64 = 0.453_592_37 * G0;
-/// The kilogram per slug (14.593 902 937 2 kg): lbf·s²/ft, exactly.
-pub const KG_PER_SLUG: f64 = NEWTON_PER_LBF / FOOT;
 /// The pascal per lbf/ft².
 const PA_PER_PSF: f64 = 0.453_592_37 * G0 / (FOOT * FOOT);
 

@@ -5,7 +5,7 @@
 //! and apex fixed and its area S_T varied, every length scaled by
 //! √(S_T/S_T,given). The answer: the smallest area at which the design
 //! point meets the one-cycle standard — every root judged
-//! ([`crate::criteria::verdict::overall`]) — at every Mach number of the range.
+//! ([`crate::analysis::verdict::overall`]) — at every Mach number of the range.
 //!
 //! The search: the wing alone first (area 0: no surface needed); then a
 //! scan of [`SCAN`] areas spaced geometrically from [`SMALLEST`] of the
@@ -129,7 +129,7 @@ impl Family<'_> {
         match evaluate_point_with(&case, Harmonic::Interpolated) {
             Ok(r) => MachOutcome {
                 mach,
-                verdict: Some(crate::criteria::verdict::overall(&r.analysis)),
+                verdict: Some(crate::analysis::verdict::overall(&r.analysis)),
                 cycles_to_half: r
                     .analysis
                     .modes

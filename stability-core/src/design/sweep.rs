@@ -605,7 +605,7 @@ pub struct Points {
     pub i_y: Vec<f64>,
     /// Routh's test (§4).
     pub stable: Vec<Option<bool>>,
-    /// The overall verdict, every root judged ([`crate::criteria::verdict`]): never
+    /// The overall verdict, every root judged ([`crate::analysis::verdict`]): never
     /// `Meets` with a mode that grows.
     pub verdict: Vec<Option<Verdict>>,
     /// The short period's root (units of 1/τ), cycles to half amplitude
@@ -717,7 +717,7 @@ impl Points {
         let or_nan = |v: Option<f64>| v.unwrap_or(f64::NAN);
         self.stable.push(Some(a.routh.stable));
         self.verdict
-            .push(Some(crate::criteria::verdict::overall(a)));
+            .push(Some(crate::analysis::verdict::overall(a)));
         self.sp_re.push(or_nan(sp.map(|m| m.re)));
         self.sp_im.push(or_nan(sp.map(|m| m.im)));
         self.sp_cycles_to_half
@@ -837,7 +837,7 @@ pub fn columns(derivatives: bool, physical: bool) -> Vec<&'static str> {
 
 /// A point's results, after the grid's values ([`Points::results`]):
 /// Routh's test; the overall verdict (every root judged:
-/// [`crate::criteria::verdict`]); the short period's root, cycles to half amplitude,
+/// [`crate::analysis::verdict`]); the short period's root, cycles to half amplitude,
 /// damping ratio and ω̄; the phugoid's root; m_θ̇ and Δm_θ̇ (eq 41); then
 /// the phugoid's damping ratio and period (τ), the MIL-F-8785C levels (1, 2, 3, or 4 for worse than
 /// Level 3: the short period's in Categories A, B, C, the phugoid's), and

@@ -100,3 +100,7 @@ impl QuarticGradient {
             .map(|i| Quartic::from_array(self.rows[i]))
     }
 }
+
+/// |A| at or below this is a degenerate quartic (A = 1 − z_ẇ/μ₁, eq 5:
+/// the equations of motion have no solution for ẇ).
+pub const LEADING_COEFFICIENT_MIN: f64 = 1e-12;

@@ -28,8 +28,9 @@
 //! and squaring), not a fixed-step integrator.
 
 use crate::Derivatives;
-use crate::analysis::{AnalysisError, LEADING_COEFFICIENT_MIN};
+use crate::dynamics::quartic::LEADING_COEFFICIENT_MIN;
 use crate::numerics::display::Num;
+use crate::numerics::invalid::Invalid;
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
 
@@ -180,7 +181,7 @@ pub enum ResponseError {
     )]
     SingularMass { a: f64, z_wdot: f64, mu1: f64 },
     #[error("{0}")]
-    Derivatives(#[from] AnalysisError),
+    Derivatives(#[from] Invalid<&'static str>),
     #[error(
         "the state matrix overflows f64 (terms such as μ₁m_w/i_B exceed {}): the derivatives are too large",
         Num(f64::MAX)
@@ -350,7 +351,7 @@ impl Input {
 
 impl StateSpace {
     pub fn new(d: &Derivatives, simp: Simplifications) -> Result<StateSpace, ResponseError> {
-        crate::analysis::check(d)?;
+        d.check()?;
         let mut d = *d;
         if simp.neglect_zq_zwdot {
             d.z_q = 0.0;

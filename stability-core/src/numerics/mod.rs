@@ -6,7 +6,9 @@
 //! ([`invalid`]) and numbers in messages ([`display`]).
 
 pub mod display;
+pub mod elliptic;
 pub mod grid;
+pub mod interpolation;
 pub mod invalid;
 pub mod memo;
 pub mod roots;

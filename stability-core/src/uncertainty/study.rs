@@ -286,7 +286,7 @@ fn check_inputs(inputs: &[Input], flight: Option<&FlightCondition>) -> Result<()
 pub struct Outcome {
     /// The §8 standard on the short period ([`crate::criteria::Verdict::of`]).
     pub standard: Verdict,
-    /// The overall verdict, every root judged ([`crate::criteria::verdict::overall`]).
+    /// The overall verdict, every root judged ([`crate::analysis::verdict::overall`]).
     pub overall: Verdict,
     /// The short period's MIL-F-8785C levels in Categories A, B, C and the
     /// phugoid's: 1–3, 4 for worse than Level 3, 0 not assessed.
@@ -320,7 +320,7 @@ impl Outcome {
         };
         Outcome {
             standard: a.verdict,
-            overall: crate::criteria::verdict::overall(a),
+            overall: crate::analysis::verdict::overall(a),
             levels: [
                 sp_level(Category::A),
                 sp_level(Category::B),

@@ -32,20 +32,12 @@
 //! sonic point of linear theory, slender-wing theory ([`sonic_steady`]).
 
 use super::derivatives::Extrapolate;
+pub use super::mach_table::{MACH_BOX_MIN_STRIPS, MACH_RANGE_MAX, first_mach_box_mach};
 use super::near_sonic::{NEAR_SONIC_FROM, SONIC_ANCHORS, SONIC_OMEGA_BAR_MIN};
 use super::{Harmonic, LiftingSurfaceError, Solution, Steady, Trapezoid, cache, mach_table};
-use crate::aerodynamics::lifting_surface::mach_box::{self as mach_box, MAX_ROWS};
-use crate::aerodynamics::models::aero::{hermite, monotone_slopes};
+use crate::aerodynamics::lifting_surface::mach_box;
 use crate::aerodynamics::warnings::Warning;
-
-/// The highest Mach number the dispatch takes.
-pub const MACH_RANGE_MAX: f64 = 3.0;
-
-/// The fewest strips the dispatch lets the Mach box use: at 32 strips
-/// (extrapolated with 16) the supersonic-edged deltas are within 4·10⁻³ of
-/// the exact reverse-flow values (`docs/supersonic-oscillatory.md`,
-/// convergence table).
-pub const MACH_BOX_MIN_STRIPS: usize = 32;
+use crate::numerics::interpolation::{hermite, monotone_slopes};
 
 /// The smallest β cot Λ at which the Mach box's subsonic leading edge was
 /// verified: within 1 % of eq (36) (ω̄ → 0, h = ¼; m_θ̇ on the scale of
@@ -85,22 +77,6 @@ pub struct AtMach {
     pub solution: Solution,
     pub method: Method,
     pub warning: Option<Warning>,
-}
-
-/// The first Mach number the dispatch gives to the Mach box: where its
-/// grid holds [`MACH_BOX_MIN_STRIPS`] strips within [`MAX_ROWS`] rows
-/// (rows = ⌈x_end(N − ½)/(βs)⌉, x_end the wing's aftmost point, s its
-/// semi-span) and its trailing edge is supersonic (β ≥ tan|Λ_TE|, which
-/// the method needs), whichever is the later.
-pub fn first_mach_box_mach(wing: &Trapezoid) -> f64 {
-    let x_end = wing
-        .root_chord
-        .max(wing.leading_edge_at(wing.semi_span) + wing.tip_chord);
-    let n = MACH_BOX_MIN_STRIPS as f64 - 0.5;
-    let grid = x_end * n / (MAX_ROWS as f64 * wing.semi_span);
-    let trailing_edge = wing.sweep_te().tan().abs();
-    let beta = grid.max(trailing_edge) * (1.0 + 1e-9);
-    (1.0 + beta * beta).sqrt()
 }
 
 /// The wing's [`Solution`] at `mach` (0 ≤ M ≤ [`MACH_RANGE_MAX`]) and ω̄
@@ -186,7 +162,11 @@ fn subsonic_edge_warning(wing: &Trapezoid, mach: f64) -> Option<Warning> {
     let beta_cot = (mach * mach - 1.0).sqrt() / wing.sweep_le.tan();
     let doubtful = beta_cot < MACH_BOX_VERIFIED_BETA_COT
         || (MACH_BOX_NEAR_SONIC_EDGE..1.0).contains(&beta_cot);
-    (wing.sweep_le > 0.0 && doubtful).then_some(Warning::MachBoxSubsonicEdge { mach, beta_cot })
+    (wing.sweep_le > 0.0 && doubtful).then_some(Warning::MachBoxSubsonicEdge {
+        mach,
+        beta_cot,
+        verified: MACH_BOX_VERIFIED_BETA_COT,
+    })
 }
 
 /// The quasi-steady solution at `mach` with its Mach derivatives (eqs

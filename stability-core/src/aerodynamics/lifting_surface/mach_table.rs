@@ -34,9 +34,33 @@
 //! [`crate::aerodynamics::lifting_surface::mach_box::cache::INTERPOLATED_FROM_BETA`]).
 
 use super::derivatives::Extrapolate;
-use super::mach_range::{MACH_RANGE_MAX, first_mach_box_mach};
 use super::{Solution, Trapezoid};
-use crate::aerodynamics::lifting_surface::mach_box::{MachBoxError, cache as mach_box};
+use crate::aerodynamics::lifting_surface::mach_box::{MAX_ROWS, MachBoxError, cache as mach_box};
+
+/// The highest Mach number the dispatch takes.
+pub const MACH_RANGE_MAX: f64 = 3.0;
+
+/// The fewest strips the dispatch lets the Mach box use: at 32 strips
+/// (extrapolated with 16) the supersonic-edged deltas are within 4·10⁻³ of
+/// the exact reverse-flow values (`docs/supersonic-oscillatory.md`,
+/// convergence table).
+pub const MACH_BOX_MIN_STRIPS: usize = 32;
+
+/// The first Mach number the dispatch gives to the Mach box: where its
+/// grid holds [`MACH_BOX_MIN_STRIPS`] strips within [`MAX_ROWS`] rows
+/// (rows = ⌈x_end(N − ½)/(βs)⌉, x_end the wing's aftmost point, s its
+/// semi-span) and its trailing edge is supersonic (β ≥ tan|Λ_TE|, which
+/// the method needs), whichever is the later.
+pub fn first_mach_box_mach(wing: &Trapezoid) -> f64 {
+    let x_end = wing
+        .root_chord
+        .max(wing.leading_edge_at(wing.semi_span) + wing.tip_chord);
+    let n = MACH_BOX_MIN_STRIPS as f64 - 0.5;
+    let grid = x_end * n / (MAX_ROWS as f64 * wing.semi_span);
+    let trailing_edge = wing.sweep_te().tan().abs();
+    let beta = grid.max(trailing_edge) * (1.0 + 1e-9);
+    (1.0 + beta * beta).sqrt()
+}
 
 /// The largest step in β between nodes below the sonic leading edge.
 pub const STEP_SUBSONIC_EDGE: f64 = 0.05;

@@ -20,11 +20,11 @@
 use crate::aerodynamics::lifting_surface::configuration::ConfigurationError;
 use crate::aerodynamics::lifting_surface::{ConfigurationSolution, Contribution};
 use crate::aerodynamics::lifting_surface::{Harmonic, Solution};
-use crate::aerodynamics::models::aero::{hermite, monotone_slopes};
 use crate::aerodynamics::models::faired::{
     LATTICE_SLOPE_STEP, LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM, SUPERSONIC_SLOPE_STEP,
 };
 use crate::geometry::configuration::{Configuration, Part};
+use crate::numerics::interpolation::{hermite, monotone_slopes};
 use serde::Serialize;
 
 /// The step of the increment's Mach derivatives outside the band.
@@ -236,7 +236,7 @@ impl Configuration {
                 of(3, part),
                 of(4, part),
             );
-            let v: [crate::aerodynamics::models::aero::Value; 6] = std::array::from_fn(|i| {
+            let v: [crate::numerics::interpolation::Value; 6] = std::array::from_fn(|i| {
                 let s0 = (y0[i] - b0[i]) / LATTICE_SLOPE_STEP;
                 let s1 = (a1[i] - c1[i]) / (2.0 * st);
                 let (e0, e1) = monotone_slopes((y1[i] - y0[i]) / (m1 - m0), s0, s1);

@@ -6,7 +6,10 @@
 //! ([`derivative_tables`]).
 
 pub mod aero;
+pub mod defaults;
 pub mod derivative_tables;
+pub mod error;
 pub mod faired;
 pub mod increment;
 pub mod stiffness;
+pub mod table;

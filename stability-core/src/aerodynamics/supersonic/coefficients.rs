@@ -40,7 +40,8 @@
 
 use super::eq36::Fig18;
 use super::{EdgeRegime, SupersonicError, Wing, check_mach};
-use crate::aerodynamics::models::aero::{Value, defaults::ellip_e_and_slope};
+use crate::numerics::elliptic::ellip_e_and_slope;
+use crate::numerics::interpolation::Value;
 use serde::Serialize;
 use std::f64::consts::PI;
 

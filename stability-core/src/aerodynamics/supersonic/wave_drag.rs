@@ -183,11 +183,15 @@ pub fn fig1_series(edge_parameters: &[f64]) -> Result<Vec<WaveDragPoint>, Supers
         .collect()
 }
 
+/// Mean weighted thickness-chord ratio of the report's sections, eq (23):
+/// τ² = 0.0036.
+pub const THICKNESS: f64 = 0.06;
+
 /// C_Dw of a true delta of sweep Λ at Mach M > 1 with the note's sections
 /// (τ = 0.06): (τ²/β)·[`scaled_wave_drag`](β cot Λ, 0.3).
 pub fn wave_drag(sweep_le: f64, mach: f64) -> Result<f64, SupersonicError> {
     let wing = super::Wing::new(sweep_le, 0.0)?;
     let beta = super::check_mach(mach)?;
-    let tau = crate::aerodynamics::models::aero::defaults::THICKNESS;
+    let tau = THICKNESS;
     Ok(tau * tau / beta * scaled_wave_drag(beta * wing.cot(), NOTE_RIDGE)?)
 }

@@ -16,7 +16,7 @@
 //! the cone lies behind the trailing edge.
 
 use super::influence::GAUSS_8;
-use super::march::Pair;
+use super::influence::Pair;
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
 use std::f64::consts::PI;

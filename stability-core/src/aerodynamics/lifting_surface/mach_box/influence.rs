@@ -25,6 +25,9 @@
 
 use num_complex::Complex64;
 
+/// The two right-hand sides: unit incidence, unit rate (x − x̄)/c̄.
+pub type Pair = [Complex64; 2];
+
 /// 8-point Gauss–Legendre nodes and weights on [−1, 1] (Abramowitz &
 /// Stegun, Table 25.4); the Mach box's rules (`direct.rs`, `edge.rs`) share it.
 pub(super) const GAUSS_8: [(f64, f64); 8] = [

@@ -19,14 +19,11 @@
 use super::direct::{Flow, wing_potential};
 use super::edge;
 use super::grid::{Grid, Kind};
-use super::influence::Influence;
+use super::influence::{Influence, Pair};
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
 use rayon::prelude::*;
 use std::f64::consts::PI;
-
-/// The two right-hand sides: unit incidence, unit rate (x − x̄)/c̄.
-pub type Pair = [Complex64; 2];
 
 /// The potentials φ̂ at the box centres (zero off the wing) for the two
 /// normalwash distributions: the wing's own part exactly

@@ -40,15 +40,16 @@ pub use theories::{
     SUPERSONIC_FROM, SUPERSONIC_SLOPE_STEP, slender_fairing,
 };
 
+use crate::aerodynamics::damping::TheoryCoefficients;
 use crate::aerodynamics::damping::{
     Damping, DampingError, Theory, WingInput, damping_derivatives_with, theory_coefficients,
 };
 use crate::aerodynamics::lifting_surface::mach_range::{self, first_mach_box_mach};
 use crate::aerodynamics::lifting_surface::near_sonic::{SONIC_ANCHORS, SONIC_OMEGA_BAR_MIN};
 use crate::aerodynamics::lifting_surface::{Harmonic, LiftingSurfaceError, Trapezoid, cache};
-use crate::aerodynamics::models::aero::{TheoryCoefficients, Value};
 use crate::aerodynamics::warnings::Warning;
 use crate::geometry::{Planform, sonic_leading_edge_mach};
+use crate::numerics::interpolation::Value;
 
 pub use crate::aerodynamics::lifting_surface::mach_range::MACH_RANGE_MAX;
 

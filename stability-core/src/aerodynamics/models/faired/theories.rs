@@ -18,14 +18,15 @@
 //! note's own construction.
 
 use super::{Regime, RegimeKind};
+use crate::aerodynamics::damping::TheoryCoefficients;
 use crate::aerodynamics::damping::{
     Damping, DampingError, Theory, WingInput, damping_derivatives_with, theory_coefficients,
 };
 use crate::aerodynamics::lifting_surface::{Harmonic, cache};
-use crate::aerodynamics::models::aero::{TheoryCoefficients, Value, hermite, monotone_slopes};
 use crate::aerodynamics::warnings::{Warning, Warnings};
 use crate::derivatives::DampingDerivatives;
 use crate::geometry::{Planform, sonic_leading_edge_mach};
+use crate::numerics::interpolation::{Value, hermite, monotone_slopes};
 
 /// Up to this Mach number the faired model is lifting-surface theory (§7:
 /// the Multhopp–Garner theory "provides what appears to be a reliable
