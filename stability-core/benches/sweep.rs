@@ -15,7 +15,7 @@ use rayon::prelude::*;
 use stability_core::aero::{AeroModel, AeroModelName};
 use stability_core::case::{Case, DampingModel};
 use stability_core::damping::Theory;
-use stability_core::lifting_surface::cache;
+use stability_core::lifting_surface::store;
 use stability_core::study::{grid, report_wing};
 use stability_core::sweep::{Axes, Sweep};
 
@@ -68,6 +68,6 @@ fn run(s: &Sweep) -> usize {
 fn million_points(bencher: Bencher, model: &str) {
     let s = sweep(model);
     bencher
-        .with_inputs(cache::clear)
+        .with_inputs(store::clear)
         .bench_local_values(|()| run(&s));
 }

@@ -6,20 +6,20 @@
 //! `cargo run --release -p stability-core --example lifting_surface_mach_range`
 
 use stability_core::lifting_surface::mach_range::{first_mach_box_mach, solution};
-use stability_core::lifting_surface::{Harmonic, Trapezoid, cache};
+use stability_core::lifting_surface::{Harmonic, Trapezoid, store};
 
 fn main() {
     let wings = [
-        ("rectangle A = 2", cache::unit_wing(2.0, 1.0, 0.0)),
+        ("rectangle A = 2", store::unit_wing(2.0, 1.0, 0.0)),
         (
             "A = 3, λ = 0.5, Λ = 10°",
-            cache::unit_wing(3.0, 0.5, 10f64.to_radians()),
+            store::unit_wing(3.0, 0.5, 10f64.to_radians()),
         ),
         // the note's deltas: A = 4 cot Λ (45°: 4, 60°: 2.309)
-        ("delta 45°", cache::unit_wing(4.0, 0.0, 45f64.to_radians())),
+        ("delta 45°", store::unit_wing(4.0, 0.0, 45f64.to_radians())),
         (
             "delta 60°",
-            cache::unit_wing(4.0 / 3f64.sqrt(), 0.0, 60f64.to_radians()),
+            store::unit_wing(4.0 / 3f64.sqrt(), 0.0, 60f64.to_radians()),
         ),
     ];
     for (name, wing) in wings {

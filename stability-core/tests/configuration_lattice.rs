@@ -317,12 +317,12 @@ fn the_harmonic_solution_tends_to_the_quasi_steady_one() {
 
 #[test]
 fn a_configuration_is_solved_once() {
-    use stability_core::configuration::lattice::cache;
+    use stability_core::lifting_surface::store;
     let cfg = Configuration {
         tailplane: Some(tail(1.31, 0.21)),
         ..Configuration::wing_alone(delta(55.0))
     };
-    let before = cache::solves();
+    let before = store::configuration_solves();
     let a = cfg.solve_subsonic(0.41, 0.0).unwrap();
     let b = cfg.solve_subsonic(0.41, 1e-9).unwrap(); // quasi-steady too
     assert_eq!(a, b);
@@ -333,12 +333,12 @@ fn a_configuration_is_solved_once() {
     };
     assert_ne!(moved.solve_subsonic(0.41, 0.0).unwrap(), a);
     // (other tests run in parallel and solve too: at least these two)
-    assert!(cache::solves() >= before + 2);
-    assert!(cache::key(&cfg) != cache::key(&moved));
+    assert!(store::configuration_solves() >= before + 2);
+    assert!(store::configuration_key(&cfg) != store::configuration_key(&moved));
 }
 
 /// A sizing's (or a sweep's) configuration solutions are interpolated
-/// between frequency nodes (`cache::solution_with`, `Harmonic::Interpolated`)
+/// between frequency nodes (`store::configuration`, `Harmonic::Interpolated`)
 /// as the wing's `FrequencyTable` is: the cubic through the four nodes
 /// around ω̄, each node a direct solve. Against direct solves at ω̄ between
 /// nodes, every part and the total, each number relative to the largest
@@ -347,8 +347,8 @@ fn a_configuration_is_solved_once() {
 /// the node's own solution.
 #[test]
 fn interpolated_configuration_solutions_are_the_direct_ones() {
-    use stability_core::configuration::lattice::cache;
     use stability_core::lifting_surface::Harmonic;
+    use stability_core::lifting_surface::store;
     let cfg = Configuration {
         tailplane: Some(tail(1.3, 0.1)),
         ..Configuration::wing_alone(delta(60.0))
@@ -356,8 +356,8 @@ fn interpolated_configuration_solutions_are_the_direct_ones() {
     let mach = 0.7;
     let mut worst_seen = 0.0f64;
     for w in [0.005, 0.17, 0.33, 0.72] {
-        let direct = cache::solution(&cfg, mach, w).unwrap();
-        let table = cache::solution_with(&cfg, mach, w, Harmonic::Interpolated).unwrap();
+        let direct = store::configuration(&cfg, mach, w, Harmonic::Direct).unwrap();
+        let table = store::configuration(&cfg, mach, w, Harmonic::Interpolated).unwrap();
         assert_eq!(table.total.omega_bar, w);
         assert_eq!(table.parts.len(), direct.parts.len());
         let mut e = worst(&table.total, &direct.total);
@@ -370,7 +370,7 @@ fn interpolated_configuration_solutions_are_the_direct_ones() {
     }
     assert!(worst_seen < 1e-4, "{worst_seen}");
     assert!(worst_seen > 0.0, "interpolated, not solved at ω̄");
-    let at_node = cache::solution_with(&cfg, mach, 0.3, Harmonic::Interpolated).unwrap();
-    let node = cache::solution(&cfg, mach, 0.3).unwrap();
+    let at_node = store::configuration(&cfg, mach, 0.3, Harmonic::Interpolated).unwrap();
+    let node = store::configuration(&cfg, mach, 0.3, Harmonic::Direct).unwrap();
     assert!(worst(&at_node.total, &node.total) < 1e-12);
 }

@@ -9,7 +9,7 @@ use stability_core::aero::{AeroModel, AeroModelName};
 use stability_core::case::{Case, CaseError, DampingModel, evaluate, evaluate_point_with};
 use stability_core::damping::{DampingError, Theory, WingInput, damping_derivatives};
 use stability_core::geometry::{Planform, Size};
-use stability_core::lifting_surface::{Harmonic, LiftingSurfaceError, cache};
+use stability_core::lifting_surface::{Harmonic, LiftingSurfaceError, store};
 use stability_core::modes::ModeName;
 use stability_core::study::report_wing;
 
@@ -23,7 +23,7 @@ fn case(deg: f64, mach: f64, damping: Theory, aero: AeroModelName) -> Case {
 
 fn shape(c: &Case) -> stability_core::geometry::Trapezoid {
     let p = &c.planform;
-    cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le).unwrap()
+    store::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le).unwrap()
 }
 
 #[test]
@@ -37,7 +37,7 @@ fn the_case_takes_the_lattices_derivatives_about_its_cg() {
         c.planform = Planform::new(deg.to_radians(), taper, Size::RootChord(3.0)).unwrap();
         c.h = h;
         let r = evaluate(&c).unwrap();
-        let s = cache::solution(&shape(&c), mach, 0.0, Harmonic::Direct).unwrap();
+        let s = store::lattice(&shape(&c), mach, 0.0, Harmonic::Direct).unwrap();
         let d = s.derivatives(h, 0.0).unwrap();
         let got = r.derivatives;
         assert_eq!(
@@ -52,7 +52,7 @@ fn the_case_takes_the_lattices_derivatives_about_its_cg() {
         // at a given ω̄: the harmonic solve there
         c.omega_bar = Some(0.3);
         let r = evaluate(&c).unwrap();
-        let s = cache::solution(&shape(&c), mach, 0.3, Harmonic::Direct).unwrap();
+        let s = store::lattice(&shape(&c), mach, 0.3, Harmonic::Direct).unwrap();
         assert_eq!(r.derivatives.m_wdot, s.derivatives(h, 0.0).unwrap().m_wdot);
     }
 }
@@ -61,7 +61,7 @@ fn the_case_takes_the_lattices_derivatives_about_its_cg() {
 fn the_aerodynamic_model_takes_the_steady_solve_with_its_mach_derivatives() {
     let c = case(45.0, 0.6, Theory::Slender, AeroModelName::LiftingSurface);
     let r = evaluate(&c).unwrap();
-    let s = cache::steady(&shape(&c), 0.6).unwrap();
+    let s = store::lattice_steady(&shape(&c), 0.6).unwrap();
     let a = r.coefficients.lift_slope;
     let h0 = r.coefficients.aerodynamic_centre;
     assert_eq!((a.value, a.d_mach), s.lift_slope());

@@ -17,7 +17,7 @@ use stability_core::lifting_surface::mach_range::{
     MACH_BOX_STEP, MACH_BOX_VERIFIED_BETA_COT, Method, coefficients, first_mach_box_mach, solution,
     sonic_steady, steady,
 };
-use stability_core::lifting_surface::{Harmonic, LiftingSurfaceError, Solution, cache};
+use stability_core::lifting_surface::{Harmonic, LiftingSurfaceError, Solution, store};
 use stability_core::warnings::Warning;
 use std::f64::consts::PI;
 
@@ -27,7 +27,7 @@ fn planform(deg: f64) -> Planform {
 
 /// The cache's shape of the planform (as the damping theory makes it).
 fn shape(p: &Planform) -> Trapezoid {
-    cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le).unwrap()
+    store::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le).unwrap()
 }
 
 fn six(s: &Solution) -> [f64; 6] {
@@ -126,7 +126,7 @@ fn the_aero_model_meets_four_over_beta_above_the_sonic_leading_edge() {
     // below 0.9: the lattice's exact Mach derivatives, unchanged
     let w = shape(&p);
     let (s, warning) = steady(&w, 0.5).unwrap();
-    assert_eq!(s, cache::steady(&w, 0.5).unwrap());
+    assert_eq!(s, store::lattice_steady(&w, 0.5).unwrap());
     assert!(warning.is_none());
 }
 
@@ -172,8 +172,8 @@ fn the_bridge_is_the_line_from_the_sonic_point_to_the_mach_box() {
     // 32 strips in 300 rows: β = 31.5/300 on the 45° delta (x_end = s = 1)
     let beta = (first * first - 1.0).sqrt();
     assert!((beta / (31.5 / 300.0) - 1.0).abs() < 1e-6, "{first}");
-    let sonic = cache::near_sonic(&w, 1.0, 0.6, Harmonic::Direct).unwrap();
-    let boxed = mach_box::cache::solution(&w, first, 0.6).unwrap();
+    let sonic = store::near_sonic(&w, 1.0, 0.6, Harmonic::Direct).unwrap();
+    let boxed = store::mach_box(&w, first, 0.6).unwrap();
     let at = |m: f64| solution(&w, m, 0.6, Harmonic::Direct).unwrap();
     assert_eq!(six(&at(1.0).solution), six(&sonic));
     assert_eq!(at(1.0).method, Method::NearSonic);
@@ -224,7 +224,7 @@ fn across_mach_one_the_mach_box_starts_at_the_slender_limit() {
     // steady supersonic loads tend to slender-wing theory's, C_Lα = πA/2
     // with all the lift at the leading edge (the span grows only there):
     // H₀ → 0. The Mach box at its first Mach number, 1.0055:
-    let w = cache::unit_wing(2.0, 1.0, 0.0).unwrap();
+    let w = store::unit_wing(2.0, 1.0, 0.0).unwrap();
     let first = first_mach_box_mach(&w);
     let s = solution(&w, first, 0.0, Harmonic::Direct).unwrap().solution;
     println!(
@@ -306,6 +306,6 @@ fn the_steady_coefficients_are_joined_through_the_sonic_point() {
         assert!(fall.iter().all(|&v| v <= a1 && v >= above.lift_slope.0));
     }
     // a forward-swept leading edge has no sonic point (sections not convex)
-    let w = cache::unit_wing(4.0, 0.5, (-20f64).to_radians()).unwrap();
+    let w = store::unit_wing(4.0, 0.5, (-20f64).to_radians()).unwrap();
     assert_eq!(sonic_steady(&w), None);
 }

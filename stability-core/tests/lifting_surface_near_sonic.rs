@@ -8,8 +8,8 @@
 
 use stability_core::damping::mangler_k;
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::mach_box::cache as mach_box;
 use stability_core::lifting_surface::mach_range::first_mach_box_mach;
+use stability_core::lifting_surface::store as mach_box;
 use stability_core::lifting_surface::{
     Lattice, LatticeSpec, LiftingSurfaceError, Solution, Spacing, near_sonic, sonic_limit,
 };
@@ -148,7 +148,7 @@ fn the_approach_to_the_sonic_point_is_smooth() {
             let scale = ns[2][0].abs();
             // (c) across M = 1: the Mach box at its first Mach number
             let first = first_mach_box_mach(&wing);
-            let mach_box = six(&mach_box::solution(&wing, first, w).unwrap());
+            let mach_box = six(&mach_box::mach_box(&wing, first, w).unwrap());
             let across: Vec<f64> = (0..6)
                 .map(|k| (mach_box[k] - ns[2][k]).abs() / scale)
                 .collect();
@@ -311,7 +311,7 @@ fn outside_its_range_near_sonic_says_what_to_do() {
 
 #[test]
 fn the_cache_serves_near_sonic_direct_and_interpolated() {
-    use stability_core::lifting_surface::cache::{self, Harmonic};
+    use stability_core::lifting_surface::store::{self, Harmonic};
     // Direct: the same numbers as near_sonic, solved once per (wing, M, ω̄)
     // — the anchors shared by every M above 0.99. Interpolated: the
     // refined lattices' frequency tables (cubic Lagrange between nodes
@@ -321,13 +321,13 @@ fn the_cache_serves_near_sonic_direct_and_interpolated() {
     for mach in [0.95, 1.0] {
         let direct = near_sonic(&wing, mach, 0.45).unwrap();
         assert_eq!(
-            cache::near_sonic(&wing, mach, 0.45, Harmonic::Direct),
+            store::near_sonic(&wing, mach, 0.45, Harmonic::Direct),
             Ok(direct)
         );
-        let before = cache::solves();
-        let again = cache::near_sonic(&wing, mach, 0.45, Harmonic::Direct).unwrap();
-        assert_eq!((again, cache::solves()), (direct, before));
-        let interpolated = cache::near_sonic(&wing, mach, 0.45, Harmonic::Interpolated).unwrap();
+        let before = store::solves();
+        let again = store::near_sonic(&wing, mach, 0.45, Harmonic::Direct).unwrap();
+        assert_eq!((again, store::solves()), (direct, before));
+        let interpolated = store::near_sonic(&wing, mach, 0.45, Harmonic::Interpolated).unwrap();
         let (a, b) = (six(&interpolated), six(&direct));
         let worst = (0..6)
             .map(|k| (a[k] - b[k]).abs() / b[0].abs())
@@ -335,7 +335,7 @@ fn the_cache_serves_near_sonic_direct_and_interpolated() {
         println!("M = {mach}: interpolated in ω̄ within {worst:.1e} of C_Lα");
         assert!(worst < 1e-3, "M = {mach}: {worst}");
     }
-    let sonic = cache::near_sonic(&wing, 1.0, 0.45, Harmonic::Direct).unwrap();
-    let between = cache::near_sonic(&wing, 0.997, 0.45, Harmonic::Direct).unwrap();
+    let sonic = store::near_sonic(&wing, 1.0, 0.45, Harmonic::Direct).unwrap();
+    let between = store::near_sonic(&wing, 0.997, 0.45, Harmonic::Direct).unwrap();
     assert!(between.mach == 0.997 && sonic.mach == 1.0);
 }

@@ -9,7 +9,7 @@ use stability_core::geometry::Trapezoid;
 use stability_core::lifting_surface::frequency::NODES;
 use stability_core::lifting_surface::{
     Extrapolation, FrequencyTable, Harmonic, Lattice, LatticeSpec, OMEGA_BAR_QUASI_STEADY,
-    Solution, Spacing, cache,
+    Solution, Spacing, store,
 };
 
 fn note_delta(deg: f64, taper: f64) -> Trapezoid {
@@ -178,34 +178,34 @@ fn a_table_solves_only_the_nodes_it_is_asked_for() {
 }
 
 #[test]
-fn the_cache_gives_the_lattices_own_solutions() {
-    let wing = cache::unit_wing(2.5, 0.2, 55f64.to_radians()).unwrap();
+fn the_store_gives_the_lattices_own_solutions() {
+    let wing = store::unit_wing(2.5, 0.2, 55f64.to_radians()).unwrap();
     let lattice = Lattice::new(&wing, LatticeSpec::for_wing(&wing)).unwrap();
-    let direct = cache::solution(&wing, 0.6, 0.4, Harmonic::Direct).unwrap();
+    let direct = store::lattice(&wing, 0.6, 0.4, Harmonic::Direct).unwrap();
     assert_eq!(direct, lattice.solve(0.6, 0.4).unwrap());
     // again: the same numbers (from the cache)
     assert_eq!(
-        cache::solution(&wing, 0.6, 0.4, Harmonic::Direct).unwrap(),
+        store::lattice(&wing, 0.6, 0.4, Harmonic::Direct).unwrap(),
         direct
     );
     // the steady solve's solution is the quasi-steady one, whichever came first
-    let steady = cache::steady(&wing, 0.7).unwrap();
+    let steady = store::lattice_steady(&wing, 0.7).unwrap();
     assert_eq!(steady.solution, lattice.solve(0.7, 0.0).unwrap());
     assert_eq!(
-        cache::solution(&wing, 0.7, 0.0, Harmonic::Direct).unwrap(),
+        store::lattice(&wing, 0.7, 0.0, Harmonic::Direct).unwrap(),
         steady.solution
     );
-    // interpolated: the table's
-    let table = cache::table(&wing, 0.6).unwrap();
-    let interpolated = cache::solution(&wing, 0.6, 0.37, Harmonic::Interpolated).unwrap();
+    // interpolated: a frequency table's of the default lattice, to the bit
+    let table = FrequencyTable::new(lattice.clone(), 0.6).unwrap();
+    let interpolated = store::lattice(&wing, 0.6, 0.37, Harmonic::Interpolated).unwrap();
     assert_eq!(interpolated, table.at(0.37).unwrap());
     // and quasi-steady either way
     assert_eq!(
-        cache::solution(&wing, 0.6, 0.0, Harmonic::Interpolated).unwrap(),
-        cache::solution(&wing, 0.6, 0.0, Harmonic::Direct).unwrap()
+        store::lattice(&wing, 0.6, 0.0, Harmonic::Interpolated).unwrap(),
+        store::lattice(&wing, 0.6, 0.0, Harmonic::Direct).unwrap()
     );
     // bad conditions are errors, not entries
-    assert!(cache::solution(&wing, 1.0, 0.0, Harmonic::Direct).is_err());
-    assert!(cache::solution(&wing, 0.5, -0.1, Harmonic::Direct).is_err());
-    assert!(cache::steady(&wing, f64::NAN).is_err());
+    assert!(store::lattice(&wing, 1.0, 0.0, Harmonic::Direct).is_err());
+    assert!(store::lattice(&wing, 0.5, -0.1, Harmonic::Direct).is_err());
+    assert!(store::lattice_steady(&wing, f64::NAN).is_err());
 }

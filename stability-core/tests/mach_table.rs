@@ -6,8 +6,8 @@
 //! quasi-steady Mach derivatives `mach_range::steady` takes from it.
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::mach_box::cache::solution;
 use stability_core::lifting_surface::mach_range::steady;
+use stability_core::lifting_surface::store::mach_box as solution;
 use stability_core::lifting_surface::{Solution, mach_table};
 
 fn wing(deg: f64, taper: f64) -> Trapezoid {

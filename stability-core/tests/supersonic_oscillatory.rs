@@ -8,7 +8,9 @@
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
 use stability_core::lifting_surface::Solution;
-use stability_core::lifting_surface::mach_box::{MachBoxError, MachBoxSpec, cache, solve};
+use stability_core::lifting_surface::mach_box::{MachBoxError, MachBoxSpec, solve};
+use stability_core::lifting_surface::solution::Solver;
+use stability_core::lifting_surface::store;
 use stability_core::supersonic::{Wing, edge_theory};
 
 fn fixture() -> Vec<serde_json::Value> {
@@ -385,13 +387,13 @@ fn what_it_refuses() {
 
 /// One solve per (wing, M, ω̄): a second ask is a copy.
 #[test]
-fn the_cache_solves_once() {
+fn the_store_solves_once() {
     let d = delta(50.0, 0.0);
-    let before = cache::solves();
-    let a = cache::solution(&d, 2.0, 0.3).unwrap();
-    let b = cache::solution(&d, 2.0, 0.3).unwrap();
+    assert!(!store::holds(Solver::MachBox, &d, 2.0, 0.3));
+    let a = store::mach_box(&d, 2.0, 0.3).unwrap();
+    assert!(store::holds(Solver::MachBox, &d, 2.0, 0.3));
+    let b = store::mach_box(&d, 2.0, 0.3).unwrap();
     assert_eq!(a, b);
-    assert_eq!(cache::solves(), before + 1);
     assert_eq!(
         a,
         solve(&d, 2.0, 0.3, MachBoxSpec::for_wing(&d, 2.0)).unwrap()

@@ -1,11 +1,13 @@
-//! The Mach box's frequency interpolation (`lifting_surface::mach_box::cache::
+//! The Mach box's frequency interpolation (`lifting_surface::store::
 //! solution_with`, `Harmonic::Interpolated`) against its direct solves, on
 //! the note's 45° and 60° deltas between the frequency nodes; and the
 //! direct solve it keeps near M = 1, where the cubic between the nodes is
 //! not good enough.
 
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::mach_box::cache::{INTERPOLATED_FROM_BETA, solution_with};
+use stability_core::lifting_surface::store::{
+    INTERPOLATED_FROM_BETA, mach_box_with as solution_with,
+};
 use stability_core::lifting_surface::{Harmonic, Solution};
 
 fn delta(deg: f64) -> Trapezoid {

@@ -1,12 +1,12 @@
 //! A sweep solves the lifting surface once per (planform, Mach, ω̄), not
-//! per c.g., μ₁ or i_B: counted by the cache (`lifting_surface::cache::
+//! per c.g., μ₁ or i_B: counted by the cache (`lifting_surface::store::
 //! solves`). One test, alone in its binary, so that no other test's solves
 //! are counted with it.
 
 use stability_core::aero::{AeroModel, AeroModelName};
 use stability_core::case::{Case, DampingModel};
 use stability_core::damping::Theory;
-use stability_core::lifting_surface::cache;
+use stability_core::lifting_surface::store;
 use stability_core::study::report_wing;
 use stability_core::sweep::{Axes, Sweep};
 
@@ -25,7 +25,7 @@ fn the_lattice_is_solved_once_per_planform_and_mach_number() {
         (AeroModelName::LiftingSurface, Theory::LiftingSurface),
         (AeroModelName::LiftingSurface, Theory::Slender),
     ] {
-        cache::clear();
+        store::clear();
         let base = Case {
             aero: AeroModel::default().with_name(aero),
             damping: DampingModel::Theory(damping),
@@ -38,9 +38,9 @@ fn the_lattice_is_solved_once_per_planform_and_mach_number() {
         // 3 Mach numbers × 2 planforms; the lattice's quasi-steady solution
         // serves the damping and, with its Mach derivatives, the lift slope
         // and aerodynamic centre
-        assert_eq!(cache::solves(), 6, "{} {}", aero.name(), damping.name());
+        assert_eq!(store::solves(), 6, "{} {}", aero.name(), damping.name());
         // a second run solves nothing
         sweep.run(false);
-        assert_eq!(cache::solves(), 6);
+        assert_eq!(store::solves(), 6);
     }
 }

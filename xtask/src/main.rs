@@ -35,18 +35,22 @@ model change and commit it.
   --check   change nothing; fail, naming each stale file. `cargo test
             --workspace` runs this check (xtask's generated_artefacts_are_up_to_date).
 
-cargo xtask tables [--add]
+cargo xtask tables [--add | --check]
 
 Solves again every Mach box and near-sonic lattice solution the note's study
-needs and writes them to stability-core/data/lifting-surface-solutions.csv
-(the report reads them instead of solving: stability_core::frozen): runs
-`delta-stability report` (release) with DELTA_STABILITY_WRITE_SOLUTIONS set.
-About a quarter of an hour on 2 cores. Run it after a change to either
-solver, their tables in Mach number or frequency, or the study's wings;
-review the diff.
+needs and writes them to stability-core/data/lifting-surface-solutions.csv,
+with each solver's fingerprint (a hash of its source; the report preloads
+the file into the store of solutions: stability_core::lifting_surface::
+precomputed): runs `delta-stability report` (release) with its hidden
+--no-precomputed --solutions-out FILE. About a quarter of an hour on 2 cores.
+Run it after a change to either solver (the report then refuses the stale
+file and solves afresh), their tables in Mach number or frequency, or the
+study's wings; review the diff.
 
   --add     keep the file's entries and add what the report still solves
             (after adding a wing to the study; not after a solver change)
+  --check   change nothing; fail if the file is stale or the report solves
+            a solution it does not hold (CI runs it)
 
 cargo xtask bench
 
@@ -75,8 +79,9 @@ fn main() -> ExitCode {
         ["regen"] => regen::regen(&root(), false),
         ["regen", "--check"] | ["--check", "regen"] => regen::regen(&root(), true),
         ["bench"] => bench::bench(&root()),
-        ["tables"] => tables(&root(), false),
-        ["tables", "--add"] => tables(&root(), true),
+        ["tables"] => tables(&root(), Tables::Afresh),
+        ["tables", "--add"] => tables(&root(), Tables::Add),
+        ["tables", "--check"] => tables(&root(), Tables::Check),
         ["bench-report"] => bench::bench_report(&root()),
         ["modules"] => modules::check(&root(), None),
         ["modules", src] => modules::check(&root(), Some(src)),
@@ -95,13 +100,22 @@ fn main() -> ExitCode {
     }
 }
 
-/// `cargo xtask tables`: the study's Mach box solutions, solved afresh
-/// (see USAGE).
-fn tables(root: &Path, add: bool) -> Result<(), String> {
-    let path = root.join("stability-core/data/lifting-surface-solutions.csv");
+/// The precomputed solutions' file.
+const TABLES: &str = "stability-core/data/lifting-surface-solutions.csv";
+
+/// `cargo xtask tables [--add | --check]` (see USAGE).
+fn tables(root: &Path, mode: Tables) -> Result<(), String> {
+    use stability_core::lifting_surface::precomputed::Precomputed;
+    let path = root.join(TABLES);
+    let old = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let parsed = Precomputed::parse(&old);
+    if mode == Tables::Check {
+        parsed.as_ref().map_err(|e| format!("{TABLES}: {e}"))?;
+    }
     let out = std::env::temp_dir().join(format!("xtask-tables-{}", std::process::id()));
-    let status = std::process::Command::new(env!("CARGO"))
-        .current_dir(root)
+    let solved = out.with_extension("csv");
+    let mut run = std::process::Command::new(env!("CARGO"));
+    run.current_dir(root)
         .args([
             "run",
             "--release",
@@ -113,16 +127,62 @@ fn tables(root: &Path, add: bool) -> Result<(), String> {
             "--out",
         ])
         .arg(&out)
-        .env(stability_core::frozen::WRITE_ENV, &path)
-        .envs(add.then_some((stability_core::frozen::KEEP_ENV, "1")))
+        .arg("--solutions-out")
+        .arg(&solved);
+    if mode == Tables::Afresh {
+        run.arg("--no-precomputed");
+    }
+    let status = run
         .status()
         .map_err(|e| format!("cannot run delta-stability: {e}"))?;
     let _ = std::fs::remove_dir_all(&out);
     if !status.success() {
         return Err(format!("delta-stability report failed: {status}"));
     }
-    println!("wrote {}", path.display());
+    let text =
+        std::fs::read_to_string(&solved).map_err(|e| format!("{}: {e}", solved.display()))?;
+    let _ = std::fs::remove_file(&solved);
+    let used = Precomputed::parse(&text).map_err(|e| e.to_string())?;
+    match mode {
+        Tables::Check => {
+            let file = parsed.map_err(|e| e.to_string())?;
+            let missing = used
+                .entries()
+                .iter()
+                .filter(|(k, _)| !file.contains(k))
+                .count();
+            if missing > 0 {
+                return Err(format!(
+                    "{TABLES}: the report solved {missing} solutions the file does not hold: run `cargo xtask tables --add`"
+                ));
+            }
+            println!(
+                "{TABLES}: up to date ({} solutions, the solvers' own fingerprints)",
+                file.entries().len()
+            );
+        }
+        Tables::Afresh | Tables::Add => {
+            std::fs::write(&path, &text).map_err(|e| format!("{}: {e}", path.display()))?;
+            println!(
+                "wrote {} ({} solutions)",
+                path.display(),
+                used.entries().len()
+            );
+        }
+    }
     Ok(())
+}
+
+/// What `cargo xtask tables` does.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Tables {
+    /// Solve everything afresh and write the file.
+    Afresh,
+    /// Keep the file's solutions, add what the report still solves.
+    Add,
+    /// Change nothing: fail if the file is stale or lacks a solution the
+    /// report needs.
+    Check,
 }
 
 fn root() -> PathBuf {

@@ -368,17 +368,6 @@ fn circles(nodes: &BTreeSet<String>, arrows: &BTreeMap<(String, String), Edge>) 
             }
         }
         let Some(mut u) = end else { continue };
-        if std::env::var_os("MODCHECK_SCC").is_some() {
-            let mut members: Vec<&String> = comp.iter().map(|&i| names[i]).collect();
-            members.sort();
-            eprintln!("component of {}: {:?}", comp.len(), members);
-            for (a, b) in arrows.keys() {
-                if inside.contains(&index[a]) && inside.contains(&index[b]) {
-                    let e = &arrows[&(a.clone(), b.clone())];
-                    eprintln!("    {a} -> {b}   {}", e.named);
-                }
-            }
-        }
         let mut path = vec![start];
         while u != start {
             path.push(u);
@@ -500,5 +489,51 @@ pub fn check(root: &Path, src: Option<&str>) -> Result<(), String> {
             cycles.len(),
             describe(root, &cycles)
         ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stability_core_has_no_module_cycles() {
+        let root = crate::root();
+        let g = Graph::of(&root.join("stability-core/src")).unwrap();
+        assert!(g.modules.len() > 50, "{} modules", g.modules.len());
+        let cycles = g.cycles();
+        assert!(cycles.is_empty(), "{}", describe(&root, &cycles));
+    }
+
+    /// The check finds a circle where one is: two files of a scratch
+    /// crate that name each other, and one through a name a `mod.rs` hands
+    /// on.
+    #[test]
+    fn a_circle_is_found_and_named() {
+        let dir = std::env::temp_dir().join(format!("xtask-modules-{}", std::process::id()));
+        let src = dir.join("src");
+        std::fs::create_dir_all(src.join("b")).unwrap();
+        std::fs::write(src.join("lib.rs"), "mod a;\nmod b;\nmod c;\n").unwrap();
+        std::fs::write(src.join("a.rs"), "use crate::b::Thing;\npub struct A;\n").unwrap();
+        std::fs::write(src.join("b/mod.rs"), "mod inner;\npub use inner::Thing;\n").unwrap();
+        std::fs::write(src.join("b/inner.rs"), "pub struct Thing(crate::c::C);\n").unwrap();
+        std::fs::write(
+            src.join("c.rs"),
+            "pub struct C;\n#[cfg(test)]\nmod tests { use crate::a::A; }\n",
+        )
+        .unwrap();
+        let g = Graph::of(&src).unwrap();
+        assert!(g.cycles().is_empty(), "a test module draws no arrow");
+        std::fs::write(src.join("c.rs"), "pub struct C(crate::a::A);\n").unwrap();
+        let cycles = Graph::of(&src).unwrap().cycles();
+        let text = describe(&dir, &cycles);
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!(cycles.len(), 1, "{text}");
+        assert!(
+            text.contains("a -> b::inner")
+                && text.contains("b::inner -> c")
+                && text.contains("c -> a"),
+            "{text}"
+        );
     }
 }

@@ -21,7 +21,8 @@ use crate::report::{Plate, SECTIONS, Study, html};
 /// The progress bar's and the page's title of §10 (ours).
 const TAIL_TITLE: &str = "§10 (ours): the tail the 45° delta needs";
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use stability_core::frozen;
+use stability_core::lifting_surface::precomputed::{self, Precomputed};
+use stability_core::lifting_surface::store;
 use stability_io::diag::IoError;
 use stability_io::files::write_error;
 use std::path::Path;
@@ -87,6 +88,15 @@ pub struct Args {
     pub class: Option<crate::args::ClassArg>,
     #[command(flatten)]
     pub model: crate::args::ModelArgs,
+    /// Solve every lifting-surface solution afresh instead of taking the
+    /// precomputed ones (`cargo xtask tables`).
+    #[arg(long, hide = true)]
+    pub no_precomputed: bool,
+    /// After the run, write the Mach box and near-sonic lattice solutions
+    /// it used to this file, in the precomputed solutions' form (`cargo
+    /// xtask tables`).
+    #[arg(long, hide = true, value_name = "FILE")]
+    pub solutions_out: Option<String>,
 }
 
 /// A file of the report: its name in DIR and its bytes.
@@ -135,6 +145,11 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     }
     super::report_design::refuse_design_options(args)?;
     let out = Path::new(&args.out);
+    if !args.no_precomputed
+        && let Err(e) = crate::report::study::preload()
+    {
+        eprintln!("warning: {e}");
+    }
     let bar = progress_bar(SECTIONS.len() + 5);
     let mut done = None;
     write_report(out, |write| {
@@ -149,7 +164,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         })
     })?;
     bar.finish_and_clear();
-    write_solutions()?;
+    write_solutions(args.solutions_out.as_deref())?;
     let (figures, summary) = done.unwrap_or_default();
     let text = format!(
         "wrote {figures} figures (SVG and CSV), summary.json and index.html to {}\n{summary}",
@@ -158,16 +173,15 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     crate::output::print(&text)
 }
 
-/// With [`frozen::WRITE_ENV`] set to a path, the lifting-surface
-/// solutions this run solved written there, in the form of
-/// `stability-core/data/lifting-surface-solutions.csv` (`cargo xtask
-/// tables`).
-fn write_solutions() -> Result<(), Failure> {
-    let Some(path) = std::env::var_os(frozen::WRITE_ENV) else {
+/// With `--solutions-out FILE`, the Mach box and near-sonic lattice
+/// solutions the run used written there, in the precomputed solutions'
+/// form (`cargo xtask tables`).
+fn write_solutions(path: Option<&str>) -> Result<(), Failure> {
+    let Some(path) = path else {
         return Ok(());
     };
-    let text = frozen::write(&mut frozen::solved());
-    std::fs::write(&path, text).map_err(|e| Failure::Io(write_error(Path::new(&path), &e)))
+    let text = Precomputed::write(store::wing_solutions(&precomputed::SOLVERS));
+    std::fs::write(path, text).map_err(|e| Failure::Io(write_error(Path::new(path), &e)))
 }
 
 /// The note's report written through `write`: its figures' count and the
@@ -179,7 +193,7 @@ fn contents(
     sizing: std::thread::ScopedJoinHandle<'_, Result<TailNeeded, String>>,
 ) -> Result<(usize, String), Failure> {
     bar.set_message("the 45° and 60° deltas across Mach number");
-    let study = Study::new();
+    let study = Study::compute();
     bar.inc(1);
     let mut sections = Vec::new();
     for section in &SECTIONS {

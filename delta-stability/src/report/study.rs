@@ -177,7 +177,16 @@ impl Default for Study {
 }
 
 impl Study {
+    /// The study, the lifting-surface solutions it needs preloaded from
+    /// [`PRECOMPUTED`] ([`preload`]; a stale file is not used).
     pub fn new() -> Study {
+        let _ = preload();
+        Study::compute()
+    }
+
+    /// The study, every solution solved (or taken from the store as it
+    /// stands).
+    pub fn compute() -> Study {
         let ms = machs();
         let results = WINGS.map(|deg| across(deg, &ms, |c| c));
         let near_sonic = grid(0.9, 1.1, 0.01);
@@ -238,4 +247,25 @@ impl Study {
         }
         fig
     }
+}
+
+/// The lifting-surface solutions the study needs, solved ahead of time
+/// (`cargo xtask tables`): the Mach box's and the near-sonic lattice's,
+/// which take seconds each to solve.
+pub const PRECOMPUTED: &str =
+    include_str!("../../../stability-core/data/lifting-surface-solutions.csv");
+
+/// Puts [`PRECOMPUTED`] into the store of solutions (once per process), so
+/// that the study need not solve them: how many. A stale file (made by
+/// another solver) is refused whole, and the study solves afresh.
+pub fn preload() -> Result<usize, stability_core::lifting_surface::precomputed::PrecomputedError> {
+    use stability_core::lifting_surface::precomputed::Precomputed;
+    static DONE: std::sync::OnceLock<
+        Result<usize, stability_core::lifting_surface::precomputed::PrecomputedError>,
+    > = std::sync::OnceLock::new();
+    DONE.get_or_init(|| {
+        Precomputed::parse(PRECOMPUTED)
+            .map(|file| stability_core::lifting_surface::store::preload(&file))
+    })
+    .clone()
 }

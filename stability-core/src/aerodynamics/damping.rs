@@ -12,7 +12,7 @@ pub use crate::aerodynamics::supersonic::eq36::{Fig18, eq36};
 pub use crate::aerodynamics::theory::{Theory, UnknownTheory};
 pub use crate::derivatives::DampingDerivatives;
 
-use crate::aerodynamics::lifting_surface::{Harmonic, LiftingSurfaceError, cache, mach_range};
+use crate::aerodynamics::lifting_surface::{Harmonic, LiftingSurfaceError, mach_range, store};
 use crate::aerodynamics::supersonic::{self, EdgeRegime, SupersonicError, Wing, transonic};
 use crate::aerodynamics::warnings::{Warning, Warnings};
 use crate::geometry::Planform;
@@ -408,7 +408,7 @@ fn lifting_surface(
         }
         (_, w) => w.unwrap_or(0.0),
     };
-    let shape = cache::unit_wing(wing.aspect_ratio, wing.taper, wing.sweep_le)?;
+    let shape = store::unit_wing(wing.aspect_ratio, wing.taper, wing.sweep_le)?;
     let at = mach_range::solution(&shape, mach, w, harmonic)?;
     let solution = at.solution;
     if mach > LATTICE_MACH && mach <= 1.0 {

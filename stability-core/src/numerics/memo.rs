@@ -60,6 +60,25 @@ impl<K: Eq + Hash, V: Clone> Memo<K, V> {
         .clone()
     }
 
+    /// Puts `value` at `key` as if solved (not counted as a solve), unless
+    /// the key holds a value already.
+    pub fn insert(&self, key: K, value: V) {
+        let slot = {
+            let mut write = self.map().write().unwrap_or_else(PoisonError::into_inner);
+            if write.len() >= self.capacity && !write.contains_key(&key) {
+                write.clear();
+            }
+            write.entry(key).or_default().clone()
+        };
+        let _ = slot.set(value);
+    }
+
+    /// Whether the table holds a value at `key`.
+    pub fn contains(&self, key: &K) -> bool {
+        let read = self.map().read().unwrap_or_else(PoisonError::into_inner);
+        read.get(key).is_some_and(|slot| slot.get().is_some())
+    }
+
     /// Every solved entry, key and value (in no order).
     pub fn entries(&self) -> Vec<(K, V)>
     where

@@ -69,7 +69,6 @@
 //! (coplanar tail); the tail-volume formulas for m_q and m_ẇ within 4 %.
 
 mod assemble;
-pub mod cache;
 mod layout;
 pub mod nonplanar;
 
@@ -78,55 +77,13 @@ use crate::aerodynamics::lifting_surface::derivatives::Extrapolate;
 use crate::aerodynamics::lifting_surface::kernel::KernelFlow;
 use crate::aerodynamics::lifting_surface::solve::{check_mach, complex_solve};
 use crate::aerodynamics::lifting_surface::{
-    Harmonic, LatticeSpec, LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution,
+    LatticeSpec, LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution,
 };
 use crate::geometry::Trapezoid;
 use crate::geometry::configuration::{Configuration, Part};
 use layout::{Block, Member};
 use nalgebra::{DMatrix, Dyn, LU};
 use rayon::prelude::*;
-
-impl Configuration {
-    /// The configuration's response at M < 1 and ω̄ (0: quasi-steady), from
-    /// the process-wide cache ([`cache::solution`]): one solve of
-    /// [`ConfigurationLattice`] per (configuration, M, ω̄). The lattice
-    /// holds the lifting surfaces; a [`super::Body`] is added as its own
-    /// part by slender-body theory, eq (43) ([`super::Body::solution`]), as
-    /// in the supersonic theory.
-    pub fn solve_subsonic(
-        &self,
-        mach: f64,
-        omega_bar: f64,
-    ) -> Result<ConfigurationSolution, ConfigurationError> {
-        self.solve_subsonic_with(mach, omega_bar, Harmonic::Direct)
-    }
-
-    /// As [`Configuration::solve_subsonic`], the harmonic solution had as
-    /// `harmonic` says ([`cache::solution_with`]).
-    pub fn solve_subsonic_with(
-        &self,
-        mach: f64,
-        omega_bar: f64,
-        harmonic: Harmonic,
-    ) -> Result<ConfigurationSolution, ConfigurationError> {
-        let mut solution = cache::solution_with(self, mach, omega_bar, harmonic)?;
-        if let Some(body) = &self.body {
-            let b = body.solution(&self.wing, mach, omega_bar);
-            let t = &mut solution.total;
-            t.lift_alpha += b.lift_alpha;
-            t.moment_alpha += b.moment_alpha;
-            t.lift_alphadot += b.lift_alphadot;
-            t.moment_alphadot += b.moment_alphadot;
-            t.lift_q += b.lift_q;
-            t.moment_q += b.moment_q;
-            solution.parts.push(super::Contribution {
-                part: Part::Body,
-                solution: b,
-            });
-        }
-        Ok(solution)
-    }
-}
 
 /// A configuration's lattice: every surface's boxes, reusable for any Mach
 /// number and frequency.

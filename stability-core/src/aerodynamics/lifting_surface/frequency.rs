@@ -1,7 +1,9 @@
-//! A wing's harmonic solutions between frequencies: the lattice solved at a
-//! fixed set of ω̄ ([`NODES`]), each node on first use, and interpolated —
-//! what a sweep's frequency iteration uses instead of one solve per
-//! iterate (`sweep --damping lifting-surface-frequency`).
+//! A wing's harmonic solutions between frequencies: solved at a fixed set
+//! of ω̄ ([`NODES`]), each node on first use, and interpolated — what a
+//! sweep's frequency iteration uses instead of one solve per iterate
+//! (`sweep --damping lifting-surface-frequency`; the store's
+//! [`super::Harmonic::Interpolated`]). [`FrequencyTable`] does the same for
+//! a lattice of the caller's own boxes.
 //!
 //! # The scheme, and why
 //! Measured on the note's deltas, a cropped delta and a trapezoid of A = 8
@@ -48,12 +50,6 @@ type Slot = OnceLock<Result<Solution, LiftingSurfaceError>>;
 pub struct FrequencyTable {
     lattice: Lattice,
     mach: f64,
-    /// Where [`crate::aerodynamics::lifting_surface::precomputed`] may hold the nodes: the solver and the unit
-    /// wing's shape (as bits).
-    frozen: Option<(
-        crate::aerodynamics::lifting_surface::precomputed::Kind,
-        [u64; 4],
-    )>,
     quasi_steady: Slot,
     nodes: [Slot; NODES.len()],
 }
@@ -68,69 +64,20 @@ impl FrequencyTable {
         Ok(FrequencyTable {
             lattice,
             mach,
-            frozen: None,
             quasi_steady: OnceLock::new(),
             nodes: std::array::from_fn(|_| OnceLock::new()),
         })
-    }
-
-    /// The table, its nodes read from [`crate::aerodynamics::lifting_surface::precomputed`] where it holds
-    /// them under `kind` and the unit wing's `shape` (as bits).
-    pub(crate) fn frozen(
-        self,
-        kind: crate::aerodynamics::lifting_surface::precomputed::Kind,
-        shape: [u64; 4],
-    ) -> FrequencyTable {
-        FrequencyTable {
-            frozen: Some((kind, shape)),
-            ..self
-        }
     }
 
     pub fn mach(&self) -> f64 {
         self.mach
     }
 
-    /// The solution at node `k`, solved on first use (or read from
-    /// [`crate::aerodynamics::lifting_surface::precomputed`]).
+    /// The solution at node `k`, solved on first use.
     pub fn node(&self, k: usize) -> Result<Solution, LiftingSurfaceError> {
         self.nodes[k]
-            .get_or_init(|| {
-                let frozen = self.frozen.and_then(|(kind, shape)| {
-                    crate::aerodynamics::lifting_surface::precomputed::get(&(
-                        kind,
-                        shape,
-                        self.mach.to_bits(),
-                        NODES[k].to_bits(),
-                    ))
-                });
-                frozen.map_or_else(|| self.lattice.solve(self.mach, NODES[k]), Ok)
-            })
+            .get_or_init(|| self.lattice.solve(self.mach, NODES[k]))
             .clone()
-    }
-
-    /// The nodes solved so far, each as [`crate::aerodynamics::lifting_surface::precomputed`] keys it (none
-    /// for a table without a frozen key, or nodes read from the file).
-    pub(crate) fn solved_nodes(
-        &self,
-    ) -> Vec<(
-        crate::aerodynamics::lifting_surface::precomputed::Key,
-        Solution,
-    )> {
-        let Some((kind, shape)) = self.frozen else {
-            return Vec::new();
-        };
-        NODES
-            .iter()
-            .zip(&self.nodes)
-            .filter_map(|(&w, slot)| {
-                let s = slot.get()?.clone().ok()?;
-                let key = (kind, shape, self.mach.to_bits(), w.to_bits());
-                crate::aerodynamics::lifting_surface::precomputed::get(&key)
-                    .is_none()
-                    .then_some((key, s))
-            })
-            .collect()
     }
 
     /// How many nodes have been solved.

@@ -9,7 +9,7 @@
 //!   (the extrapolation in β²) it needs ω̄ ≥ [`SONIC_OMEGA_BAR_MIN`], where
 //!   it was verified: below, an error that says what to give instead;
 //! - M ≥ [`first_mach_box_mach`]: the Mach box method
-//!   ([`crate::aerodynamics::lifting_surface::mach_box::cache::solution`], Pines, Dugundji &
+//!   ([`store::mach_box`], Pines, Dugundji &
 //!   Neuringer 1955; `docs/supersonic-oscillatory.md`), with
 //!   [`Warning::MachBoxSubsonicEdge`] where the leading edge is subsonic
 //!   and β cot Λ < [`MACH_BOX_VERIFIED_BETA_COT`] (not verified there) or
@@ -34,8 +34,8 @@
 use super::derivatives::Extrapolate;
 pub use super::mach_table::{MACH_BOX_MIN_STRIPS, MACH_RANGE_MAX, first_mach_box_mach};
 use super::near_sonic::{NEAR_SONIC_FROM, SONIC_ANCHORS, SONIC_OMEGA_BAR_MIN};
-use super::{Harmonic, LiftingSurfaceError, Solution, Steady, Trapezoid, cache, mach_table};
-use crate::aerodynamics::lifting_surface::mach_box;
+use super::{Harmonic, LiftingSurfaceError, Solution, Steady, Trapezoid, mach_table, store};
+
 use crate::aerodynamics::warnings::Warning;
 use crate::numerics::interpolation::{hermite, monotone_slopes};
 
@@ -100,7 +100,7 @@ pub fn solution(
     };
     // at 0.9 itself the refined lattice is the default one: one cache slot
     if mach <= NEAR_SONIC_FROM {
-        let s = cache::solution(wing, mach, omega_bar, harmonic)?;
+        let s = store::lattice(wing, mach, omega_bar, harmonic)?;
         return Ok(plain(s, Method::Lattice));
     }
     let first = first_mach_box_mach(wing);
@@ -115,10 +115,10 @@ pub fn solution(
         });
     }
     if mach <= 1.0 {
-        let s = cache::near_sonic(wing, mach, omega_bar, harmonic)?;
+        let s = store::near_sonic(wing, mach, omega_bar, harmonic)?;
         return Ok(plain(s, Method::NearSonic));
     }
-    let a = cache::near_sonic(wing, 1.0, omega_bar, harmonic)?;
+    let a = store::near_sonic(wing, 1.0, omega_bar, harmonic)?;
     let b = supersonic(wing, first, omega_bar, harmonic)?.solution;
     let t = (mach - 1.0) / (first - 1.0);
     let s = Solution {
@@ -137,7 +137,7 @@ pub fn solution(
 
 /// The Mach box's solution (M > 1), solved at ω̄ or interpolated between
 /// the frequency nodes as `harmonic` says
-/// ([`mach_box::cache::solution_with`]), warned where the leading edge is
+/// ([`store::mach_box_with`]), warned where the leading edge is
 /// subsonic beyond the verified β cot Λ.
 fn supersonic(
     wing: &Trapezoid,
@@ -146,7 +146,7 @@ fn supersonic(
     harmonic: Harmonic,
 ) -> Result<AtMach, LiftingSurfaceError> {
     let s = match harmonic {
-        Harmonic::Direct => mach_box::cache::solution(wing, mach, omega_bar)?,
+        Harmonic::Direct => store::mach_box(wing, mach, omega_bar)?,
         Harmonic::Interpolated => mach_table::solution(wing, mach, omega_bar)?.0,
     };
     Ok(AtMach {
@@ -184,11 +184,11 @@ pub fn steady(
     mach: f64,
 ) -> Result<(Steady, Option<Warning>), LiftingSurfaceError> {
     if mach.is_finite() && (0.0..=NEAR_SONIC_FROM).contains(&mach) {
-        return Ok((cache::steady(wing, mach)?, None));
+        return Ok((store::lattice_steady(wing, mach)?, None));
     }
     let first = first_mach_box_mach(wing);
     if (NEAR_SONIC_FROM..=SONIC_ANCHORS[0]).contains(&mach) {
-        return Ok((cache::near_sonic_steady(wing, mach)?, None));
+        return Ok((store::near_sonic_steady(wing, mach)?, None));
     }
     if mach.is_finite() && mach > SONIC_ANCHORS[0] && mach < first {
         return Err(LiftingSurfaceError::SonicSteady {

@@ -22,7 +22,7 @@
 //! Between them, the piecewise-cubic Lagrange interpolation on the four
 //! nodes of the piece around β (as [`super::frequency`] does in ω̄; fewer
 //! where a piece has fewer), each node interpolated in ω̄ between the
-//! frequency nodes ([`crate::aerodynamics::lifting_surface::mach_box::cache::interpolated`]).
+//! frequency nodes ([`store::mach_box_interpolated`]).
 //! Its slope gives the quasi-steady Mach derivatives of eqs (27)–(29):
 //! d/dM = (M/β) d/dβ.
 //!
@@ -31,11 +31,13 @@
 //! the note's deltas and a cropped delta, ω̄ = 0 … 0.8: within 2·10⁻³ of
 //! C_Lα in every number, most of it the frequency interpolation below
 //! β = 0.3 (3.9·10⁻³ there, see
-//! [`crate::aerodynamics::lifting_surface::mach_box::cache::INTERPOLATED_FROM_BETA`]).
+//! [`crate::aerodynamics::lifting_surface::store::INTERPOLATED_FROM_BETA`]).
 
+use super::LiftingSurfaceError;
 use super::derivatives::Extrapolate;
+use super::mach_box::MAX_ROWS;
+use super::store;
 use super::{Solution, Trapezoid};
-use crate::aerodynamics::lifting_surface::mach_box::{MAX_ROWS, MachBoxError, cache as mach_box};
 
 /// The highest Mach number the dispatch takes.
 pub const MACH_RANGE_MAX: f64 = 3.0;
@@ -184,14 +186,15 @@ pub fn solution(
     wing: &Trapezoid,
     mach: f64,
     omega_bar: f64,
-) -> Result<(Solution, Solution), MachBoxError> {
+) -> Result<(Solution, Solution), LiftingSurfaceError> {
     let beta = (mach * mach - 1.0).max(0.0).sqrt();
     let Some((piece, first, n)) = stencil(wing, beta) else {
-        let s = mach_box::solution(wing, mach, omega_bar)?;
+        let s = store::mach_box(wing, mach, omega_bar)?;
         return Ok((s, s.combine(&s, 0.0, 0.0)));
     };
     let dbeta_dmach = mach / beta;
-    let node = |m: usize| mach_box::interpolated(wing, mach_of(piece.beta(first + m)), omega_bar);
+    let node =
+        |m: usize| store::mach_box_interpolated(wing, mach_of(piece.beta(first + m)), omega_bar);
     let (w, dw) = weight(&piece, first, n, 0, beta);
     let s0 = node(0)?;
     let (mut value, mut slope) = (
@@ -217,7 +220,7 @@ mod tests {
     use super::*;
 
     fn delta(deg: f64) -> Trapezoid {
-        super::super::cache::unit_wing(4.0 / deg.to_radians().tan(), 0.0, deg.to_radians()).unwrap()
+        super::super::store::unit_wing(4.0 / deg.to_radians().tan(), 0.0, deg.to_radians()).unwrap()
     }
 
     #[test]

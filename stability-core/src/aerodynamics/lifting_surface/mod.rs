@@ -44,11 +44,21 @@
 //! # In the program
 //! The damping theories `lifting-surface` and `lifting-surface-frequency`
 //! and the aerodynamic model `lifting-surface` (`crate::aerodynamics::damping`,
-//! `crate::aerodynamics::models::aero`) take their solutions from [`cache`], which solves each
-//! (wing shape, M, ω̄) once per process; the aerodynamic model's lift slope
+//! `crate::aerodynamics::models::aero`) take their solutions from [`store`], which solves each
+//! (solver, wing shape, M, p̄) once per process; the aerodynamic model's lift slope
 //! and aerodynamic centre, with the exact Mach derivatives eqs (27)–(29)
 //! need, from [`Lattice::solve_steady`]; a sweep's frequency iterations
-//! interpolate in a [`FrequencyTable`] ([`Harmonic::Interpolated`]).
+//! interpolate between the frequency nodes ([`Harmonic::Interpolated`]).
+//!
+//! # Layers
+//! [`solution`] (what every solver gives, and the one [`solution::Key`]) ←
+//! the solvers: the doublet lattice ([`kernel`], [`doublet_line`],
+//! [`Lattice`]), the near-sonic extrapolation ([`near_sonic()`]), the Mach box
+//! ([`mach_box`]) and the multi-surface lattice ([`configuration`]) ←
+//! [`frequency`] (interpolation in ω̄) and [`precomputed`] (solutions
+//! solved ahead of time, as a file) ← [`store`] (each solve once) ←
+//! [`mach_table`] (the Mach box tabulated in M) ← [`mach_range`] (which
+//! solver at which Mach number).
 //!
 //! # Notation
 //! The report's (§3): forces on ½ρSV, moments with a further c̄ (the
@@ -62,7 +72,7 @@
 //! M = 1 the Prandtl–Glauert stretching needs ever more chordwise boxes
 //! and linear theory itself fails (the note: "invalid near M₁ = 1.0").
 //! [`LatticeSpec::for_mach`] refines the lattice chordwise above M = 0.9,
-//! and [`near_sonic()`] (cached: [`cache::near_sonic`]) gives the solution
+//! and [`near_sonic()`] (stored: [`store::near_sonic`]) gives the solution
 //! from 0.9 to the sonic point M = 1 at ω̄ > 0, with its accuracy
 //! (`docs/lattice-near-sonic.md`).
 //! At frequency the lattice needs boxes short against the wavelength,
@@ -71,7 +81,6 @@
 //! derivatives carry Desmarais' approximation error (up to 1 %): ask for
 //! ω̄ = 0 for quasi-steady values, which are exact.
 
-pub mod cache;
 pub mod configuration;
 pub(crate) mod derivatives;
 pub mod doublet_line;
@@ -85,16 +94,17 @@ pub mod near_sonic;
 pub mod precomputed;
 pub mod solution;
 pub(crate) mod solve;
+pub mod store;
 
 pub use crate::geometry::Trapezoid;
-pub use cache::Harmonic;
 pub use derivatives::LiftingSurfaceDerivatives;
 pub use doublet_line::LineRule;
 pub use frequency::FrequencyTable;
 pub use kernel::I1Approximation;
 pub use lattice::{Box, Extrapolation, Lattice, LatticeSpec, Spacing};
 pub use near_sonic::{near_sonic, sonic_limit};
-pub use solution::{ConfigurationSolution, Contribution, Solution, Steady};
+pub use solution::{ConfigurationSolution, Contribution, ReducedFrequency, Solution, Steady};
+pub use store::Harmonic;
 
 /// Below this ω̄ [`Lattice::solve`] returns the quasi-steady limit.
 pub const OMEGA_BAR_QUASI_STEADY: f64 = 1e-6;

@@ -1,102 +1,232 @@
-//! Lifting-surface solutions solved ahead of time: every Mach box solve
-//! and every refined near-sonic lattice solve at a frequency node that the
-//! note's study (`delta-stability report`) makes, written by
-//! `cargo xtask tables` into `stability-core/data/lifting-surface-solutions.csv`
-//! and read here on first use, so that the report does not spend minutes
-//! on them. (A near-sonic Mach box solve at the short period's ω̄ takes
-//! 1–12 s: its grid grows to 300 rows and the kernel's phases to tens of
-//! radians; a refined lattice at the sonic extrapolation's anchors, up to
-//! 84 × 16 boxes, about a second.)
+//! Lifting-surface solutions solved ahead of time, as an explicit value: a
+//! file of solutions ([`Precomputed`]) that a caller hands to the store
+//! ([`super::store::preload`]) so that it need not solve them — the note's
+//! study preloads the Mach box and near-sonic lattice solutions it needs
+//! (a near-sonic Mach box solve takes seconds: its grid grows to 300 rows).
+//! Nothing is read behind the caller's back.
 //!
-//! The file is what the solvers give for each key, to the last bit (each
-//! number printed as Rust's shortest round-trip form), and nothing else: a
-//! wing, Mach number or ω̄ it does not hold is solved as before.
-//! `tests/frozen_solutions.rs` solves a sample of its entries again and
-//! asserts they agree. After a change to either solver, its tables in Mach
-//! number or frequency, or the study's wings, run `cargo xtask tables`
-//! (about a quarter of an hour on 2 cores): the file's diff shows what the
-//! change did. Until then the report is slower, not different.
+//! The file holds what the solvers give for each key, to the last bit (each
+//! number in Rust's shortest round-trip form), and in its header the
+//! fingerprint of every solver it holds solutions of ([`fingerprint`]: a
+//! hash of the solver's source, its words left out). A file whose
+//! fingerprint for any solver differs from the solver's own is stale as a
+//! whole ([`PrecomputedError::Stale`]): after a change to a solver its old
+//! values never come back; `cargo xtask tables` writes the file afresh.
 
-use crate::aerodynamics::lifting_surface::Solution;
-use std::collections::HashMap;
-use std::sync::OnceLock;
+use super::solution::{Key, ReducedFrequency, Shape, Solution, Solver};
+use std::collections::HashSet;
 
-/// Which solver a solution comes from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Kind {
-    /// The Mach box (`lifting_surface::mach_box::solve`), on its default grid.
-    MachBox,
-    /// The doublet lattice refined near M = 1
-    /// (`LatticeSpec::for_mach`), at a frequency node.
-    NearSonicLattice,
+mod fingerprints {
+    include!(concat!(env!("OUT_DIR"), "/fingerprints.rs"));
 }
 
-impl Kind {
-    fn name(self) -> &'static str {
-        match self {
-            Kind::MachBox => "mach-box",
-            Kind::NearSonicLattice => "near-sonic-lattice",
-        }
-    }
+/// The solvers whose solutions a file may hold.
+pub const SOLVERS: [Solver; 2] = [Solver::NearSonicLattice, Solver::MachBox];
 
-    fn parse(s: &str) -> Option<Kind> {
-        [Kind::MachBox, Kind::NearSonicLattice]
-            .into_iter()
-            .find(|k| k.name() == s)
+/// The fingerprint of `solver` as built (a hash of the tokens of every
+/// source file its numbers depend on: `stability-core/build.rs`); `None`
+/// for a solver whose solutions are not stored ahead of time.
+pub fn fingerprint(solver: Solver) -> Option<u64> {
+    match solver {
+        Solver::Lattice | Solver::NearSonicLattice => Some(fingerprints::LATTICE),
+        Solver::MachBox => Some(fingerprints::MACH_BOX),
+        Solver::ConfigurationLattice => None,
     }
 }
-
-/// A solution's key: its solver; the unit wing's root chord, tip chord,
-/// semi-span and leading-edge sweep; M and ω̄ — the numbers as bits.
-pub type Key = (Kind, [u64; 4], u64, u64);
-
-/// The file's text.
-const TEXT: &str = include_str!("../../../data/lifting-surface-solutions.csv");
 
 /// The file's header line (after its comment lines).
-pub const HEADER: &str = "solver,root_chord,tip_chord,semi_span,sweep_le,mach,omega_bar,lift_alpha,moment_alpha,lift_alphadot,moment_alphadot,lift_q,moment_q";
+pub const HEADER: &str = "solver,root_chord,tip_chord,semi_span,sweep_le,mach,sigma_bar,omega_bar,lift_alpha,moment_alpha,lift_alphadot,moment_alphadot,lift_q,moment_q";
 
-/// The environment variable that, set to a path, makes `delta-stability
-/// report` ignore the file, solve everything and write what it solved to
-/// the path in the file's form: how `cargo xtask tables` makes it.
-pub const WRITE_ENV: &str = "DELTA_STABILITY_WRITE_SOLUTIONS";
+/// The comment line that carries the fingerprints.
+const FINGERPRINTS: &str = "# fingerprints:";
 
-/// With [`WRITE_ENV`], this variable set (to anything) keeps the file's
-/// entries: the report reads them and writes them with what it had to
-/// solve besides (`cargo xtask tables --add`, after adding a wing).
-pub const KEEP_ENV: &str = "DELTA_STABILITY_WRITE_SOLUTIONS_KEEP";
+/// Why a file of solutions cannot be used.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum PrecomputedError {
+    #[error(
+        "the precomputed solutions were made by another {solver} (fingerprint {file:016x}, now {current:016x}): they are stale; run `cargo xtask tables` to solve them afresh",
+        solver = solver.name()
+    )]
+    Stale {
+        solver: Solver,
+        file: u64,
+        current: u64,
+    },
+    #[error("the precomputed solutions' file has no fingerprint for the {}: run `cargo xtask tables`", solver.name())]
+    NoFingerprint { solver: Solver },
+    #[error("precomputed solutions, line {line}: {what}")]
+    Line { line: usize, what: String },
+}
 
-static TABLE: OnceLock<HashMap<Key, Solution>> = OnceLock::new();
+/// A file of solutions, each keyed as the store keys it.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Precomputed {
+    entries: Vec<(Key<Shape>, Solution)>,
+}
 
-/// The frozen solution at `key`, if the file holds it (none while
-/// [`WRITE_ENV`] is set).
-pub fn get(key: &Key) -> Option<Solution> {
-    static IGNORED: OnceLock<bool> = OnceLock::new();
-    let ignored = || std::env::var_os(WRITE_ENV).is_some() && std::env::var_os(KEEP_ENV).is_none();
-    if *IGNORED.get_or_init(ignored) {
-        return None;
+impl Precomputed {
+    /// The solutions of a file's text, if every solver it holds solutions
+    /// of has the fingerprint it was made with.
+    pub fn parse(text: &str) -> Result<Precomputed, PrecomputedError> {
+        let mut marks: Vec<(Solver, u64)> = Vec::new();
+        let mut entries = Vec::new();
+        for (n, line) in text.lines().enumerate() {
+            let bad = |what: &str| PrecomputedError::Line {
+                line: n + 1,
+                what: what.to_string(),
+            };
+            if let Some(rest) = line.strip_prefix(FINGERPRINTS) {
+                for mark in rest.split_whitespace() {
+                    let (name, hex) = mark
+                        .split_once('=')
+                        .ok_or_else(|| bad("a fingerprint is solver=hex"))?;
+                    let solver = Solver::parse(name).ok_or_else(|| bad("unknown solver"))?;
+                    let value = u64::from_str_radix(hex, 16).map_err(|e| bad(&e.to_string()))?;
+                    marks.push((solver, value));
+                }
+                continue;
+            }
+            if line.starts_with('#') || line == HEADER || line.trim().is_empty() {
+                continue;
+            }
+            entries.push(entry(line).map_err(|what| bad(&what))?);
+        }
+        let used: HashSet<Solver> = entries.iter().map(|(k, _)| k.solver).collect();
+        for solver in used {
+            let current = fingerprint(solver).ok_or(PrecomputedError::NoFingerprint { solver })?;
+            match marks.iter().find(|(s, _)| *s == solver) {
+                None => return Err(PrecomputedError::NoFingerprint { solver }),
+                Some(&(_, file)) if file != current => {
+                    return Err(PrecomputedError::Stale {
+                        solver,
+                        file,
+                        current,
+                    });
+                }
+                Some(_) => {}
+            }
+        }
+        Ok(Precomputed { entries })
     }
-    TABLE.get_or_init(|| parse(TEXT)).get(key).copied()
+
+    /// The solutions, as keys and values.
+    pub fn entries(&self) -> &[(Key<Shape>, Solution)] {
+        &self.entries
+    }
+
+    /// Whether the file holds the solution at `key`.
+    pub fn contains(&self, key: &Key<Shape>) -> bool {
+        self.entries.iter().any(|(k, _)| k == key)
+    }
+
+    /// The file's text for `entries` (sorted by solver, wing, Mach number
+    /// and frequency, as numbers), with the fingerprints of their solvers.
+    pub fn write(entries: impl IntoIterator<Item = (Key<Shape>, Solution)>) -> String {
+        let mut entries: Vec<_> = entries.into_iter().collect();
+        entries.sort_by(|a, b| order(&a.0, &b.0));
+        entries.dedup_by(|a, b| a.0 == b.0);
+        let mut out = String::from(
+            "# Lifting-surface solutions the note's study needs, solved ahead of time: written by\n\
+             # `cargo xtask tables` (stability_core::aerodynamics::lifting_surface::precomputed). Do not edit.\n",
+        );
+        out.push_str(FINGERPRINTS);
+        for solver in SOLVERS {
+            if let Some(f) = fingerprint(solver) {
+                out.push_str(&format!(" {}={f:016x}", solver.name()));
+            }
+        }
+        out.push('\n');
+        out.push_str(HEADER);
+        out.push('\n');
+        for (k, s) in &entries {
+            out.push_str(k.solver.name());
+            for x in numbers(k, s) {
+                out.push_str(&format!(",{x:?}"));
+            }
+            out.push('\n');
+        }
+        out
+    }
 }
 
-/// Every entry of the file, in the file's order.
-pub fn entries() -> Vec<(Key, Solution)> {
-    let mut out: Vec<(Key, Solution)> = TABLE
-        .get_or_init(|| parse(TEXT))
-        .iter()
-        .map(|(k, s)| (*k, *s))
-        .collect();
-    out.sort_by(|a, b| order(&a.0, &b.0));
-    out
+/// The file's numbers of one entry, in [`HEADER`]'s order.
+fn numbers(k: &Key<Shape>, s: &Solution) -> [f64; 13] {
+    let [c, t, sp, l] = k.geometry.map(f64::from_bits);
+    let p = k.frequency();
+    [
+        c,
+        t,
+        sp,
+        l,
+        k.mach(),
+        p.sigma_bar,
+        p.omega_bar,
+        s.lift_alpha,
+        s.moment_alpha,
+        s.lift_alphadot,
+        s.moment_alphadot,
+        s.lift_q,
+        s.moment_q,
+    ]
 }
 
-/// The file's order: by solver, wing, Mach number, ω̄ (as numbers).
-fn order(a: &Key, b: &Key) -> std::cmp::Ordering {
-    let numbers = |k: &Key| {
-        let [c, t, s, l] = k.1.map(f64::from_bits);
-        [c, t, s, l, f64::from_bits(k.2), f64::from_bits(k.3)]
+/// One line of the file: its solver and thirteen numbers.
+fn entry(line: &str) -> Result<(Key<Shape>, Solution), String> {
+    let (name, rest) = line.split_once(',').ok_or("no solver")?;
+    let solver = Solver::parse(name).ok_or("unknown solver")?;
+    if !SOLVERS.contains(&solver) {
+        return Err(format!("the {name} solutions are not stored ahead of time"));
+    }
+    let v: Vec<f64> = rest
+        .split(',')
+        .map(str::parse::<f64>)
+        .collect::<Result<_, _>>()
+        .map_err(|e| e.to_string())?;
+    let [
+        c,
+        t,
+        s,
+        l,
+        mach,
+        sigma_bar,
+        omega_bar,
+        la,
+        ma,
+        lad,
+        mad,
+        lq,
+        mq,
+    ] = v[..]
+    else {
+        return Err("13 numbers after the solver".to_string());
     };
-    a.0.cmp(&b.0).then_with(|| {
+    let p = ReducedFrequency {
+        sigma_bar,
+        omega_bar,
+    };
+    let key = Key::new(solver, [c, t, s, l].map(f64::to_bits), mach, p);
+    let solution = Solution {
+        mach,
+        omega_bar,
+        lift_alpha: la,
+        moment_alpha: ma,
+        lift_alphadot: lad,
+        moment_alphadot: mad,
+        lift_q: lq,
+        moment_q: mq,
+    };
+    Ok((key, solution))
+}
+
+/// The file's order: by solver, then wing, Mach number and frequency as
+/// numbers.
+fn order(a: &Key<Shape>, b: &Key<Shape>) -> std::cmp::Ordering {
+    let numbers = |k: &Key<Shape>| {
+        let [c, t, s, l] = k.geometry.map(f64::from_bits);
+        let p = k.frequency();
+        [c, t, s, l, k.mach(), p.sigma_bar, p.omega_bar]
+    };
+    a.solver.cmp(&b.solver).then_with(|| {
         numbers(a)
             .iter()
             .zip(numbers(b).iter())
@@ -106,106 +236,16 @@ fn order(a: &Key, b: &Key) -> std::cmp::Ordering {
     })
 }
 
-/// The entries of a file's text (comment lines `#`, the header, then one
-/// line per solution). A line that does not parse is a bug in the writer:
-/// it panics, naming the line, so that the file's test fails.
-pub fn parse(text: &str) -> HashMap<Key, Solution> {
-    let mut out = HashMap::new();
-    for (n, line) in text.lines().enumerate() {
-        if line.starts_with('#') || line == HEADER || line.trim().is_empty() {
-            continue;
-        }
-        let bad =
-            |what: &str| -> ! { panic!("lifting-surface-solutions.csv line {}: {what}", n + 1) };
-        let (kind, rest) = line.split_once(',').unwrap_or_else(|| bad("no solver"));
-        let kind = Kind::parse(kind).unwrap_or_else(|| bad("unknown solver"));
-        let v: Vec<f64> = rest
-            .split(',')
-            .map(|x| x.parse::<f64>())
-            .collect::<Result<_, _>>()
-            .unwrap_or_else(|e| bad(&e.to_string()));
-        let [c, t, s, l, mach, omega_bar, la, ma, lad, mad, lq, mq] = v[..] else {
-            bad("12 numbers after the solver")
-        };
-        let key = (
-            kind,
-            [c, t, s, l].map(f64::to_bits),
-            mach.to_bits(),
-            omega_bar.to_bits(),
-        );
-        let solution = Solution {
-            mach,
-            omega_bar,
-            lift_alpha: la,
-            moment_alpha: ma,
-            lift_alphadot: lad,
-            moment_alphadot: mad,
-            lift_q: lq,
-            moment_q: mq,
-        };
-        out.insert(key, solution);
-    }
-    out
-}
-
-/// The file's text for `entries` (sorted), after a comment saying how it
-/// was made.
-pub fn write(entries: &mut [(Key, Solution)]) -> String {
-    entries.sort_by(|a, b| order(&a.0, &b.0));
-    let mut out = String::from(
-        "# Lifting-surface solutions the note's study needs, solved ahead of time: written by\n\
-         # `cargo xtask tables` (stability_core::frozen). Do not edit.\n",
-    );
-    out.push_str(HEADER);
-    out.push('\n');
-    for (k, s) in entries.iter() {
-        let shape = k.1.map(f64::from_bits);
-        let numbers = [
-            shape[0],
-            shape[1],
-            shape[2],
-            shape[3],
-            f64::from_bits(k.2),
-            f64::from_bits(k.3),
-            s.lift_alpha,
-            s.moment_alpha,
-            s.lift_alphadot,
-            s.moment_alphadot,
-            s.lift_q,
-            s.moment_q,
-        ];
-        out.push_str(k.0.name());
-        for x in numbers {
-            out.push_str(&format!(",{x:?}"));
-        }
-        out.push('\n');
-    }
-    out
-}
-
-/// What [`WRITE_ENV`] writes: everything this process solved that the
-/// file could hold (the Mach box's cache and the near-sonic lattice's
-/// frequency tables), with the file's own entries under [`KEEP_ENV`].
-pub fn solved() -> Vec<(Key, Solution)> {
-    let mut out = crate::aerodynamics::lifting_surface::mach_box::cache::solved();
-    out.extend(crate::aerodynamics::lifting_surface::cache::near_sonic_solved());
-    if std::env::var_os(KEEP_ENV).is_some() {
-        out.extend(entries());
-    }
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    #[test]
-    fn the_writer_and_the_reader_agree_to_the_bit() {
-        let key = (
-            Kind::NearSonicLattice,
+    fn sample() -> (Key<Shape>, Solution) {
+        let key = Key::new(
+            Solver::NearSonicLattice,
             [1.0, 0.0, 1.0, std::f64::consts::FRAC_PI_4].map(f64::to_bits),
-            0.995_f64.to_bits(),
-            0.35_f64.to_bits(),
+            0.995,
+            ReducedFrequency::harmonic(0.35),
         );
         let s = Solution {
             mach: 0.995,
@@ -217,10 +257,16 @@ mod tests {
             lift_q: std::f64::consts::PI,
             moment_q: -0.0,
         };
-        let text = write(&mut [(key, s)]);
-        let back = parse(&text);
-        assert_eq!(back.len(), 1);
-        let got = back[&key];
+        (key, s)
+    }
+
+    #[test]
+    fn the_writer_and_the_reader_agree_to_the_bit() {
+        let (key, s) = sample();
+        let back = Precomputed::parse(&Precomputed::write([(key.clone(), s)])).unwrap();
+        assert_eq!(back.entries().len(), 1);
+        let (k, got) = &back.entries()[0];
+        assert_eq!(k, &key);
         for (a, b) in [
             (got.lift_alpha, s.lift_alpha),
             (got.moment_alpha, s.moment_alpha),
@@ -229,6 +275,32 @@ mod tests {
         ] {
             assert_eq!(a.to_bits(), b.to_bits());
         }
-        assert_eq!(got, s);
+        assert_eq!(*got, s);
+    }
+
+    #[test]
+    fn a_file_made_by_another_solver_is_stale_as_a_whole() {
+        let (key, s) = sample();
+        let text = Precomputed::write([(key, s)]);
+        let current = fingerprint(Solver::NearSonicLattice).unwrap();
+        let changed = text.replace(&format!("{current:016x}"), &format!("{:016x}", current ^ 1));
+        assert_ne!(changed, text);
+        assert_eq!(
+            Precomputed::parse(&changed),
+            Err(PrecomputedError::Stale {
+                solver: Solver::NearSonicLattice,
+                file: current ^ 1,
+                current
+            })
+        );
+        let unmarked: String = text
+            .lines()
+            .filter(|l| !l.starts_with(FINGERPRINTS))
+            .map(|l| format!("{l}\n"))
+            .collect();
+        assert!(matches!(
+            Precomputed::parse(&unmarked),
+            Err(PrecomputedError::NoFingerprint { .. })
+        ));
     }
 }

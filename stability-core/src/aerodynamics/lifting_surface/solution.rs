@@ -64,3 +64,120 @@ pub struct ConfigurationSolution {
     pub total: Solution,
     pub parts: Vec<Contribution>,
 }
+
+/// The reduced frequency p̄ = pc̄/V of a motion e^{pt}, p = σ + iω: its
+/// imaginary part is ω̄ = ωc̄/V, its real part σ̄ = σc̄/V the motion's rate
+/// of growth (negative: decay). A steady oscillation has σ̄ = 0 — all the
+/// solvers take today ([`ReducedFrequency::harmonic`]); the store of
+/// solutions is keyed by the whole p̄ ([`Key`]), so that air forces at a
+/// decaying oscillation's own p̄ land beside them.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ReducedFrequency {
+    /// σ̄ = σc̄/V.
+    pub sigma_bar: f64,
+    /// ω̄ = ωc̄/V.
+    pub omega_bar: f64,
+}
+
+impl ReducedFrequency {
+    /// A steady oscillation at ω̄ (σ̄ = 0; ω̄ = 0 is the quasi-steady limit).
+    pub fn harmonic(omega_bar: f64) -> ReducedFrequency {
+        ReducedFrequency {
+            sigma_bar: 0.0,
+            omega_bar,
+        }
+    }
+
+    /// The bits of σ̄ and ω̄, as a key holds them.
+    pub fn bits(self) -> [u64; 2] {
+        [self.sigma_bar.to_bits(), self.omega_bar.to_bits()]
+    }
+}
+
+/// Which solver a solution comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Solver {
+    /// The doublet lattice on its default boxes ([`super::LatticeSpec::for_wing`]).
+    Lattice,
+    /// The doublet lattice refined near M = 1 ([`super::LatticeSpec::for_mach`]).
+    NearSonicLattice,
+    /// The Mach box on its default grid ([`super::mach_box::MachBoxSpec::for_wing`]).
+    MachBox,
+    /// The multi-surface lattice of a configuration
+    /// ([`super::configuration::ConfigurationLattice`]).
+    ConfigurationLattice,
+}
+
+impl Solver {
+    /// Its name in the precomputed solutions' file.
+    pub fn name(self) -> &'static str {
+        match self {
+            Solver::Lattice => "lattice",
+            Solver::NearSonicLattice => "near-sonic-lattice",
+            Solver::MachBox => "mach-box",
+            Solver::ConfigurationLattice => "configuration-lattice",
+        }
+    }
+
+    /// The solver of this name.
+    pub fn parse(s: &str) -> Option<Solver> {
+        [
+            Solver::Lattice,
+            Solver::NearSonicLattice,
+            Solver::MachBox,
+            Solver::ConfigurationLattice,
+        ]
+        .into_iter()
+        .find(|k| k.name() == s)
+    }
+}
+
+/// A wing's shape as a key holds it: the bits of the root chord, tip chord,
+/// semi-span and leading-edge sweep of its unit wing (root chord 1: the
+/// derivatives do not depend on scale).
+pub type Shape = [u64; 4];
+
+/// The shape of `wing` ([`Shape`]).
+pub fn shape(wing: &crate::geometry::Trapezoid) -> Shape {
+    [
+        wing.root_chord,
+        wing.tip_chord,
+        wing.semi_span,
+        wing.sweep_le,
+    ]
+    .map(f64::to_bits)
+}
+
+/// The one key of a solution: the solver, the geometry (a wing's
+/// [`Shape`], or every number a configuration's lattice depends on), the
+/// Mach number and the reduced frequency p̄, as bits.
+#[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Key<G> {
+    pub solver: Solver,
+    pub geometry: G,
+    pub mach: u64,
+    pub frequency: [u64; 2],
+}
+
+impl<G> Key<G> {
+    /// The key of `geometry`'s solution by `solver` at (`mach`, p̄).
+    pub fn new(solver: Solver, geometry: G, mach: f64, p: ReducedFrequency) -> Key<G> {
+        Key {
+            solver,
+            geometry,
+            mach: mach.to_bits(),
+            frequency: p.bits(),
+        }
+    }
+
+    pub fn mach(&self) -> f64 {
+        f64::from_bits(self.mach)
+    }
+
+    pub fn frequency(&self) -> ReducedFrequency {
+        ReducedFrequency {
+            sigma_bar: f64::from_bits(self.frequency[0]),
+            omega_bar: f64::from_bits(self.frequency[1]),
+        }
+    }
+}

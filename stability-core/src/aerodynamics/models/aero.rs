@@ -15,7 +15,7 @@ pub use super::table::{Table, TableOrigin};
 pub use crate::aerodynamics::damping::TheoryCoefficients;
 pub use crate::numerics::interpolation::{Value, hermite, monotone_slopes};
 
-use crate::aerodynamics::lifting_surface::{Steady, cache, mach_range};
+use crate::aerodynamics::lifting_surface::{Steady, mach_range, store};
 use crate::aerodynamics::models::derivative_tables::DerivativeTables;
 use crate::aerodynamics::models::increment::Increment;
 use crate::aerodynamics::theory::Row;
@@ -112,7 +112,7 @@ impl AeroModelName {
 /// slope and aerodynamic centre across). The Mach box's warning (a subsonic leading edge
 /// beyond its verified range) is not carried: see the damping theory's.
 pub fn lifting_surface_steady(p: &Planform, m: f64) -> Result<Steady, AeroError> {
-    let wing = cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)
+    let wing = store::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)
         .map_err(AeroError::LiftingSurface)?;
     mach_range::steady(&wing, m)
         .map(|(s, _)| s)
@@ -129,7 +129,7 @@ pub fn lifting_surface_coefficients(
     p: &Planform,
     m: f64,
 ) -> Result<mach_range::SteadyCoefficients, AeroError> {
-    let wing = cache::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)
+    let wing = store::unit_wing(p.aspect_ratio(), p.taper, p.sweep_le)
         .map_err(AeroError::LiftingSurface)?;
     mach_range::coefficients(&wing, m).map_err(AeroError::LiftingSurface)
 }

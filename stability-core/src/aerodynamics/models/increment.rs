@@ -19,7 +19,7 @@
 
 use crate::aerodynamics::lifting_surface::configuration::ConfigurationError;
 use crate::aerodynamics::lifting_surface::{ConfigurationSolution, Contribution};
-use crate::aerodynamics::lifting_surface::{Harmonic, Solution};
+use crate::aerodynamics::lifting_surface::{Harmonic, Solution, store};
 use crate::aerodynamics::models::faired::{
     LATTICE_SLOPE_STEP, LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM, SUPERSONIC_SLOPE_STEP,
 };
@@ -258,5 +258,47 @@ impl Configuration {
             d_lift_alpha: Some(d[0]),
             d_moment_alpha: Some(d[1]),
         })
+    }
+}
+
+impl Configuration {
+    /// The configuration's response at M < 1 and ω̄ (0: quasi-steady), from
+    /// the store ([`store::configuration`]): one solve of the multi-surface
+    /// lattice per (configuration, M, ω̄). The lattice
+    /// holds the lifting surfaces; a [`crate::geometry::configuration::Body`] is added as its own
+    /// part by slender-body theory, eq (43) (`aerodynamics::body`), as
+    /// in the supersonic theory.
+    pub fn solve_subsonic(
+        &self,
+        mach: f64,
+        omega_bar: f64,
+    ) -> Result<ConfigurationSolution, ConfigurationError> {
+        self.solve_subsonic_with(mach, omega_bar, Harmonic::Direct)
+    }
+
+    /// As [`Configuration::solve_subsonic`], the harmonic solution had as
+    /// `harmonic` says ([`store::configuration`]).
+    pub fn solve_subsonic_with(
+        &self,
+        mach: f64,
+        omega_bar: f64,
+        harmonic: Harmonic,
+    ) -> Result<ConfigurationSolution, ConfigurationError> {
+        let mut solution = store::configuration(self, mach, omega_bar, harmonic)?;
+        if let Some(body) = &self.body {
+            let b = body.solution(&self.wing, mach, omega_bar);
+            let t = &mut solution.total;
+            t.lift_alpha += b.lift_alpha;
+            t.moment_alpha += b.moment_alpha;
+            t.lift_alphadot += b.lift_alphadot;
+            t.moment_alphadot += b.moment_alphadot;
+            t.lift_q += b.lift_q;
+            t.moment_q += b.moment_q;
+            solution.parts.push(Contribution {
+                part: Part::Body,
+                solution: b,
+            });
+        }
+        Ok(solution)
     }
 }

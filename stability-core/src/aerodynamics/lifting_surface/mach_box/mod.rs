@@ -35,7 +35,9 @@
 //!   each receiving point;
 //! - [`edge`]: the diaphragm's edge singularity (box weights and exact
 //!   near-field coefficients of the upwash a/√d);
-//! - [`cache`]: one solve per (wing, M, ω̄), as [`crate::aerodynamics::lifting_surface::cache`].
+//!
+//! Its solutions are stored, one solve per (wing, M, p̄), by
+//! [`crate::aerodynamics::lifting_surface::store`].
 //!
 //! # Convergence
 //! With supersonic edges the error falls as the square of the box size
@@ -61,7 +63,6 @@
 //! at ω̄ = 10⁻⁴ (the quadrature parts divided by ω̄; an O(ω̄²) error of
 //! 10⁻⁸).
 
-pub mod cache;
 pub mod direct;
 pub mod edge;
 pub mod grid;

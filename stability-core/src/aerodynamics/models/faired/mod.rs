@@ -46,7 +46,7 @@ use crate::aerodynamics::damping::{
 };
 use crate::aerodynamics::lifting_surface::mach_range::{self, first_mach_box_mach};
 use crate::aerodynamics::lifting_surface::near_sonic::{SONIC_ANCHORS, SONIC_OMEGA_BAR_MIN};
-use crate::aerodynamics::lifting_surface::{Harmonic, LiftingSurfaceError, Trapezoid, cache};
+use crate::aerodynamics::lifting_surface::{Harmonic, LiftingSurfaceError, Trapezoid, store};
 use crate::aerodynamics::warnings::Warning;
 use crate::geometry::{Planform, sonic_leading_edge_mach};
 use crate::numerics::interpolation::Value;
@@ -91,7 +91,7 @@ pub struct Regime {
 
 /// The unit wing (root chord 1) of a planform's shape.
 fn unit_wing(planform: &Planform) -> Result<Trapezoid, LiftingSurfaceError> {
-    cache::unit_wing(planform.aspect_ratio(), planform.taper, planform.sweep_le)
+    store::unit_wing(planform.aspect_ratio(), planform.taper, planform.sweep_le)
 }
 
 /// The join of the faired model's lift slope and aerodynamic centre about

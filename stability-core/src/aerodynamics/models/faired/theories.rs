@@ -22,7 +22,7 @@ use crate::aerodynamics::damping::TheoryCoefficients;
 use crate::aerodynamics::damping::{
     Damping, DampingError, Theory, WingInput, damping_derivatives_with, theory_coefficients,
 };
-use crate::aerodynamics::lifting_surface::{Harmonic, cache};
+use crate::aerodynamics::lifting_surface::{Harmonic, store};
 use crate::aerodynamics::warnings::{Warning, Warnings};
 use crate::derivatives::DampingDerivatives;
 use crate::geometry::{Planform, sonic_leading_edge_mach};
@@ -273,8 +273,8 @@ fn lattice_coefficients(
     planform: &Planform,
     mach: f64,
 ) -> Result<TheoryCoefficients, DampingError> {
-    let shape = cache::unit_wing(planform.aspect_ratio(), planform.taper, planform.sweep_le)?;
-    let steady = cache::steady(&shape, mach)?;
+    let shape = store::unit_wing(planform.aspect_ratio(), planform.taper, planform.sweep_le)?;
+    let steady = store::lattice_steady(&shape, mach)?;
     let ((a, da), (h0, dh0)) = (steady.lift_slope(), steady.aerodynamic_centre());
     Ok(TheoryCoefficients {
         model: Theory::LiftingSurface.name(),
