@@ -335,9 +335,10 @@ enum Command {
     /// quarter chord; negative for a foreplane) and the verdict and cycles
     /// to half amplitude at each Mach number; --json the same as one object.
     ///
-    /// The search: the wing alone first (no surface needed?), then 25 areas
-    /// spaced geometrically from 1/1000 of the limit to the limit (the
-    /// wing's area, or --max-area), then bisection to 0.1 % between the
+    /// The search: the wing alone first (no surface needed?), then areas
+    /// spaced geometrically (×1.33) from 1/1000 of the limit or of the
+    /// wing's area, whichever is smaller, to the limit (the wing's area: 25
+    /// areas; or --max-area, at most 1e9), then bisection to 0.1 % between the
     /// last that fails and the first that meets. The verdict need not be
     /// monotone in area (a bigger tail moves the neutral point aft and
     /// stiffens the short period as it damps it): the scan finds the first

@@ -116,6 +116,18 @@ pub fn remove_temporaries_on_signals() {
     }
 }
 
+/// The path of a directory to be replaced, spelt as the directory itself:
+/// `rep/.` and `rep/` are `rep` (a rename cannot take a path whose last
+/// component is `.`), and a path ending in `..` (or `.` alone) is the
+/// directory it resolves to. Anything else is as given.
+pub fn directory_target(path: &Path) -> PathBuf {
+    let lexical: PathBuf = path.components().collect();
+    match lexical.components().next_back() {
+        Some(std::path::Component::Normal(_)) => lexical,
+        _ => std::fs::canonicalize(&lexical).unwrap_or(lexical),
+    }
+}
+
 /// The directory a target path is written in.
 fn parent_of(path: &Path) -> &Path {
     match path.parent() {
@@ -417,8 +429,10 @@ pub struct AtomicDir {
 }
 
 impl AtomicDir {
-    /// A new, empty temporary directory beside `target`.
+    /// A new, empty temporary directory beside `target` (however spelt:
+    /// [`directory_target`]).
     pub fn create(target: &Path) -> std::io::Result<AtomicDir> {
+        let target = &directory_target(target);
         let dir = parent_of(target);
         std::fs::create_dir_all(dir)?;
         remove_stale(dir);
@@ -664,6 +678,29 @@ mod tests {
             "mine"
         );
         assert!(!target.join("a").exists());
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn a_directory_spelt_with_a_trailing_dot_is_replaced_as_itself() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("rep");
+        for (k, spelt) in ["rep", "rep/.", "rep/", "rep/./", "rep/sub/.."]
+            .iter()
+            .enumerate()
+        {
+            if k == 4 {
+                std::fs::create_dir(target.join("sub")).unwrap();
+            }
+            let d = AtomicDir::create(&dir.path().join(spelt)).unwrap();
+            d.write("index.html", format!("{k}").as_bytes()).unwrap();
+            d.commit().unwrap();
+            let read = std::fs::read_to_string(target.join("index.html")).unwrap();
+            assert_eq!(read, format!("{k}"), "{spelt}");
+        }
+        assert_eq!(directory_target(Path::new("a/b/.")), Path::new("a/b"));
+        assert_eq!(directory_target(Path::new("./a/")), Path::new("./a"));
+        // nothing left beside it
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
     }
 

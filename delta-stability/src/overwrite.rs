@@ -7,8 +7,10 @@
 //! them. Two paths are the same file when their canonical paths agree
 //! (symbolic links and `..` resolved; an output not yet written by its
 //! directory's) or, on Unix, when they are one file (device and inode: a
-//! hard link). Such a command line is bad input (exit status 2), refused
-//! before anything is written, and the message names both options.
+//! hard link). An output that is a directory the command replaces whole
+//! (`report --out DIR`) must hold no input either, at any depth. Such a
+//! command line is bad input (exit status 2), refused before anything is
+//! written, and the message names both options.
 
 use crate::Failure;
 use stability_io::diag::InputError;
@@ -22,6 +24,8 @@ pub struct Named {
     pub option: String,
     pub what: String,
     pub path: PathBuf,
+    /// A directory the command replaces whole: every file in it is lost.
+    pub directory: bool,
 }
 
 impl Named {
@@ -32,6 +36,15 @@ impl Named {
             what: option.clone(),
             option,
             path: path.into(),
+            directory: false,
+        }
+    }
+
+    /// The directory `option` names, which the command replaces whole.
+    pub fn directory(option: impl Into<String>, path: impl AsRef<Path>) -> Named {
+        Named {
+            directory: true,
+            ..Named::new(option, crate::output::directory_target(path.as_ref()))
         }
     }
 
@@ -41,6 +54,7 @@ impl Named {
             option: option.into(),
             what,
             path: path.into(),
+            directory: false,
         }
     }
 }
@@ -63,6 +77,11 @@ impl Identity {
 
     fn same(&self, other: &Identity) -> bool {
         self.canonical == other.canonical || (self.file.is_some() && self.file == other.file)
+    }
+
+    /// Whether this file lies in the directory `dir`, at any depth.
+    fn within(&self, dir: &Identity) -> bool {
+        self.canonical.starts_with(&dir.canonical)
     }
 }
 
@@ -125,6 +144,17 @@ pub fn check(inputs: &[Named], outputs: &[Named]) -> Result<(), Failure> {
             return Err(bad(format!(
                 "{} would overwrite {}, which the command reads: give {} another path",
                 o.what, inputs[i].what, o.option
+            )));
+        }
+        if o.directory
+            && let Some(i) = ins.iter().position(|id| id.within(oid))
+        {
+            return Err(bad(format!(
+                "{} holds {}, which the command reads, and the directory is replaced whole: give {} a directory that holds no input, or move `{}` out of it",
+                o.what,
+                inputs[i].what,
+                o.option,
+                inputs[i].path.display()
             )));
         }
         if let Some(j) = outs[..k].iter().position(|id| id.same(oid)) {
@@ -199,5 +229,33 @@ mod tests {
                 .to_string()
                 .contains("--csv and --svg name the same file")
         );
+    }
+
+    #[test]
+    fn a_directory_replaced_whole_holds_no_input() {
+        let dir = tempfile::tempdir().unwrap();
+        let rep = dir.path().join("rep");
+        std::fs::create_dir_all(rep.join("data")).unwrap();
+        let table = rep.join("data/lift-slope.csv");
+        std::fs::write(&table, "mach,value\n").unwrap();
+        let config = dir.path().join("a.toml");
+        std::fs::write(&config, "x").unwrap();
+        let ins = inputs("CONFIG", config.to_str().unwrap(), &[config.clone(), table]);
+        for spelt in ["rep", "rep/.", "rep/", "rep/data/.."] {
+            let out = Named::directory("--out", dir.path().join(spelt));
+            let e = check(&ins, &[out]).unwrap_err().to_string();
+            assert!(
+                e.contains("--out holds") && e.contains("lift-slope.csv"),
+                "{spelt}: {e}"
+            );
+        }
+        // a directory beside the input's, or one not yet made, is fine
+        for other in ["rep2", "new/sub"] {
+            let out = Named::directory("--out", dir.path().join(other));
+            assert!(check(&ins, &[out]).is_ok(), "{other}");
+        }
+        // a file output is not a directory: it only must not be an input
+        let file = Named::new("-o", dir.path().join("rep/data/out.csv"));
+        assert!(check(&ins, &[file]).is_ok());
     }
 }

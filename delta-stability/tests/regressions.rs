@@ -877,16 +877,23 @@ fn no_output_overwrites_an_input_or_another_output() {
     }
     let before = contents(dir.path());
     for (args, expect) in cases {
-        let out = bin()
-            .current_dir(dir.path())
-            .args(args.split(' '))
-            .output()
-            .unwrap();
-        let err = stderr(&out);
-        assert_eq!(out.status.code(), Some(INPUT), "{args}:\n{err}");
+        let err = refused_in(dir.path(), args);
         assert!(err.contains(expect), "{args}:\n{err}");
         assert_eq!(contents(dir.path()), before, "{args} changed a file");
     }
+}
+
+/// The message of `args` (split at spaces) run in `dir`, which must be
+/// refused as bad input.
+fn refused_in(dir: &std::path::Path, args: &str) -> String {
+    let out = bin()
+        .current_dir(dir)
+        .args(args.split(' '))
+        .output()
+        .unwrap();
+    let err = stderr(&out);
+    assert_eq!(out.status.code(), Some(INPUT), "{args}:\n{err}");
+    err
 }
 
 #[test]
@@ -1150,4 +1157,421 @@ fn a_response_over_a_tiny_span_is_written_in_short_numbers() {
         }
     }
     assert!(csv.lines().nth(10).unwrap().starts_with("9e-301,"), "{csv}");
+}
+
+// The third campaign (issue 31): each test failed on the program before
+// its fix.
+
+/// The 60° delta at a supersonic Mach number, by the supersonic theory
+/// (no lattice: quick), with `more` appended.
+fn supersonic_config(more: &str) -> String {
+    format!(
+        "[planform]\nsweep = 60.0\ntaper = 0.0\nroot_chord = 10.0\n\n[flight]\nmach = 1.5\ncg = 0.25\nmu1 = 50.0\ni_b = 0.08\ncl_m2 = 0.05\n\n[model]\ndamping = \"supersonic\"\n{more}"
+    )
+}
+
+/// The message of `args` — `CFG` standing for a config of `text` written
+/// in a scratch directory — which must be refused as bad input.
+fn refused_with(text: &str, args: &[&str]) -> String {
+    let dir = Scratch::new();
+    let cfg = dir.write("c.toml", text);
+    let args: Vec<&str> = args
+        .iter()
+        .map(|a| if *a == "CFG" { path(&cfg) } else { a })
+        .collect();
+    stderr(&run_err(&args, INPUT))
+}
+
+/// Issue 31, 1: A samples file `[uncertainty]` names is an input of every command
+/// that reads the config, whether it runs the study or not: no output
+/// overwrites it.
+#[test]
+fn a_samples_file_the_config_names_is_never_overwritten() {
+    let dir = Scratch::new();
+    let samples = "i_b\n0.07\n0.08\n0.09\n";
+    dir.write(
+        "u.toml",
+        supersonic_config("[uncertainty.i_b]\ndist = \"samples\"\nfile = \"s.csv\"\n"),
+    );
+    dir.write("s.csv", samples);
+    for args in [
+        "uncertainty u.toml --mach 1.5 --samples 10 -o s.csv",
+        "sweep u.toml --mach 1.5 -o s.csv",
+        "analyze u.toml --write-derivatives ./s.csv",
+    ] {
+        let err = refused_in(dir.path(), args);
+        assert!(
+            err.contains("would overwrite `s.csv` (named in CONFIG)"),
+            "{args}:\n{err}"
+        );
+        let now = std::fs::read_to_string(dir.path().join("s.csv")).unwrap();
+        assert_eq!(now, samples, "{args} changed the samples");
+    }
+}
+
+/// Issue 31, 2: `report --out DIR` replaces DIR whole: a DIR that holds an input of
+/// the run (here the lift-slope table an earlier report wrote there) is
+/// refused, however DIR is spelt, and nothing in it changes.
+#[test]
+fn a_report_directory_that_holds_an_input_is_refused() {
+    let dir = Scratch::new();
+    dir.write("a.toml", supersonic_config(""));
+    let run = |args: &str| {
+        bin()
+            .current_dir(dir.path())
+            .args(args.split(' '))
+            .output()
+            .unwrap()
+    };
+    let first = run("report a.toml --mach 1.5,1.6 --out rep");
+    assert!(first.status.success(), "{}", stderr(&first));
+    dir.write(
+        "b.toml",
+        supersonic_config("[model.tables]\nlift_slope = { file = \"rep/lift-slope.csv\" }\n"),
+    );
+    let before = contents(&dir.path().join("rep"));
+    assert!(before.iter().any(|(n, _)| n == "lift-slope.csv"));
+    for out in ["rep", "rep/", "rep/.", "./rep"] {
+        let done = run(&format!("report b.toml --mach 1.5,1.6 --out {out}"));
+        let err = stderr(&done);
+        assert_eq!(done.status.code(), Some(INPUT), "{out}:\n{err}");
+        assert!(
+            err.contains("--out holds `rep/lift-slope.csv` (named in CONFIG)"),
+            "{out}:\n{err}"
+        );
+        assert_eq!(contents(&dir.path().join("rep")), before, "{out}");
+    }
+}
+
+/// The DATCOM fixture's text, and the config of its 60° delta taking it.
+fn datcom_config(dir: &Scratch, name: &str, text: &str) -> std::path::PathBuf {
+    dir.write(name, text);
+    dir.write(
+        &format!("{name}.toml"),
+        supersonic_config(&format!("datcom = \"{name}\"\n"))
+            .replace("\"supersonic\"", "\"faired\""),
+    )
+}
+
+/// Issue 31, 3: A DATCOM table headed `(PER RADIAN)` (DATCOM's `DERIV RAD`) is read
+/// per radian: its dynamic derivatives, printed the same, are 180/π times
+/// smaller than under a `(PER DEGREE)` header.
+#[test]
+fn a_datcom_table_headed_per_radian_is_read_per_radian() {
+    let dir = Scratch::new();
+    let degree = include_str!("../../stability-io/tests/fixtures/datcom/delta60_h0.0.out");
+    let radian = degree.replace(
+        "DYNAMIC DERIVATIVES (PER DEGREE)",
+        "DYNAMIC DERIVATIVES (PER RADIAN)",
+    );
+    let z_q = |name: &str, text: &str| {
+        let cfg = datcom_config(&dir, name, text);
+        // the c.g. at DATCOM's moment centre (h = −5e-8): no transfer
+        let j = json(&run_ok(&[
+            "analyze",
+            path(&cfg),
+            "--mach",
+            "2.0",
+            "--cg",
+            "0",
+            "--json",
+        ]));
+        ["z_q", "m_q", "z_wdot", "m_wdot"].map(|k| j["derivatives"][k].as_f64().unwrap())
+    };
+    let (d, r) = (z_q("deg.out", degree), z_q("rad.out", &radian));
+    for k in 0..4 {
+        let ratio = r[k] / d[k];
+        assert!(
+            (ratio * 180.0 / std::f64::consts::PI - 1.0).abs() < 1e-4,
+            "{k}: {} per degree, {} per radian",
+            d[k],
+            r[k]
+        );
+    }
+    // the static table's lift slope is the per-degree header's still
+    let a = |name: &str| {
+        let cfg = dir.path().join(format!("{name}.toml"));
+        let j = json(&run_ok(&["analyze", path(&cfg), "--mach", "2.0", "--json"]));
+        j["aerodynamics"]["lift_slope"]["value"].as_f64().unwrap()
+    };
+    assert_eq!(a("deg.out"), a("rad.out"));
+}
+
+/// Issue 31, 4: An option the config already fixes is refused, not ignored:
+/// `--damping` beside `[uncertainty.model]`, `--aero` where tables give
+/// both the lift slope and the aerodynamic centre.
+#[test]
+fn an_option_the_config_fixes_is_refused_not_ignored() {
+    let err = stderr(&run_err(
+        &[
+            "uncertainty",
+            "examples/delta-60-uncertain.toml",
+            "--mach",
+            "1.5",
+            "--samples",
+            "10",
+            "--damping",
+            "faired-slender",
+        ],
+        INPUT,
+    ));
+    assert!(
+        err.contains("[uncertainty.model]") && err.contains("--damping faired-slender: "),
+        "{err}"
+    );
+    let both = supersonic_config(
+        "[model.tables]\nlift_slope = { mach = [1.0, 2.0], value = [3.0, 2.5] }\naerodynamic_centre = { mach = [1.0, 2.0], value = [0.5, 0.5] }\n",
+    );
+    let err = refused_with(&both, &["analyze", "CFG", "--aero", "lifting-surface"]);
+    assert!(
+        err.contains("--aero lifting-surface: ") && err.contains("[model.tables]"),
+        "{err}"
+    );
+    // one table of the two: --aero gives the other, and is taken
+    let dir = Scratch::new();
+    let one = dir.write(
+        "one.toml",
+        supersonic_config(
+            "[model.tables]\nlift_slope = { mach = [1.0, 2.0], value = [3.0, 2.5] }\n",
+        ),
+    );
+    run_ok(&["analyze", path(&one), "--aero", "lifting-surface"]);
+}
+
+/// Issue 31, 5: A limit far above the wing's area is refused where no config could
+/// give such a surface; up to it, the search finds the tail the wing's
+/// own limit finds (the scan starts at the wing's scale).
+#[test]
+fn size_tail_finds_the_same_tail_whatever_the_limit() {
+    let base = [
+        "size-tail",
+        "examples/delta-45-tailed.toml",
+        "--mach",
+        "1.2:1.5:0.1",
+        "--damping",
+        "faired-theories",
+        "--json",
+    ];
+    let area = |extra: &[&str]| {
+        let args: Vec<&str> = base.iter().chain(extra).copied().collect();
+        json(&run_ok(&args))["area"].as_f64().unwrap()
+    };
+    let own = area(&[]);
+    assert!(own > 0.0 && own < 100.0, "{own}");
+    assert_eq!(area(&["--max-area", "1e9"]), own);
+    let args: Vec<&str> = base
+        .iter()
+        .chain(&["--max-area", "1e100"])
+        .copied()
+        .collect();
+    let err = stderr(&run_err(&args, INPUT));
+    assert!(err.contains("--max-area: the size must lie in"), "{err}");
+}
+
+/// Issue 31, 6: A Mach number where no sample has a result says so ("—", null, an
+/// empty cell), never NaN; none with a result anywhere is an error; and
+/// the Mach numbers are checked as every other command checks them.
+#[test]
+fn uncertainty_writes_no_nan_and_checks_its_mach_numbers() {
+    let dir = Scratch::new();
+    let cfg = dir.write(
+        "u.toml",
+        supersonic_config("[uncertainty.i_b]\ndist = \"normal\"\nrelative_sd = 0.1\n"),
+    );
+    let csv = dir.path().join("u.csv");
+    let args = [
+        "uncertainty",
+        path(&cfg),
+        "--mach",
+        "0.9,1.5",
+        "--samples",
+        "16",
+        "-o",
+        path(&csv),
+    ];
+    let page = stdout(&run_ok(&args));
+    assert!(!page.contains("NaN"), "{page}");
+    assert!(page.contains("M = 0.9000: no result"), "{page}");
+    let written = std::fs::read_to_string(&csv).unwrap();
+    assert!(!written.to_lowercase().contains("nan"), "{written}");
+    assert!(written.contains("0.9,p_meets,,,"), "{written}");
+    let mut with_json = args[..6].to_vec();
+    with_json.push("--json");
+    let j = json(&run_ok(&with_json));
+    assert!(j["results"][0]["meets"]["p"].is_null());
+    assert!(j["results"][1]["meets"]["p"].as_f64().is_some());
+    let err = stderr(&run_err(
+        &[
+            "uncertainty",
+            path(&cfg),
+            "--mach",
+            "0.9",
+            "--samples",
+            "16",
+        ],
+        INPUT,
+    ));
+    assert!(err.contains("no sample has a result"), "{err}");
+    for m in ["0", "1e-320", "-1"] {
+        let err = stderr(&run_err(
+            &["uncertainty", path(&cfg), "--mach", m, "--samples", "16"],
+            INPUT,
+        ));
+        assert!(
+            err.contains("--mach: the Mach number must lie in"),
+            "{m}: {err}"
+        );
+    }
+}
+
+/// Issue 31, 7: A FIFO in the place of a report's manifest is refused at once (it
+/// is not what a report wrote), never waited on.
+#[cfg(unix)]
+#[test]
+fn a_fifo_in_the_report_directory_is_refused_not_read() {
+    let dir = Scratch::new();
+    let cfg = dir.write("a.toml", supersonic_config(""));
+    let out = dir.path().join("rep");
+    std::fs::create_dir(&out).unwrap();
+    let fifo = out.join(".report-manifest.json");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .expect("mkfifo");
+    assert!(made.success());
+    let done = run_with_deadline(&[
+        "report",
+        path(&cfg),
+        "--mach",
+        "1.5,1.6",
+        "--out",
+        path(&out),
+    ]);
+    let err = stderr(&done);
+    assert_eq!(done.status.code(), Some(IO), "{err}");
+    assert!(
+        err.contains("`.report-manifest.json` (not a regular file)"),
+        "{err}"
+    );
+}
+
+/// Issue 31, 8: A configuration whose lattice would cost more than the solver takes
+/// is refused before anything is solved, saying what to change.
+#[test]
+fn a_configuration_too_costly_to_solve_is_refused_saying_what_to_change() {
+    let text = example("delta-45-tailed.toml")
+        .replace(
+            "sweep = 45.0          # leading-edge",
+            "sweep = 1.0 # leading-edge",
+        )
+        .replace("mach = 1.5", "mach = 0.5");
+    let err = refused_with(&text, &["analyze", "CFG"]);
+    assert!(
+        err.contains("[tailplane]") && err.contains("3960 boxes") && err.contains("MB at once"),
+        "{err}"
+    );
+    assert!(
+        err.contains("more leading-edge sweep (it has 1.0°)"),
+        "{err}"
+    );
+}
+
+/// Issue 31, 9: An error of a distribution names the key the user wrote or must
+/// write, never one computed from it.
+#[test]
+fn a_lognormal_error_names_the_key_to_give() {
+    let text = supersonic_config(
+        "[uncertainty.m_q]\nerror = \"additive\"\ndist = \"lognormal\"\nsigma = 0.2\n",
+    );
+    let err = refused_with(
+        &text,
+        &["uncertainty", "CFG", "--mach", "1.5", "--samples", "8"],
+    );
+    assert!(
+        err.contains("[uncertainty.m_q] median: give `median`"),
+        "{err}"
+    );
+    assert!(!err.contains("mu:") && !err.contains("mu is"), "{err}");
+}
+
+/// Issue 31, 10: `--out rep/.` is the directory `rep`: an earlier report there is
+/// replaced as by `--out rep`.
+#[test]
+fn a_report_directory_spelt_with_a_trailing_dot_is_replaced() {
+    let dir = Scratch::new();
+    let cfg = dir.write("a.toml", supersonic_config(""));
+    let out = dir.path().join("rep");
+    let args = |o: &str| {
+        vec![
+            "report".to_string(),
+            path(&cfg).to_string(),
+            "--mach".into(),
+            "1.5,1.6".into(),
+            "--out".into(),
+            o.to_string(),
+        ]
+    };
+    run_ok(&args(path(&out)));
+    run_ok(&args(&format!("{}/.", path(&out))));
+    assert!(out.join("index.html").is_file());
+    assert_eq!(temporaries(dir.path()), Vec::<std::path::PathBuf>::new());
+}
+
+/// Issue 31, 11: A table value no coefficient or derivative reaches is refused at
+/// the table and its line, inline or in a CSV file.
+#[test]
+fn a_table_value_out_of_range_is_named_at_the_table() {
+    let text = supersonic_config(
+        "[model.tables]\nm_q = { mach = [1.0, 2.0], values = [-1e308, -0.5], mode = \"value\" }\n",
+    );
+    let err = refused_with(&text, &["analyze", "CFG"]);
+    assert!(
+        err.contains("c.toml:16:") && err.contains("[model.tables] m_q value[0]"),
+        "{err}"
+    );
+    assert!(!err.contains("[flight]"), "{err}");
+    let dir = Scratch::new();
+    dir.write("mq.csv", "mach,m_q\n1.0,-0.5\n2.0,-1e308\n");
+    let cfg = dir.write(
+        "f.toml",
+        supersonic_config("[model.tables]\nm_q = { file = \"mq.csv\" }\n"),
+    );
+    let err = stderr(&run_err(&["analyze", path(&cfg)], INPUT));
+    assert!(err.contains("mq.csv:3:5: column 2 (value)"), "{err}");
+}
+
+/// Issue 31, 12: A response's error names the options the user gave.
+#[test]
+fn a_response_error_names_the_options_given() {
+    let err = stderr(&run_err(
+        &[
+            "response",
+            "examples/delta-60-physical.toml",
+            "--elevator-deg",
+            "1e308",
+            "--until-s",
+            "5",
+        ],
+        INPUT,
+    ));
+    assert!(err.contains("--elevator-deg 1e308: "), "{err}");
+    assert!(!err.contains("--until ") && !err.contains("m0"), "{err}");
+    // an option of the other input is refused, not ignored
+    for (input, flag) in [("step", "--w0"), ("initial", "--m0")] {
+        let args = [
+            "response",
+            "examples/tailless-delta-45.toml",
+            "--until",
+            "2",
+            "--input",
+            input,
+            flag,
+            "0.05",
+        ];
+        let err = stderr(&run_err(&args, INPUT));
+        assert!(
+            err.contains(&format!("{flag} is")) && err.contains("does nothing"),
+            "{err}"
+        );
+    }
 }

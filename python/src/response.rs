@@ -9,7 +9,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use stability_core::response::MAX_STEPS;
 use stability_io::input::suggest::did_you_mean;
-use stability_io::response::{Disturbance, Spec, respond};
+use stability_core::display::Num;
+use stability_io::response::{Disturbance, Given, Spec, respond};
 
 /// The longitudinal response (§11) of a derivative set to an elevon step
 /// (`input="step"`, the moment m₀ from rest) or to an initial disturbance
@@ -79,6 +80,15 @@ pub fn response<'py>(
             w0,
             neglect_zq_zwdot,
             neglect_u,
+            given: Given {
+                span: format!("until={}", Num(until)),
+                span_option: "until",
+                steps: format!("steps={steps}"),
+                input: match input {
+                    Disturbance::Step => format!("m0={}", Num(m0)),
+                    Disturbance::Initial => format!("w0={}", Num(w0)),
+                },
+            },
         };
         let r = py
             .detach(|| respond(&file, &spec))

@@ -57,10 +57,11 @@ pub fn size_tail<'py>(
             }
         };
         let machs = mach.unwrap_or_else(|| (0..=30).map(|i| 0.5 + 0.05 * i as f64).collect());
-        for &m in &machs {
-            stability_io::limits::MACH
-                .check(m)
-                .map_err(|e| argument("mach", e))?;
+        stability_io::limits::machs(&machs).map_err(|e| argument("mach", e))?;
+        if let Some(a) = max_area {
+            stability_io::limits::SIZE
+                .check(a)
+                .map_err(|e| argument("max_area", e))?;
         }
         let sizing = py
             .detach(|| size_surface(&cfg.case, kind, &machs, max_area))

@@ -46,6 +46,7 @@ pub fn uncertainty_run(
                     .map_err(|_| argument("mach", "a number, a list of numbers or \"A:B:STEP\""))?,
             },
         };
+        stability_io::limits::machs(&machs).map_err(|e| argument("mach", e))?;
         if samples == 0 {
             return Err(argument("samples", "at least one sample"));
         }
@@ -78,7 +79,9 @@ pub fn uncertainty_run(
             sampling,
         };
         let results = py.detach(|| study.run(&machs, &options, &|_| {}));
-        let view = UncertaintyJson::new(&cfg.path, &study, &options, &results);
+        let view = UncertaintyJson::new(&cfg.path, &study, &options, &results)
+            .checked()
+            .map_err(|e| input_error(&e))?;
         let json = serde_json::to_string(&view)
             .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
         let mut csv = format!("{CSV_HEADER}\n");

@@ -89,3 +89,29 @@ fn no_area_up_to_the_limit_is_said_plainly() {
     let e = size_surface(&case, SurfaceKind::Foreplane, &MACHS, None).unwrap_err();
     assert!(e.to_string().contains("no [foreplane]"), "{e}");
 }
+
+/// The search starts where tails are, whatever the limit: a limit of
+/// 1e100 (the scan once began at 1e97, where the numbers overflow and no
+/// area met) finds the tail a limit of the wing's area does.
+#[test]
+fn a_limit_far_above_the_wing_finds_the_same_tail() {
+    let case = tailed();
+    let own = size_surface(&case, SurfaceKind::Tailplane, &MACHS, None)
+        .unwrap()
+        .area
+        .unwrap();
+    for limit in [1e4, 1e100] {
+        let s = size_surface(&case, SurfaceKind::Tailplane, &MACHS, Some(limit)).unwrap();
+        let area = s.area.expect("a tail below the wing's area mends it");
+        assert!(
+            (area - own).abs() <= 2.0 * TOLERANCE * own,
+            "{limit}: {area} vs {own}"
+        );
+        assert!(meets(&case, area), "{limit}: {area}");
+        assert!(
+            !meets(&case, area * (1.0 - 2.0 * TOLERANCE)),
+            "{limit}: {area}"
+        );
+        assert_eq!(s.limit, limit);
+    }
+}

@@ -93,27 +93,91 @@ pub fn recording<T>(f: impl FnOnce() -> T) -> (T, Vec<PathBuf>) {
     (value, read)
 }
 
-/// The text of the input file `path`: a regular file of at most
-/// [`MAX_INPUT_BYTES`], in UTF-8 (noted for [`recording`]).
-pub fn read_input(path: &Path) -> Result<String, Failure> {
+/// Notes `path` among the inputs of the run being [`recording`]: a file an
+/// input names that this run does not read (a samples file of a config's
+/// `[uncertainty]` when the command runs no study) is the user's data all
+/// the same, and no output may overwrite it.
+pub fn note_input(path: &Path) {
     READ.with(|r| {
         if let Some(read) = r.borrow_mut().as_mut() {
             read.push(path.to_path_buf());
         }
     });
+}
+
+/// The flag that opens a file without waiting for a FIFO's writer (or a
+/// device): `open(2)` returns at once, and the file's type is then asked
+/// of the open file itself, so that nothing swapped in between looking and
+/// opening can block the program.
+#[cfg(unix)]
+fn open_options() -> std::fs::OpenOptions {
+    use std::os::unix::fs::OpenOptionsExt;
+    let mut o = std::fs::OpenOptions::new();
+    o.read(true).custom_flags(libc::O_NONBLOCK);
+    o
+}
+
+#[cfg(not(unix))]
+fn open_options() -> std::fs::OpenOptions {
+    let mut o = std::fs::OpenOptions::new();
+    o.read(true);
+    o
+}
+
+/// `path` opened for reading if it is a regular file — never blocking on a
+/// FIFO or a device, which is refused ([`Opened::Special`]) — with its
+/// size.
+fn open_regular(path: &Path) -> std::io::Result<Opened> {
+    // a directory opens on Unix; on other systems it is refused here
+    if let Ok(m) = std::fs::metadata(path)
+        && m.is_dir()
+    {
+        return Ok(Opened::Special(m.file_type()));
+    }
+    let file = open_options().open(path)?;
+    let meta = file.metadata()?;
+    if !meta.is_file() {
+        return Ok(Opened::Special(meta.file_type()));
+    }
+    Ok(Opened::Regular(file, meta.len()))
+}
+
+/// What [`open_regular`] found.
+enum Opened {
+    Regular(std::fs::File, u64),
+    Special(std::fs::FileType),
+}
+
+/// The bytes of the regular file `path` (a FIFO, a device or a directory
+/// is an error of kind `InvalidInput` saying what it is, returned at
+/// once): for files the program reads that are not inputs of a
+/// computation, such as a report's manifest.
+pub fn read_regular(path: &Path) -> std::io::Result<Vec<u8>> {
+    match open_regular(path)? {
+        Opened::Regular(mut file, len) => {
+            let mut bytes = Vec::with_capacity(len as usize);
+            file.read_to_end(&mut bytes)?;
+            Ok(bytes)
+        }
+        Opened::Special(t) => Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            format!("it is {}, not a regular file", kind_of(t)),
+        )),
+    }
+}
+
+/// The text of the input file `path`: a regular file of at most
+/// [`MAX_INPUT_BYTES`], in UTF-8 (noted for [`recording`]). A FIFO or a
+/// device is refused at once, never waited on.
+pub fn read_input(path: &Path) -> Result<String, Failure> {
+    note_input(path);
     let io = |e: std::io::Error| Failure::Io(IoError::new("cannot read", path, reason(&e)));
-    // look before opening: opening a FIFO blocks until a writer appears
-    let meta = std::fs::metadata(path).map_err(io)?;
-    if !meta.is_file() {
-        return Err(not_regular(path, meta.file_type()));
-    }
-    if meta.len() > MAX_INPUT_BYTES {
-        return Err(too_large(path, meta.len()));
-    }
-    let file = std::fs::File::open(path).map_err(io)?;
-    let meta = file.metadata().map_err(io)?;
-    if !meta.is_file() {
-        return Err(not_regular(path, meta.file_type()));
+    let (file, len) = match open_regular(path).map_err(io)? {
+        Opened::Regular(file, len) => (file, len),
+        Opened::Special(t) => return Err(not_regular(path, t)),
+    };
+    if len > MAX_INPUT_BYTES {
+        return Err(too_large(path, len));
     }
     let mut bytes = Vec::new();
     file.take(MAX_INPUT_BYTES + 1)
@@ -200,6 +264,33 @@ mod tests {
         let e = read_input(dir.path()).unwrap_err();
         assert_eq!(e.status(), Failure::IO_STATUS);
         assert!(e.to_string().contains("it is a directory"), "{e}");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_is_refused_at_once_not_waited_on() {
+        let dir = tempfile::tempdir().unwrap();
+        let fifo = dir.path().join("pipe.toml");
+        let c = std::ffi::CString::new(fifo.to_str().unwrap()).unwrap();
+        // SAFETY: a NUL-terminated path; mkfifo touches no memory of ours
+        assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o644) }, 0);
+        // no writer ever opens it: a blocking open would never return
+        let e = read_input(&fifo).unwrap_err();
+        assert_eq!(e.status(), Failure::IO_STATUS);
+        assert!(e.to_string().contains("a FIFO (named pipe)"), "{e}");
+        let e = read_regular(&fifo).unwrap_err();
+        assert_eq!(e.kind(), std::io::ErrorKind::InvalidInput);
+        assert!(e.to_string().contains("FIFO"), "{e}");
+        assert!(read_regular(dir.path()).is_err());
+        let file = dir.path().join("a.json");
+        std::fs::write(&file, "{}").unwrap();
+        assert_eq!(read_regular(&file).unwrap(), b"{}");
+    }
+
+    #[test]
+    fn a_file_named_but_not_read_is_an_input() {
+        let (_, read) = recording(|| note_input(Path::new("samples.csv")));
+        assert_eq!(read, [PathBuf::from("samples.csv")]);
     }
 
     #[test]

@@ -62,6 +62,12 @@ pub const MACH: Limit = Limit {
     hi: 100.0,
     lo_included: true,
 };
+/// Each of a list of Mach numbers within [`MACH`] (the first that is not,
+/// and why), as every command and the Python package take them.
+pub fn machs(ms: &[f64]) -> Result<(), String> {
+    ms.iter().try_for_each(|&m| MACH.check(m).map(|_| ()))
+}
+
 pub const CG: Limit = Limit {
     what: "the c.g. position h (M.A.C.s aft of its leading edge)",
     lo: -100.0,
@@ -73,6 +79,24 @@ pub const I_B: Limit = positive("the pitching inertia i_B", 1e9);
 pub const CL_M2: Limit = positive("C_L·M² (eq 24)", 1e3);
 pub const OMEGA_BAR: Limit = positive("the frequency parameter ω̄", 1e3);
 pub const SIZE: Limit = positive("the size", 1e9);
+/// A Mach number of a `[model.tables]` table (M = 0 is a table's row, not
+/// a flight condition).
+pub const TABLE_MACH: Limit = Limit {
+    what: "a table's Mach number",
+    lo: 0.0,
+    hi: 100.0,
+    lo_included: true,
+};
+/// A value of a `[model.tables]` table: a coefficient of §6 or a
+/// derivative of the report's notation, none of which reaches 10⁶ (so that
+/// the quartic's coefficients, products of four of them with μ₁ and i_B,
+/// stay far from overflow).
+pub const TABLE_VALUE: Limit = Limit {
+    what: "a table's value",
+    lo: -1e6,
+    hi: 1e6,
+    lo_included: true,
+};
 
 #[cfg(test)]
 mod tests {
@@ -89,5 +113,13 @@ mod tests {
         let e = CG.check(1e308).unwrap_err();
         assert!(e.contains("[-100, 100], not 1e308"), "{e}");
         assert!(MACH.check(f64::NAN).unwrap_err().contains("finite"));
+        assert!(machs(&[0.5, 1.2]).is_ok());
+        for bad in [0.0, 1e-320, -0.5, 101.0] {
+            let e = machs(&[0.5, bad]).unwrap_err();
+            assert!(
+                e.contains("the Mach number must lie in [0.001, 100]"),
+                "{e}"
+            );
+        }
     }
 }

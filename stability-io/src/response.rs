@@ -41,8 +41,24 @@ impl Disturbance {
     }
 }
 
+/// How the caller gave the response's span, step count and input, in its
+/// own words — the command line's `--until-s 5`, `--elevator-deg 1e308`,
+/// Python's `until=5`, `m0=1` — so that an error names what the user
+/// wrote, never an option they did not give.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Given {
+    /// The span: `--until 3`, `--until-s 5`, `until=3`.
+    pub span: String,
+    /// The option of the span alone (`--until-s`), for advice.
+    pub span_option: &'static str,
+    /// The step count: `--steps 400`, `steps=400`.
+    pub steps: String,
+    /// The input: `--elevator-deg 1e308`, `--m0 1`, `--w0 0.01`, `m0=1`.
+    pub input: String,
+}
+
 /// A response as asked for by name (`response`'s options).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Spec {
     pub input: Disturbance,
     /// The end time, τ units.
@@ -59,6 +75,8 @@ pub struct Spec {
     pub w0: f64,
     pub neglect_zq_zwdot: bool,
     pub neglect_u: bool,
+    /// How the caller gave them (for its messages).
+    pub given: Given,
 }
 
 impl Spec {
@@ -98,10 +116,11 @@ pub fn control_step(file: &DerivativeFile, control: &Control, degrees: f64) -> [
 }
 
 /// The response of `file`'s set over the whole span asked for, or why it
-/// cannot be had.
+/// cannot be had: each error names the option, as the caller gave it
+/// ([`Given`]), that it is about.
 pub fn respond(file: &DerivativeFile, spec: &Spec) -> Result<Computed, InputError> {
     let bad = |m: String| InputError::file(&file.path, m);
-    let (until, steps) = (Num(spec.until), spec.steps);
+    let g = &spec.given;
     computed(&file.derivatives, &spec.request()).map_err(|e| match e {
         ComputedError::Response(e @ ResponseError::SingularMass { .. }) => {
             file.error_at(rows::Z_WDOT, e.to_string())
@@ -109,16 +128,47 @@ pub fn respond(file: &DerivativeFile, spec: &Spec) -> Result<Computed, InputErro
         ComputedError::Response(
             e @ (ResponseError::Derivatives(_) | ResponseError::MatrixOverflow),
         ) => bad(e.to_string()),
-        ComputedError::Response(e) => bad(format!("--until {until} --steps {steps}: {e}")),
+        ComputedError::Response(ResponseError::NonFiniteInput { quantity, value }) => bad(format!(
+            "{}: {} is {}, not a finite number: give a smaller value",
+            g.input,
+            disturbance(quantity),
+            Num(value)
+        )),
+        ComputedError::Response(e @ ResponseError::Until { .. }) => {
+            bad(format!("{}: {e}", g.span))
+        }
+        ComputedError::Response(e @ ResponseError::Steps { .. }) => {
+            bad(format!("{}: {e}", g.steps))
+        }
+        ComputedError::Response(e @ ResponseError::TooStiff { .. }) => {
+            bad(format!("{} {}: {e}", g.span, g.steps))
+        }
         ComputedError::Stopped { reached, stop, .. } => bad(format!(
-            "the response stops at t̂ = {} of the {until} asked for (--until): {stop}; ask for a shorter --until",
-            Num(reached)
+            "the response stops at t̂ = {} of the {} asked for ({}): {stop}; ask for a shorter {}",
+            Num(reached),
+            Num(spec.until),
+            g.span,
+            g.span_option
         )),
         ComputedError::ClosedFormOverflow { t, .. } => bad(format!(
-            "eq (45)'s two-degree-of-freedom response overflows f64 at t̂ = {}, before --until {until}: ask for a shorter --until",
-            Num(t)
+            "eq (45)'s two-degree-of-freedom response overflows f64 at t̂ = {}, before t̂ = {} ({}): ask for a shorter {}",
+            Num(t),
+            Num(spec.until),
+            g.span,
+            g.span_option
         )),
     })
+}
+
+/// What the input `quantity` of the library's request is, in words that
+/// name no option (the caller's option is named beside it).
+fn disturbance(quantity: &str) -> &'static str {
+    match quantity {
+        "m0" => "the pitching moment it applies (eqs 2 units)",
+        "x0" => "the force along x it applies (eqs 2 units)",
+        "z0" => "the force along z it applies (eqs 2 units)",
+        _ => "the initial disturbance it makes",
+    }
 }
 
 /// The CSV's columns: t̂, t in seconds when τ is known, the states,

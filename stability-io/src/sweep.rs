@@ -80,6 +80,14 @@ pub fn parse_range(flag: &str, text: &str) -> Result<Vec<f64>, String> {
     parse_values(text).map_err(|e| format!("--{flag}: {e}"))
 }
 
+/// The Mach numbers of `--mach TEXT` ([`parse_values`]), each within
+/// [`limits::MACH`]: what every command that takes a list of them reads.
+pub fn parse_machs(text: &str) -> Result<Vec<f64>, String> {
+    let ms = parse_range("mach", text)?;
+    limits::machs(&ms).map_err(|e| format!("--mach: {e}"))?;
+    Ok(ms)
+}
+
 /// The axes as given (`None`: the base design point's value).
 #[derive(Debug, Clone, Default)]
 pub struct Given {

@@ -80,7 +80,7 @@ pub struct Args {
     /// With CONFIG: the Mach numbers, A:B:STEP (inclusive) or a list
     /// A,B,…; default 0.5:2:0.05, widened in steps of 0.05 to take in the
     /// config's own Mach number.
-    #[arg(long, value_name = "A:B:STEP|LIST")]
+    #[arg(long, value_name = "A:B:STEP|LIST", allow_hyphen_values = true)]
     pub mach: Option<String>,
     /// With CONFIG: the MIL-F-8785C airplane class (§1.3) whose Category C
     /// floors the short-period frequency requirement applies (default IV).
@@ -110,6 +110,7 @@ pub(super) fn write_report(
     out: &Path,
     fill: impl FnOnce(&Write<'_>) -> Result<(), Failure>,
 ) -> Result<(), Failure> {
+    let out = &crate::output::directory_target(out);
     check_target(out)?;
     let dir = AtomicDir::create(out).map_err(|e| write_error(out, &e))?;
     let written = std::cell::RefCell::new(Manifest::default());

@@ -10,8 +10,7 @@ use crate::report::design::{Design, MAX_MACHS, default_machs, figures, page};
 use crate::report::html::DOCS;
 use stability_io::config::overridden;
 use stability_io::diag::InputError;
-use stability_io::limits;
-use stability_io::sweep::parse_range;
+use stability_io::sweep::parse_machs;
 use stability_io::views::DesignReportJson;
 use std::path::Path;
 
@@ -41,7 +40,7 @@ pub fn refuse_design_options(args: &Args) -> Result<(), Failure> {
 /// the Mach number's range and at most [`MAX_MACHS`] of them.
 fn machs(text: Option<&str>, own: f64) -> Result<Vec<f64>, String> {
     let ms = match text {
-        Some(t) => parse_range("mach", t)?,
+        Some(t) => parse_machs(t)?,
         None => return Ok(default_machs(own)),
     };
     if ms.len() > MAX_MACHS {
@@ -49,9 +48,6 @@ fn machs(text: Option<&str>, own: f64) -> Result<Vec<f64>, String> {
             "--mach: {} Mach numbers; a report takes at most {MAX_MACHS} (take a larger step)",
             ms.len()
         ));
-    }
-    for &m in &ms {
-        limits::MACH.check(m).map_err(|e| format!("--mach: {e}"))?;
     }
     Ok(ms)
 }
@@ -61,7 +57,7 @@ pub fn run(args: &Args, config: &str) -> Result<(), Failure> {
         stability_io::files::recording(|| overridden(config, &args.model.overrides()));
     let cfg = cfg?;
     let out = Path::new(&args.out);
-    let outputs = [crate::overwrite::Named::new("--out", &args.out)];
+    let outputs = [crate::overwrite::Named::directory("--out", &args.out)];
     crate::overwrite::refuse("CONFIG", config, &read, &outputs)?;
     let bad = |m: String| Failure::Input(InputError::file(config, m));
     let ms = machs(args.mach.as_deref(), cfg.case.mach).map_err(bad)?;

@@ -12,14 +12,14 @@ use crate::args::ResponseInput;
 use crate::output::{print, write_set};
 use crate::overwrite::Named;
 use crate::plot::{Figure, Series};
-use stability_core::display::sig;
+use stability_core::display::{Num, sig};
 use stability_core::linear::Control;
 use stability_core::response::{Computed, Sample};
 use stability_io::design_point::read_set;
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
 use stability_io::input::DerivativeFile;
-use stability_io::response::{Disturbance, Spec, control_step, csv, respond};
+use stability_io::response::{Disturbance, Given, Spec, control_step, csv, respond};
 use std::path::PathBuf;
 
 /// The command's options (validated by clap: `until` positive and finite,
@@ -43,12 +43,12 @@ pub struct Args {
     /// Number of intervals (1 to 10⁶).
     #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=stability_core::response::MAX_STEPS as i64))]
     pub steps: u32,
-    /// Size of the moment step m₀ (eqs 2 units; finite).
-    #[arg(long, default_value_t = 1.0, value_parser = crate::args::finite, allow_negative_numbers = true)]
-    pub m0: f64,
-    /// Initial ŵ = w/V for `--input initial` (finite).
-    #[arg(long, default_value_t = 0.01, value_parser = crate::args::finite, allow_negative_numbers = true)]
-    pub w0: f64,
+    /// Size of the moment step m₀ of `--input step` (eqs 2 units; finite; default 1).
+    #[arg(long, value_parser = crate::args::finite, allow_negative_numbers = true)]
+    pub m0: Option<f64>,
+    /// Initial ŵ = w/V of `--input initial` (finite; default 0.01).
+    #[arg(long, value_parser = crate::args::finite, allow_negative_numbers = true)]
+    pub w0: Option<f64>,
     /// Set z_q = z_ẇ = 0 (the report's Fig 38).
     #[arg(long)]
     pub neglect_zq_zwdot: bool,
@@ -64,6 +64,14 @@ pub struct Args {
 }
 
 impl Args {
+    /// `step` or `initial`, as the option is written.
+    fn input_name(&self) -> &'static str {
+        match self.input {
+            ResponseInput::Step => "step",
+            ResponseInput::Initial => "initial",
+        }
+    }
+
     /// The library's response, as asked for, of `file` with its
     /// `[control]`: the span in τ (from seconds by τ), the step from the
     /// control's deflection; the error names what is missing.
@@ -72,9 +80,13 @@ impl Args {
         file: &DerivativeFile,
         control: Option<&Control>,
     ) -> Result<Spec, InputError> {
-        let until = match (self.until, self.until_s, file.tau()) {
-            (Some(t), ..) => t,
-            (None, Some(s), Some(tau)) => s / tau,
+        let (until, span, span_option) = match (self.until, self.until_s, file.tau()) {
+            (Some(t), ..) => (t, format!("--until {}", Num(t)), "--until"),
+            (None, Some(s), Some(tau)) => (
+                s / tau,
+                format!("--until-s {} (t̂ = {})", Num(s), Num(s / tau)),
+                "--until-s",
+            ),
             (None, Some(s), None) => {
                 return Err(InputError::file(
                     &file.path,
@@ -88,8 +100,23 @@ impl Args {
                 return Err(InputError::file(&file.path, m));
             }
         };
+        // an option of the other input would be ignored: refused
+        let unused = match self.input {
+            ResponseInput::Step => self.w0.map(|_| "--w0 is the initial ŵ of --input initial"),
+            ResponseInput::Initial => self.m0.map(|_| "--m0 is the moment step of --input step"),
+        };
+        if let Some(m) = unused {
+            let m = format!("{m}: it does nothing with --input {}", self.input_name());
+            return Err(InputError::file(&file.path, m));
+        }
+        let (m0, w0) = (self.m0.unwrap_or(1.0), self.w0.unwrap_or(0.01));
+        let input = match (self.input, self.elevator_deg) {
+            (ResponseInput::Initial, _) => format!("--w0 {}", Num(w0)),
+            (ResponseInput::Step, Some(deg)) => format!("--elevator-deg {}", Num(deg)),
+            (ResponseInput::Step, None) => format!("--m0 {}", Num(m0)),
+        };
         let [x0, z0, m0] = match (self.elevator_deg, control) {
-            (None, _) => [0.0, 0.0, self.m0],
+            (None, _) => [0.0, 0.0, m0],
             (Some(_), _) if self.input == ResponseInput::Initial => {
                 let m = "--elevator-deg is a step of the control: it needs --input step";
                 return Err(InputError::file(&file.path, m));
@@ -112,9 +139,15 @@ impl Args {
             m0,
             x0,
             z0,
-            w0: self.w0,
+            w0,
             neglect_zq_zwdot: self.neglect_zq_zwdot,
             neglect_u: self.neglect_u,
+            given: Given {
+                span,
+                span_option,
+                steps: format!("--steps {}", self.steps),
+                input,
+            },
         })
     }
 }

@@ -10,7 +10,7 @@ use stability_core::configuration::sizing::{SCAN, Sizing, TOLERANCE, size_surfac
 use stability_core::display::sig;
 use stability_io::config::overridden;
 use stability_io::diag::InputError;
-use stability_io::sweep::parse_range;
+use stability_io::sweep::parse_machs;
 use std::fmt::Write as _;
 
 /// Which surface is sized.
@@ -35,7 +35,8 @@ pub struct Args {
     #[arg(long, value_enum, default_value = "tailplane")]
     pub surface: SurfaceArg,
     /// The largest area tried, in the config's length unit squared
-    /// (default: the wing's area).
+    /// (default: the wing's area; at most 1e9, the largest size a config
+    /// takes).
     #[arg(long, value_name = "A", value_parser = crate::args::positive)]
     pub max_area: Option<f64>,
     /// Print one JSON object: surface, area (null: none up to the limit),
@@ -50,17 +51,20 @@ pub struct Args {
 pub fn run(o: &Args) -> Result<(), Failure> {
     let cfg = overridden(&o.config, &o.model.overrides())?;
     let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
-    let machs = parse_range("mach", &o.mach).map_err(&bad)?;
-    for &m in &machs {
-        stability_io::limits::MACH
-            .check(m)
-            .map_err(|e| bad(format!("--mach: {e}")))?;
+    let machs = parse_machs(&o.mach).map_err(&bad)?;
+    // an area the config could give its surface (a size is at most 1e9)
+    if let Some(a) = o.max_area {
+        stability_io::limits::SIZE
+            .check(a)
+            .map_err(|e| bad(format!("--max-area: {e}")))?;
     }
     let kind = match o.surface {
         SurfaceArg::Tailplane => SurfaceKind::Tailplane,
         SurfaceArg::Foreplane => SurfaceKind::Foreplane,
     };
     let s = size_surface(&cfg.case, kind, &machs, o.max_area).map_err(|e| bad(e.to_string()))?;
+    // the page too: every number finite
+    crate::output::finite(&o.config, &s)?;
     if o.json {
         return crate::output::print_json(&o.config, &s);
     }
@@ -109,7 +113,7 @@ pub fn page(path: &str, s: &Sizing) -> String {
     }
     let _ = writeln!(
         p,
-        "  (search: the wing alone, then {SCAN} areas geometric from 1/1000 of the limit, then bisection to {} relative; a window of meeting areas narrower than one scan step can be missed)",
+        "  (search: the wing alone, then areas ×1.33 apart from 1/1000 of the limit or of the wing's area, whichever is smaller, to the limit ({SCAN} areas up to the wing's), then bisection to {} relative; a window of meeting areas narrower than one scan step can be missed)",
         sig(TOLERANCE, 1)
     );
     p

@@ -8,12 +8,14 @@ use crate::args::ModelArgs;
 use crate::output::AtomicFile;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use stability_core::display::sig;
-use stability_core::uncertainty::{Options, Sampling, Summary};
+use stability_core::uncertainty::{Options, Sampling, Study};
 use stability_io::config::overridden;
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
-use stability_io::sweep::parse_range;
-use stability_io::uncertainty::{CSV_HEADER, UncertaintyJson, csv_rows};
+use stability_io::sweep::parse_machs;
+use stability_io::uncertainty::{
+    CSV_HEADER, ProportionJson, QuantilesJson, SummaryJson, UncertaintyJson, csv_rows_of,
+};
 use std::io::Write as _;
 use std::path::Path;
 
@@ -23,7 +25,7 @@ pub struct Args {
     /// The design point and its `[uncertainty]` table (TOML).
     pub config: String,
     /// Mach numbers: A:B:STEP (inclusive), a list A,B,… or one value.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mach: String,
     /// Monte Carlo samples at each Mach number.
     #[arg(long, default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(1..=1_000_000_000_000))]
@@ -60,16 +62,17 @@ pub struct Args {
 }
 
 pub fn run(o: &Args) -> Result<(), Failure> {
-    let (cfg, read) =
-        stability_io::files::recording(|| overridden(&o.config, &o.model.overrides()));
-    let cfg = cfg?;
+    // every input read (the config, its tables, the study's samples files)
+    // before any output is checked against them
+    let (read, inputs) = stability_io::files::recording(|| read_study(o));
+    let (study, sampling) = read?;
     let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
     let outputs: Vec<_> = o
         .output
         .iter()
         .map(|out| crate::overwrite::Named::new("-o", out))
         .collect();
-    crate::overwrite::refuse("CONFIG", &o.config, &read, &outputs)?;
+    crate::overwrite::refuse("CONFIG", &o.config, &inputs, &outputs)?;
     let json_out = match o
         .output
         .as_deref()
@@ -80,17 +83,7 @@ pub fn run(o: &Args) -> Result<(), Failure> {
         Some(Some("json")) => Some(true),
         Some(_) => return Err(bad("-o: the output must end in .csv or .json".into())),
     };
-    let study = stability_io::config::uncertainty::read(&cfg)?.ok_or_else(|| {
-        InputError::file(
-            &o.config,
-            "the config has no [uncertainty] table: give a distribution for an input, e.g. [uncertainty.i_b] dist = \"normal\", relative_sd = 0.1 (see `uncertainty --help`)",
-        )
-    })?;
-    let machs = parse_range("mach", &o.mach).map_err(&bad)?;
-    let sampling = match o.sampling.as_deref().and_then(Sampling::parse) {
-        Some(s) => s,
-        None => stability_io::config::uncertainty::sampling(&cfg)?.unwrap_or_default(),
-    };
+    let machs = parse_machs(&o.mach).map_err(&bad)?;
     let options = Options {
         samples: o.samples,
         seed: o.seed,
@@ -108,17 +101,33 @@ pub fn run(o: &Args) -> Result<(), Failure> {
         );
     }
     bar.finish_and_clear();
-    let view = UncertaintyJson::new(&o.config, &study, &options, &results);
-    // NaN (a proportion of no samples, a quantile of none) is null
-    let value = serde_json::to_value(&view).map_err(|e| bad(e.to_string()))?;
+    // every output from the one view, every number in it finite
+    let view = UncertaintyJson::new(&o.config, &study, &options, &results).checked()?;
     if let (Some(out), Some(json)) = (&o.output, json_out) {
-        write(Path::new(out), json, &value, &results)?;
+        write(Path::new(out), json, &view)?;
     }
     if o.json {
-        crate::output::print_json(&o.config, &value)
+        crate::output::print_json(&o.config, &view)
     } else {
-        crate::output::print(&page(&results, &study.factor_names(), o, sampling))
+        crate::output::print(&page(&view, &study.factor_names(), o, sampling))
     }
+}
+
+/// The config's study and its sampling (the command line's `--sampling`,
+/// else the config's).
+fn read_study(o: &Args) -> Result<(Study, Sampling), Failure> {
+    let cfg = overridden(&o.config, &o.model.overrides())?;
+    let study = stability_io::config::uncertainty::read(&cfg)?.ok_or_else(|| {
+        InputError::file(
+            &o.config,
+            "the config has no [uncertainty] table: give a distribution for an input, e.g. [uncertainty.i_b] dist = \"normal\", relative_sd = 0.1 (see `uncertainty --help`)",
+        )
+    })?;
+    let sampling = match o.sampling.as_deref().and_then(Sampling::parse) {
+        Some(s) => s,
+        None => stability_io::config::uncertainty::sampling(&cfg)?.unwrap_or_default(),
+    };
+    Ok((study, sampling))
 }
 
 fn progress_bar(total: u64) -> ProgressBar {
@@ -134,18 +143,15 @@ fn progress_bar(total: u64) -> ProgressBar {
 }
 
 /// OUT written atomically: the JSON view or the long CSV.
-fn write(
-    out: &Path,
-    json: bool,
-    value: &serde_json::Value,
-    results: &[Summary],
-) -> Result<(), Failure> {
+fn write(out: &Path, json: bool, view: &UncertaintyJson<'_>) -> Result<(), Failure> {
     let write_err = |e: std::io::Error| Failure::Io(write_error(out, &e));
     let text = if json {
-        serde_json::to_string_pretty(value).unwrap_or_default() + "\n"
+        serde_json::to_string_pretty(view).unwrap_or_default() + "\n"
     } else {
         let mut s = format!("{CSV_HEADER}\n");
-        results.iter().for_each(|r| s.push_str(&csv_rows(r)));
+        view.results
+            .iter()
+            .for_each(|r| s.push_str(&csv_rows_of(r)));
         s
     };
     let mut file = AtomicFile::create(out).map_err(write_err)?;
@@ -153,10 +159,17 @@ fn write(
     file.commit().map_err(write_err)
 }
 
+/// A value of the page: "—" where absent.
+fn shown(v: Option<f64>, digits: usize) -> String {
+    v.map_or("—".into(), |v| sig(v, digits))
+}
+
 /// The page: one line per Mach number, then the Sobol indices.
-fn page(results: &[Summary], factors: &[&str], o: &Args, sampling: Sampling) -> String {
-    let pct = |p: &stability_core::uncertainty::stats::Proportion| {
-        format!("{} [{}, {}]", sig(p.p, 3), sig(p.low, 3), sig(p.high, 3))
+fn page(view: &UncertaintyJson<'_>, factors: &[&str], o: &Args, sampling: Sampling) -> String {
+    let results = &view.results;
+    let pct = |p: &ProportionJson| match p.p {
+        None => "—".to_string(),
+        Some(v) => format!("{} [{}, {}]", sig(v, 3), shown(p.low, 3), shown(p.high, 3)),
     };
     let mut table = vec![
         [
@@ -172,12 +185,12 @@ fn page(results: &[Summary], factors: &[&str], o: &Args, sampling: Sampling) -> 
         .to_vec(),
     ];
     for r in results {
-        let q = |q: &stability_core::uncertainty::stats::Quantiles| {
+        let q = |q: &QuantilesJson| {
             format!(
                 "{}, {}, {}",
-                sig(q.values[1], 3),
-                sig(q.values[3], 3),
-                sig(q.values[5], 3)
+                shown(q.values[1], 3),
+                shown(q.values[3], 3),
+                shown(q.values[5], 3)
             )
         };
         table.push(vec![
@@ -203,11 +216,15 @@ fn page(results: &[Summary], factors: &[&str], o: &Args, sampling: Sampling) -> 
     );
     s.push_str(&crate::page::aligned(&table));
     for r in results.iter().filter(|r| r.first_error.is_some()) {
-        let e = r.first_error.as_deref().unwrap_or_default();
+        let e = r.first_error.unwrap_or_default();
+        let how_many = if r.no_result() {
+            format!("no result: none of the {} samples has one", r.samples)
+        } else {
+            format!("{} samples had no result", r.errors)
+        };
         s.push_str(&format!(
-            "M = {}: {} samples had no result; the first: {e}\n",
-            sig(r.mach, 4),
-            r.errors
+            "M = {}: {how_many}; the first: {e}\n",
+            sig(r.mach, 4)
         ));
     }
     if o.sobol {
@@ -217,7 +234,7 @@ fn page(results: &[Summary], factors: &[&str], o: &Args, sampling: Sampling) -> 
 }
 
 /// The Sobol indices (Saltelli 2010, Jansen 1999), each Mach number a row.
-fn sobol_page(results: &[Summary], factors: &[&str]) -> String {
+fn sobol_page(results: &[SummaryJson<'_>], factors: &[&str]) -> String {
     let mut s = String::from(
         "\nSobol indices, first order / total (Saltelli et al. 2010; Jansen 1999), of Δm_θ̇ (eq 41) and of ζ:\n",
     );
@@ -229,7 +246,7 @@ fn sobol_page(results: &[Summary], factors: &[&str]) -> String {
     let mut table = vec![head];
     for r in results {
         let mut row = vec![sig(r.mach, 4)];
-        let sobol = r.sobol.as_ref();
+        let sobol = r.sobol;
         for k in 0..factors.len() {
             for ix in [
                 sobol.and_then(|x| x.margin.as_ref()),

@@ -61,9 +61,12 @@ impl Manifest {
         serde_json::to_string_pretty(self).unwrap_or_default() + "\n"
     }
 
+    /// The manifest in `dir`, if it is a regular file that reads as one
+    /// (a FIFO or a device in its place is not waited on: it is then
+    /// something the report did not write).
     fn read(dir: &Path) -> Option<Manifest> {
-        let text = std::fs::read_to_string(dir.join(MANIFEST)).ok()?;
-        serde_json::from_str(&text).ok()
+        let bytes = stability_io::files::read_regular(&dir.join(MANIFEST)).ok()?;
+        serde_json::from_slice(&bytes).ok()
     }
 
     /// The directories its files lie in (`docs`).
@@ -118,7 +121,9 @@ fn walk(
         } else {
             match manifest.and_then(|m| m.files.get(&name)) {
                 None => out.push(name),
-                Some(written) if *written != Entry::of(&std::fs::read(e.path())?) => {
+                Some(written)
+                    if *written != Entry::of(&stability_io::files::read_regular(&e.path())?) =>
+                {
                     out.push(format!("{name} (changed since the report wrote it)"));
                 }
                 Some(_) => {}
@@ -194,6 +199,26 @@ mod tests {
             foreign(tempfile::tempdir().unwrap().path())
                 .unwrap()
                 .is_empty()
+        );
+    }
+
+    /// A FIFO in the manifest's place (no writer will ever open it) is
+    /// named as what the report did not write, at once: reading it would
+    /// block forever.
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_in_the_manifests_place_is_foreign_not_waited_on() {
+        let dir = tempfile::tempdir().unwrap();
+        report(dir.path());
+        let manifest = dir.path().join(MANIFEST);
+        std::fs::remove_file(&manifest).unwrap();
+        let c = std::ffi::CString::new(manifest.to_str().unwrap()).unwrap();
+        // SAFETY: a NUL-terminated path; mkfifo touches no memory of ours
+        assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o644) }, 0);
+        let f = foreign(dir.path()).unwrap();
+        assert!(
+            f.contains(&format!("{MANIFEST} (not a regular file)")),
+            "{f:?}"
         );
     }
 }

@@ -8,10 +8,13 @@
 //! ([`crate::analysis::verdict::overall`]) — at every Mach number of the range.
 //!
 //! The search: the wing alone first (area 0: no surface needed); then a
-//! scan of [`SCAN`] areas spaced geometrically from [`SMALLEST`] of the
-//! limit up to the limit (the wing's area, S_T = S, unless asked
-//! otherwise); then bisection between the last scanned area that fails and
-//! the first that meets, to a relative width of [`TOLERANCE`]. The verdict
+//! scan of areas spaced geometrically, by a factor
+//! (1/[`SMALLEST`])^(1/([`SCAN`] − 1)) ≈ 1.33, from [`SMALLEST`] of the
+//! smaller of the limit and the wing's area up to the limit (the wing's
+//! area, S_T = S, unless asked otherwise: then [`SCAN`] areas) — so the
+//! scan starts where tails are, whatever the limit, never at areas where
+//! the numbers overflow; then bisection between the last scanned area that
+//! fails and the first that meets, to a relative width of [`TOLERANCE`]. The verdict
 //! need not be monotone in area (a larger tail moves the neutral point aft
 //! and changes the short period's frequency as well as its damping): the
 //! scan finds the first meeting area on its grid, and bisection the
@@ -30,9 +33,10 @@ use serde::Serialize;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// Areas scanned before bisection.
+/// Areas scanned before bisection, up to a limit of the wing's area.
 pub const SCAN: usize = 25;
-/// The smallest scanned area, as a fraction of the limit.
+/// The smallest scanned area, as a fraction of the limit or of the wing's
+/// area, whichever is smaller.
 pub const SMALLEST: f64 = 1e-3;
 /// Bisection stops when the bracket's width is below this fraction of
 /// its upper end.
@@ -274,15 +278,22 @@ fn search(f: &Family<'_>, limit: f64) -> Option<f64> {
     }
     let ratio = (1.0 / SMALLEST).powf(1.0 / (SCAN - 1) as f64);
     let mut below = 0.0;
-    let mut area = limit * SMALLEST;
-    for _ in 0..SCAN {
+    let mut area = limit.min(f.config.wing.area()) * SMALLEST;
+    loop {
         if f.meets(area) {
             return Some(bisect(f, below, area));
         }
+        if area >= limit {
+            return None;
+        }
         below = area;
-        area = (area * ratio).min(limit);
+        // the last step lands on the limit itself
+        area = if area * ratio * (1.0 + 1e-9) >= limit {
+            limit
+        } else {
+            area * ratio
+        };
     }
-    None
 }
 
 /// The boundary between `lo` (fails) and `hi` (meets).

@@ -163,6 +163,10 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
         return Err(InputError::file(path, NOT_A_CONFIG).into());
     }
     let raw: RawConfig = toml::from_str(text).map_err(|e| toml_error(path, text, &e))?;
+    // every file the config names is an input of the run, read or not
+    for file in uncertainty::named_files(path, text) {
+        crate::files::note_input(&file);
+    }
     let mut r = Reader {
         path,
         text,
@@ -464,6 +468,15 @@ impl Config {
     /// Records that the command line replaced `field` (`--mach 1.2`).
     pub fn overridden_by(&mut self, field: &'static str, flag: String) {
         self.overridden.push((field, flag));
+    }
+
+    /// The command-line flag that replaced `field` (`--damping faired`),
+    /// if one did.
+    pub fn overridden_flag(&self, field: &str) -> Option<&str> {
+        self.overridden
+            .iter()
+            .find(|(f, _)| *f == field)
+            .map(|(_, flag)| flag.as_str())
     }
 
     /// An error about `field` (`[flight] mach`, or a table `[flight]`): at

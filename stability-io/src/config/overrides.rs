@@ -9,7 +9,7 @@ use crate::Failure;
 use crate::diag::InputError;
 use crate::input::datcom::Datcom;
 use crate::limits;
-use stability_core::aero::AeroModelName;
+use stability_core::aero::{AeroModelName, Source};
 use stability_core::case::DampingModel;
 use stability_core::display::Num;
 
@@ -60,6 +60,14 @@ pub fn apply(cfg: &mut Config, o: &Overrides) -> Result<(), Failure> {
         cfg.overridden_by("[model] datcom", format!("--datcom {file}"));
     }
     if let Some(a) = o.aero {
+        if let Some(tables) = aero_tables(cfg) {
+            return Err(bad(
+                &format!("--aero {}", a.name()),
+                format!(
+                    "the lift slope and the aerodynamic centre both come from {tables}, which win over a named aerodynamic model, so --aero would change nothing: remove --aero, or the tables it would replace"
+                ),
+            ));
+        }
         cfg.case.aero = cfg.case.aero.clone().with_name(a);
         cfg.overridden_by("[model] aero", format!("--aero {}", a.name()));
     }
@@ -75,6 +83,23 @@ pub fn apply(cfg: &mut Config, o: &Overrides) -> Result<(), Failure> {
         cfg.overridden_by("[model] omega_bar", format!("--omega-bar {}", Num(w)));
     }
     Ok(())
+}
+
+/// Where the lift slope and the aerodynamic centre come from when both
+/// are tables (the only coefficients a named model gives: `--aero` then
+/// changes nothing), in words; `None` when either is not.
+fn aero_tables(cfg: &Config) -> Option<String> {
+    let table = |s: &Source| matches!(s, Source::Table(_));
+    let aero = &cfg.case.aero;
+    if !(table(&aero.lift_slope) && table(&aero.aerodynamic_centre)) {
+        return None;
+    }
+    let mine = table(&cfg.tables.lift_slope) && table(&cfg.tables.aerodynamic_centre);
+    Some(match (&cfg.datcom, mine) {
+        (_, true) => "the config's [model.tables]".to_string(),
+        (Some(d), false) => format!("the DATCOM output {}", d.output.path),
+        (None, false) => "tables".to_string(),
+    })
 }
 
 /// Why `--omega-bar` does not apply to `model`.

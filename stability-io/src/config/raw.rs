@@ -129,9 +129,9 @@ pub type RawTables = std::collections::BTreeMap<String, Spanned<RawTable>>;
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawTable {
-    pub mach: Option<Vec<f64>>,
+    pub mach: Option<Vec<Spanned<f64>>>,
     #[serde(alias = "values")]
-    pub value: Option<Vec<f64>>,
+    pub value: Option<Vec<Spanned<f64>>>,
     pub file: Option<Spanned<String>>,
     /// A derivative's: `value` (the default) or `increment`.
     pub mode: Option<Spanned<String>>,

@@ -116,7 +116,20 @@ pub fn table_from(
     let at = |m: String| InputError::at(path, text, t.span(), field.clone(), m);
     match (&raw.mach, &raw.value, &raw.file) {
         (Some(m), Some(v), None) => {
-            Ok(Table::new(m.clone(), v.clone()).map_err(|e| at(e.to_string()))?)
+            let column = |xs: &[Spanned<f64>], key: &str| -> Result<Vec<f64>, InputError> {
+                let limit = column_limit(key);
+                xs.iter()
+                    .enumerate()
+                    .map(|(k, x)| {
+                        limit.check(*x.get_ref()).map_err(|m| {
+                            let f = format!("{field} {key}[{k}]");
+                            InputError::at(path, text, x.span(), f, m)
+                        })
+                    })
+                    .collect()
+            };
+            let (m, v) = (column(m, "mach")?, column(v, "value")?);
+            Ok(Table::new(m, v).map_err(|e| at(e.to_string()))?)
         }
         (None, None, Some(f)) => {
             let file = super::relative(path, f.get_ref());
@@ -146,6 +159,15 @@ fn cells(line: &str) -> Vec<(&str, usize)> {
         start += raw.len() + 1;
     }
     out
+}
+
+/// The range of a table's column: its Mach numbers ([`limits::TABLE_MACH`])
+/// or its values ([`limits::TABLE_VALUE`]).
+fn column_limit(key: &str) -> &'static limits::Limit {
+    match key {
+        "mach" | "Mach" => &limits::TABLE_MACH,
+        _ => &limits::TABLE_VALUE,
+    }
 }
 
 fn is_number(cell: &str) -> bool {
@@ -186,23 +208,26 @@ pub fn read_csv_table(path: &str, csv: &str) -> Result<Table, InputError> {
         }
         for (k, (cell, at)) in cells.into_iter().enumerate() {
             let start = line_start + at;
+            let located = |m: String| {
+                InputError::at(
+                    path,
+                    csv,
+                    start..start + cell.len(),
+                    format!("column {} ({})", k + 1, NAMES[k]),
+                    m,
+                )
+            };
             let x = cell.parse::<f64>().map_err(|_| {
                 let what = if cell.is_empty() {
                     "is empty".to_string()
                 } else {
                     format!("`{}` is not a number", quote(cell))
                 };
-                InputError::at(
-                    path,
-                    csv,
-                    start..start + cell.len(),
-                    format!("column {} ({})", k + 1, NAMES[k]),
-                    format!(
-                        "{what}; every row is two numbers, Mach and value (only a first line with no number in it is a header)"
-                    ),
-                )
+                located(format!(
+                    "{what}; every row is two numbers, Mach and value (only a first line with no number in it is a header)"
+                ))
             })?;
-            columns[k].push(x);
+            columns[k].push(column_limit(NAMES[k]).check(x).map_err(located)?);
         }
         lines_of_rows.push(line_no);
     }
@@ -241,6 +266,21 @@ mod tests {
         let e = read_csv_table("t.csv", "mach,cd0,extra\n0.5,0.01\n").unwrap_err();
         assert!(
             e.to_string().starts_with("t.csv:1:1: expected two columns"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_value_out_of_range_is_located_at_its_cell() {
+        let e = read_csv_table("t.csv", "mach,cd0\n0.5,0.01\n1.2,-1e308\n").unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("t.csv:3:5: column 2 (value): a table's value must lie in [-1000000, 1000000], not -1e308"),
+            "{e}"
+        );
+        let e = read_csv_table("t.csv", "-0.5,0.01\n1.2,0.02\n").unwrap_err();
+        assert!(
+            e.to_string().starts_with("t.csv:1:1: column 1 (Mach)"),
             "{e}"
         );
     }
@@ -289,6 +329,30 @@ mod derivative_table_tests {
             "z_wdot = { mach = [0.5, 1.0], value = [1.0, 1.0] }\n\"z_ẇ\" = { mach = [0.5, 1.0], value = [1.0, 1.0] }\n",
         );
         assert!(e.contains("two tables"), "{e}");
+    }
+
+    /// A value no coefficient or derivative reaches is refused at the
+    /// table and its line, not where the design point overflows later.
+    #[test]
+    fn a_table_value_out_of_range_is_located_at_the_table() {
+        for (table, field) in [
+            (
+                "m_q = { mach = [0.5, 2.0], values = [-1e308, -0.5] }",
+                "[model.tables] m_q value[0]",
+            ),
+            (
+                "lift_slope = { mach = [0.5, 2.0], value = [3.0, 1e7] }",
+                "[model.tables] lift_slope value[1]",
+            ),
+            (
+                "z_u = { mach = [0.5, 1e300], values = [0.1, 0.1], mode = \"increment\" }",
+                "[model.tables] z_u mach[1]",
+            ),
+        ] {
+            let e = error(&format!("{table}\n"));
+            assert!(e.starts_with("c.toml:11:") && e.contains(field), "{e}");
+            assert!(e.contains("must lie in"), "{e}");
+        }
     }
 
     #[test]

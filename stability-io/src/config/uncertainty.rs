@@ -49,11 +49,11 @@ use crate::diag::{InputError, quote};
 use crate::input::toml_error;
 use serde::Deserialize;
 use stability_core::case::DampingModel;
+use stability_core::display::Num;
 use stability_core::flight::{Air, Altitude, Mass};
-use stability_core::uncertainty::dist::Dist;
+use stability_core::uncertainty::dist::{Dist, DistError};
 use stability_core::uncertainty::{ErrorKind, Input, Quantity, Sampling, Study, StudyError};
 use std::collections::BTreeMap;
-use std::path::Path;
 use toml::Spanned;
 
 #[derive(Deserialize)]
@@ -124,7 +124,9 @@ pub fn read(cfg: &Config) -> Result<Option<Study>, Failure> {
                     .collect();
             }
             "model" => {
-                models = model_form(v).map_err(|m| at(span, "[uncertainty.model]".into(), m))?
+                models =
+                    model_form(v).map_err(|m| at(span.clone(), "[uncertainty.model]".into(), m))?;
+                honoured(cfg, &models).map_err(|m| at(span, "[uncertainty.model]".into(), m))?;
             }
             // how to sample, not a distribution: [`sampling`]'s
             "sampling" => {}
@@ -145,6 +147,24 @@ pub fn read(cfg: &Config) -> Result<Option<Study>, Failure> {
             let span = table.get_ref().get(key).map_or(whole, |v| v.span());
             at(span, field, e.to_string())
         })
+}
+
+/// The files `[uncertainty]` names (`file = "masses.csv"` of a samples
+/// distribution), relative to the config at `path`, whether or not the
+/// run reads them: inputs of the run all the same
+/// ([`crate::files::note_input`]). A table that does not parse names none
+/// here (its reader says why).
+pub fn named_files(path: &str, text: &str) -> Vec<std::path::PathBuf> {
+    let Ok(doc) = toml::from_str::<toml::Table>(text) else {
+        return Vec::new();
+    };
+    let Some(toml::Value::Table(u)) = doc.get("uncertainty") else {
+        return Vec::new();
+    };
+    u.values()
+        .filter_map(|v| v.get("file").and_then(toml::Value::as_str))
+        .map(|f| super::relative(path, f))
+        .collect()
 }
 
 /// The config's `sampling = "random" | "sobol"` in `[uncertainty]`
@@ -188,6 +208,35 @@ fn key_of(e: &StudyError) -> &'static str {
         StudyError::NoAltitude => "altitude",
         StudyError::TooMany => "",
     }
+}
+
+/// The command line's model options against `[uncertainty.model]`, which
+/// fixes the study's damping models: `--damping` would change nothing (an
+/// error, not ignored), and `--omega-bar` must apply to every model.
+fn honoured(cfg: &Config, models: &[(DampingModel, f64)]) -> Result<(), String> {
+    let names = || {
+        models
+            .iter()
+            .map(|(m, _)| m.name())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if let Some(flag) = cfg.overridden_flag("[model] damping") {
+        return Err(format!(
+            "{flag}: [uncertainty.model] gives the study's damping models ({}), so --damping would change nothing; give the models there, or remove [uncertainty.model] to study --damping's model alone",
+            names()
+        ));
+    }
+    if let Some(flag) = cfg.overridden_flag("[model] omega_bar")
+        && let Some((m, _)) = models.iter().find(|(m, _)| !m.takes_omega_bar())
+    {
+        return Err(format!(
+            "{flag}: the damping model `{}` of [uncertainty.model] ({}) takes no frequency parameter; remove --omega-bar, or that model",
+            m.name(),
+            names()
+        ));
+    }
+    Ok(())
 }
 
 /// `[uncertainty.model]`: the theories and their weights.
@@ -280,8 +329,10 @@ fn input(
         ErrorKind::Additive => 0.0,
     };
     let dist = dist(cfg, &raw, centre).map_err(|(f, m)| err(f, m))?;
-    dist.check()
-        .map_err(|e| err(param_of(&e.to_string()), e.to_string()))?;
+    dist.check().map_err(|e| {
+        let (key, message) = written(&raw, &e);
+        err(key, message)
+    })?;
     Ok(Input {
         quantity,
         error,
@@ -289,12 +340,24 @@ fn input(
     })
 }
 
-/// The parameter an error names (`sd must not be negative` → `sd`).
-fn param_of(message: &str) -> &'static str {
-    ["sd", "sigma", "mean", "mu", "low", "mode", "high"]
-        .into_iter()
-        .find(|p| message.starts_with(p))
-        .unwrap_or("")
+/// The key of the table a distribution's error is about, as the user
+/// wrote it (an `sd` computed from `relative_sd` is that key's), with the
+/// message.
+fn written(r: &RawInput, e: &DistError) -> (&'static str, String) {
+    let param = match e {
+        DistError::NotFinite(p) | DistError::Negative(p) => *p,
+        DistError::Order => "high",
+        DistError::Mode => "mode",
+        DistError::NoSamples => "values",
+    };
+    match param {
+        "sd" if r.sd.is_none() && r.relative_sd.is_some() => {
+            ("relative_sd", format!("{e} (sd = relative_sd × |mean|)"))
+        }
+        "mu" if r.mu.is_none() => ("median", format!("{e} (mu = ln median)")),
+        "a sample" => ("values", e.to_string()),
+        p => (p, e.to_string()),
+    }
 }
 
 /// The config's nominal value of a quantity (a derivative's: its own,
@@ -349,9 +412,15 @@ fn dist(cfg: &Config, r: &RawInput, centre: f64) -> Result<Dist, ParamError> {
             Dist::Normal { mean, sd }
         }
         "lognormal" => {
-            let mu = match r.mu {
-                Some(mu) => mu,
-                None => centre(r.median, "median")?.ln(),
+            let mu = match (r.mu, r.median) {
+                (Some(mu), None) => mu,
+                (Some(_), Some(_)) => {
+                    return Err((
+                        "mu",
+                        "give one of `median` and `mu` (mu = ln median)".into(),
+                    ));
+                }
+                (None, given) => ln_median(given, centre(r.median, "median")?)?,
             };
             Dist::LogNormal {
                 mu,
@@ -380,16 +449,32 @@ fn dist(cfg: &Config, r: &RawInput, centre: f64) -> Result<Dist, ParamError> {
     })
 }
 
+/// ln of a lognormal's median — `given`, else the nominal value `median`
+/// — which must be positive and finite.
+fn ln_median(given: Option<f64>, median: f64) -> Result<f64, ParamError> {
+    if median > 0.0 && median.is_finite() {
+        return Ok(median.ln());
+    }
+    let m = match given {
+        Some(_) => format!(
+            "a lognormal's median is positive and finite, not {}",
+            Num(median)
+        ),
+        None => format!(
+            "give `median` (or `mu`, its logarithm): it defaults to the nominal value, {} here (an additive error's is 0), and a lognormal's median is positive; or use dist = \"normal\"",
+            Num(median)
+        ),
+    };
+    Err(("median", m))
+}
+
 /// The samples of `dist = "samples"`: `values = [...]` or a file of one
 /// number a line.
 fn samples(cfg: &Config, r: &RawInput) -> Result<Vec<f64>, ParamError> {
     match (&r.values, &r.file) {
         (Some(v), None) => Ok(v.clone()),
         (None, Some(f)) => {
-            let file = Path::new(&cfg.path)
-                .parent()
-                .unwrap_or(Path::new("."))
-                .join(f);
+            let file = super::relative(&cfg.path, f);
             let text = crate::files::read_input(&file).map_err(|e| ("file", e.to_string()))?;
             read_samples_csv(&file.display().to_string(), &text)
                 .map_err(|e| ("file", e.to_string()))
@@ -426,4 +511,82 @@ pub fn read_samples_csv(path: &str, csv: &str) -> Result<Vec<f64>, InputError> {
         first = false;
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::{Overrides, apply, parse};
+
+    const BASE: &str = "[planform]\nsweep = 60.0\nroot_chord = 10.0\n[flight]\nmach = 1.5\ncg = 0.25\nmu1 = 50.0\ni_b = 0.08\ncl_m2 = 0.05\n";
+
+    fn error(more: &str) -> String {
+        let cfg = parse("c.toml", &format!("{BASE}{more}")).unwrap();
+        read(&cfg).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn a_distributions_error_names_the_key_written_or_to_write() {
+        // an additive error's median defaults to 0: no lognormal has it
+        let e =
+            error("[uncertainty.m_q]\nerror = \"additive\"\ndist = \"lognormal\"\nsigma = 0.2\n");
+        assert!(e.contains("[uncertainty.m_q] median: give `median`"), "{e}");
+        let e = error("[uncertainty.i_b]\ndist = \"lognormal\"\nmedian = -0.1\nsigma = 0.2\n");
+        assert!(
+            e.contains("[uncertainty.i_b] median: a lognormal's median is positive"),
+            "{e}"
+        );
+        let e = error(
+            "[uncertainty.i_b]\ndist = \"lognormal\"\nmedian = 0.1\nmu = -2.0\nsigma = 0.2\n",
+        );
+        assert!(e.contains("[uncertainty.i_b] mu: give one of"), "{e}");
+        // sd = relative_sd·|mean| overflows: relative_sd is what was written
+        let e = error("[uncertainty.i_b]\ndist = \"normal\"\nmean = 1e300\nrelative_sd = 1e300\n");
+        assert!(
+            e.contains("[uncertainty.i_b] relative_sd: sd is not a finite number"),
+            "{e}"
+        );
+        let e = error("[uncertainty.i_b]\ndist = \"normal\"\nsd = -0.1\n");
+        assert!(
+            e.contains("[uncertainty.i_b] sd: sd must not be negative"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn an_override_the_study_cannot_honour_is_an_error() {
+        let text = format!(
+            "{BASE}[uncertainty.i_b]\ndist = \"normal\"\nrelative_sd = 0.1\n[uncertainty.model]\ndamping = [\"faired\", \"supersonic\"]\n"
+        );
+        let with = |o: Overrides| {
+            let mut cfg = parse("c.toml", &text).unwrap();
+            apply(&mut cfg, &o).unwrap();
+            read(&cfg).map(|_| ()).map_err(|e| e.to_string())
+        };
+        let e = with(Overrides {
+            damping: Some(DampingModel::Faired),
+            ..Default::default()
+        })
+        .unwrap_err();
+        assert!(e.contains("[uncertainty.model]: --damping faired: "), "{e}");
+        // the supersonic theory takes no ω̄
+        let e = with(Overrides {
+            omega_bar: Some(0.3),
+            ..Default::default()
+        })
+        .unwrap_err();
+        assert!(
+            e.contains("--omega-bar 0.3: the damping model `supersonic`"),
+            "{e}"
+        );
+        assert!(with(Overrides::default()).is_ok());
+    }
+
+    #[test]
+    fn a_samples_file_is_an_input_of_every_reading_of_the_config() {
+        let text = format!("{BASE}[uncertainty.i_b]\ndist = \"samples\"\nfile = \"s.csv\"\n");
+        let (cfg, read) = crate::files::recording(|| parse("dir/c.toml", &text));
+        assert!(cfg.is_ok());
+        assert_eq!(read, [std::path::PathBuf::from("dir/s.csv")]);
+    }
 }

@@ -13,7 +13,11 @@
 //! row is taken under the header whose name ends nearest the value's end
 //! (so that a blank entry shifts nothing). `NDM` (no DATCOM method),
 //! `NaN`, `******` (overflow) and blanks are "not given". Pages may repeat;
-//! several cases (`NEXT CASE`) add their Mach numbers. When the output
+//! several cases (`NEXT CASE`) add their Mach numbers. Each table's unit
+//! is read from its header — `DERIVATIVE (PER DEGREE)` or `(PER RADIAN)`
+//! (DATCOM's `DERIV RAD` option), `DYNAMIC DERIVATIVES (PER …)` — and the
+//! values made per degree, as [`Point`] holds them; a table whose header
+//! states neither is an error at its column header. When the output
 //! holds several configurations (`BUILD`), the last one printed is taken.
 //! The wing's apex x (XW) is read from the echoed `$SYNTHS` cards (0 when
 //! absent, DATCOM's default), and the moment centre XCG too where it
@@ -48,9 +52,39 @@ enum Page {
     Other,
 }
 
+/// The unit a table's derivatives are printed in, from its header.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Unit {
+    PerDegree,
+    PerRadian,
+}
+
+impl Unit {
+    /// The unit a header line states, if it states one.
+    fn stated(line: &str) -> Option<Unit> {
+        if line.contains("(PER DEGREE)") {
+            Some(Unit::PerDegree)
+        } else if line.contains("(PER RADIAN)") {
+            Some(Unit::PerRadian)
+        } else {
+            None
+        }
+    }
+
+    /// A derivative printed in this unit, per degree.
+    fn per_degree(self, v: f64) -> f64 {
+        match self {
+            Unit::PerDegree => v,
+            Unit::PerRadian => v / stability_core::datcom::PER_RADIAN,
+        }
+    }
+}
+
 /// One table row at α = 0 of one page.
 struct Row {
     page: Page,
+    /// The unit of its derivatives (its table's header).
+    unit: Unit,
     configuration: String,
     mach: f64,
     reference: Reference,
@@ -139,6 +173,8 @@ struct Reader<'a> {
     configuration: String,
     flight_pending: bool,
     flight: Option<(f64, Reference)>,
+    /// The unit the page's header states, once read.
+    unit: Option<Unit>,
     header: Option<Vec<(String, usize)>>,
     rows: Vec<Row>,
 }
@@ -161,6 +197,7 @@ impl Reader<'_> {
             self.page = Page::Other;
             self.title_pending = trimmed.contains("AUTOMATED STABILITY AND CONTROL");
             (self.flight, self.header, self.flight_pending) = (None, None, false);
+            self.unit = None;
             return Ok(());
         }
         if trimmed.is_empty() {
@@ -190,6 +227,10 @@ impl Reader<'_> {
             self.flight_pending = true;
             return Ok(());
         }
+        if let Some(unit) = Unit::stated(trimmed) {
+            self.unit = Some(unit);
+            return Ok(());
+        }
         let toks = tokens(body);
         let first_number = toks.first().is_some_and(|(t, _)| t.parse::<f64>().is_ok());
         if self.flight_pending && first_number {
@@ -198,16 +239,26 @@ impl Reader<'_> {
             return Ok(());
         }
         if toks.first().is_some_and(|(t, _)| *t == "ALPHA") {
+            if self.unit.is_none() {
+                let r = toks[0].1.clone();
+                return Err(self.err(
+                    start + 1,
+                    r,
+                    "ALPHA",
+                    "the table's header states no unit: DATCOM prints DERIVATIVE (PER DEGREE) or (PER RADIAN) above the columns (DYNAMIC DERIVATIVES (PER …) above the dynamic table); without it the values' unit is unknown".into(),
+                ));
+            }
             self.header = Some(toks.iter().map(|(t, r)| (t.to_string(), r.end)).collect());
             return Ok(());
         }
-        if let (Some(header), Some((mach, reference)), true) =
-            (&self.header, self.flight, first_number)
+        if let (Some(header), Some((mach, reference)), Some(unit), true) =
+            (&self.header, self.flight, self.unit, first_number)
         {
             let cells = self.cells(header, &toks, start + 1)?;
             if cells.first().and_then(|(_, v)| *v) == Some(0.0) {
                 self.rows.push(Row {
                     page: self.page,
+                    unit,
                     configuration: self.configuration.clone(),
                     mach,
                     reference,
@@ -291,14 +342,20 @@ impl Reader<'_> {
                 ));
             }
             taken[k] = true;
+            let at = |m: String| self.err(start, r.clone(), name, m);
             out[k].1 = value(t).map_err(|_| {
-                self.err(
-                    start,
-                    r.clone(),
-                    name,
-                    format!("`{}` is not a number (nor NDM, NaN or ******)", quote(t)),
-                )
+                at(format!(
+                    "`{}` is not a number (nor NDM, NaN or ******)",
+                    quote(t)
+                ))
             })?;
+            // a value the tables take lies in a table's range, as the
+            // config's own tables' do
+            if let Some(v) = out[k].1
+                && TAKEN.contains(&name.as_str())
+            {
+                crate::limits::TABLE_VALUE.check(v).map_err(at)?;
+            }
         }
         Ok(out)
     }
@@ -349,6 +406,9 @@ fn exact_moment_centre(points: &mut [Point], text: &str) {
     }
 }
 
+/// The columns whose values become tables.
+const TAKEN: [&str; 7] = ["CD", "CLA", "CMA", "CLQ", "CMQ", "CLAD", "CMAD"];
+
 /// The value of column `name` in a row (`None` where not given).
 fn column(row: &Row, name: &str) -> Option<f64> {
     row.cells.iter().find(|(n, _)| n == name).and_then(|c| c.1)
@@ -365,6 +425,7 @@ pub fn parse(path: &str, text: &str) -> Result<Output, InputError> {
         configuration: String::new(),
         flight_pending: false,
         flight: None,
+        unit: None,
         header: None,
         rows: Vec::new(),
     };
@@ -394,22 +455,27 @@ pub fn parse(path: &str, text: &str) -> Result<Output, InputError> {
             }
         };
         let p = &mut points[k];
-        let set = |slot: &mut Option<f64>, name: &str| {
+        // a coefficient as printed; a derivative per degree
+        let set = |slot: &mut Option<f64>, name: &str, derivative: bool| {
             if let Some(v) = column(row, name) {
-                *slot = Some(v);
+                *slot = Some(if derivative {
+                    row.unit.per_degree(v)
+                } else {
+                    v
+                });
             }
         };
         match row.page {
             Page::Static => {
-                set(&mut p.cd, "CD");
-                set(&mut p.cla, "CLA");
-                set(&mut p.cma, "CMA");
+                set(&mut p.cd, "CD", false);
+                set(&mut p.cla, "CLA", true);
+                set(&mut p.cma, "CMA", true);
             }
             _ => {
-                set(&mut p.clq, "CLQ");
-                set(&mut p.cmq, "CMQ");
-                set(&mut p.clad, "CLAD");
-                set(&mut p.cmad, "CMAD");
+                set(&mut p.clq, "CLQ", true);
+                set(&mut p.cmq, "CMQ", true);
+                set(&mut p.clad, "CLAD", true);
+                set(&mut p.cmad, "CMAD", true);
             }
         }
     }
@@ -534,6 +600,101 @@ mod tests {
             1,
         );
         assert!(parse("d.out", &shifted).is_err());
+        // a value no derivative reaches, at its cell
+        let huge = FILE.replacen("4.505E-02", "4.505E+99", 1);
+        let e = parse("d.out", &huge).unwrap_err().to_string();
+        assert!(
+            e.starts_with("d.out:123:") && e.contains("CLA") && e.contains("must lie in"),
+            "{e}"
+        );
+    }
+
+    /// The fixture as DATCOM prints it with `DERIV RAD`: every header per
+    /// radian and every derivative of the α = 0 rows (CLA, CMA; CLQ, CMQ,
+    /// CLAD, CMAD) times 180/π, printed to four figures as DATCOM does.
+    fn per_radian(text: &str) -> String {
+        let scale = |cell: &str| -> String {
+            let Ok(v) = cell.parse::<f64>() else {
+                return cell.to_string();
+            };
+            let v = v * stability_core::datcom::PER_RADIAN;
+            let e = if v == 0.0 {
+                0
+            } else {
+                v.abs().log10().floor() as i32
+            };
+            format!("{:.3}E{:+03}", v / 10f64.powi(e), e)
+        };
+        let mut page = "";
+        let mut out = String::new();
+        for line in text.lines() {
+            if line.contains("CHARACTERISTICS AT ANGLE OF ATTACK") {
+                page = "static";
+            } else if line.trim() == "DYNAMIC DERIVATIVES" {
+                page = "dynamic";
+            }
+            let line = line.replace("(PER DEGREE)", "(PER RADIAN)");
+            let tokens: Vec<&str> = line.split_whitespace().collect();
+            let row = line.starts_with(' ')
+                && tokens.first().is_some_and(|t| t.parse::<f64>() == Ok(0.0));
+            // the derivative columns, by position in the row
+            let columns: &[usize] = match (page, row, tokens.len()) {
+                ("static", true, 12) => &[7, 8],
+                ("dynamic", true, 10) => &[1, 2, 3, 4],
+                _ => &[],
+            };
+            assert!(
+                !row || page.is_empty() || !columns.is_empty(),
+                "a row the test does not know: {line}"
+            );
+            let mut line = line.clone();
+            let mut from = 0;
+            for &k in columns {
+                let new = scale(tokens[k]);
+                assert_eq!(new.len(), tokens[k].len(), "{}", tokens[k]);
+                let at = from + line[from..].find(tokens[k]).unwrap();
+                line.replace_range(at..at + new.len(), &new);
+                from = at + new.len();
+            }
+            out.push_str(&line);
+            out.push('\n');
+        }
+        out
+    }
+
+    #[test]
+    fn a_table_headed_per_radian_is_read_per_radian() {
+        let radian = per_radian(FILE);
+        assert!(radian.contains("DYNAMIC DERIVATIVES (PER RADIAN)"));
+        let (o, r) = (output(), parse("rad.out", &radian).unwrap());
+        assert_eq!(o.points.len(), r.points.len());
+        for (d, r) in o.points.iter().zip(&r.points) {
+            let close = |a: Option<f64>, b: Option<f64>| match (a, b) {
+                (Some(a), Some(b)) => (a - b).abs() <= 1e-3 * a.abs(),
+                (a, b) => a == b,
+            };
+            for (a, b) in [
+                (d.cla, r.cla),
+                (d.cma, r.cma),
+                (d.clq, r.clq),
+                (d.cmq, r.cmq),
+                (d.clad, r.clad),
+                (d.cmad, r.cmad),
+                (d.cd, r.cd),
+            ] {
+                assert!(close(a, b), "M = {}: {a:?} per degree, {b:?} read", d.mach);
+            }
+        }
+        // line 123's CLA 4.505E-02 per degree is printed 2.581E+00 per radian
+        assert!(radian.contains("2.581E+00"), "the test's file");
+        assert!((at(&r, 0.2).cla.unwrap() - 0.04505).abs() < 1e-5);
+        // a header that states no unit is an error at the table's columns
+        let bare = FILE.replacen("DYNAMIC DERIVATIVES (PER DEGREE)", "DYNAMIC DERIVATIVES", 1);
+        let e = parse("d.out", &bare).unwrap_err().to_string();
+        assert!(
+            e.starts_with("d.out:136:") && e.contains("states no unit"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -137,7 +137,7 @@ impl ConfigurationLattice {
         if !(omega_bar.is_finite() && omega_bar >= 0.0) {
             return Err(LiftingSurfaceError::Frequency(omega_bar).into());
         }
-        let levels = self.members[0].lattice.grids().len();
+        let used = layout::levels_solved(self.members[0].lattice.grids().len());
         let solve = |k: usize| -> Result<Parts, ConfigurationError> {
             let blocks: Vec<Block> = self.members.iter().map(|m| m.block(k)).collect();
             if omega_bar < OMEGA_BAR_QUASI_STEADY {
@@ -147,11 +147,6 @@ impl ConfigurationLattice {
             }
         };
         // the levels the extrapolation uses, solved side by side
-        let used = match levels {
-            1 => 1,
-            2..6 => 3,
-            _ => 6,
-        };
         let solved: Vec<Parts> = (0..used)
             .into_par_iter()
             .map(solve)

@@ -4,7 +4,7 @@
 
 use super::ConfigurationError;
 use crate::aerodynamics::lifting_surface::lattice::{Grid, Strip};
-use crate::aerodynamics::lifting_surface::{Lattice, LatticeSpec};
+use crate::aerodynamics::lifting_surface::{Lattice, LatticeSpec, LiftingSurfaceError};
 use crate::geometry::Trapezoid;
 use crate::geometry::configuration::{Configuration, Part, Surface, SurfaceKind};
 
@@ -159,7 +159,8 @@ pub(super) fn members(
     let mut out = vec![Member {
         part: Part::Wing,
         shape: wing,
-        lattice: Lattice::new(&wing, spec_for(&wing))?,
+        lattice: Lattice::new(&wing, spec_for(&wing))
+            .map_err(|e| too_many(e, Part::Wing, &wing, &spec_for(&wing)))?,
         x: 0.0,
         z: 0.0,
     }];
@@ -169,10 +170,11 @@ pub(super) fn members(
             let lattice = if in_the_wake(&wing_lattice.strips_of(0), shape.semi_span, s.z) {
                 Lattice::on_strips(&shape, spec_for(&shape), |k| {
                     aligned(&wing_lattice.strips_of(k), shape.semi_span)
-                })?
+                })
             } else {
-                Lattice::new(&shape, spec_for(&shape))?
-            };
+                Lattice::new(&shape, spec_for(&shape))
+            }
+            .map_err(|e| too_many(e, part(s.kind), &shape, &spec_for(&shape)))?;
             out.push(Member {
                 part: part(s.kind),
                 shape,
@@ -183,7 +185,101 @@ pub(super) fn members(
         }
     }
     check_layout(&out, wing.root_chord)?;
+    check_cost(&out)?;
     Ok(out)
+}
+
+/// How many of a lattice's `levels` (finest first) the solve uses: all of
+/// Richardson's six, three of a chordwise extrapolation, or the one.
+pub(super) fn levels_solved(levels: usize) -> usize {
+    match levels {
+        1 => 1,
+        2..6 => 3,
+        _ => 6,
+    }
+}
+
+/// The most bytes the configuration's solve may hold in its matrices at
+/// once: as much as the largest lattice a single wing may have, a dense
+/// complex matrix of [`LatticeSpec::MAX_BOXES`]² (256 MB).
+pub const MAX_SOLVE_BYTES: f64 =
+    16.0 * LatticeSpec::MAX_BOXES as f64 * LatticeSpec::MAX_BOXES as f64;
+
+/// The solve's cost, counted before anything is solved: each level of the
+/// extrapolation is one dense complex matrix of every surface's boxes
+/// (16 bytes an entry, its LU's work growing as the cube of its order),
+/// and the levels are solved side by side. Above [`MAX_SOLVE_BYTES`] the
+/// configuration is refused, naming the surface that costs most and what
+/// to change.
+fn check_cost(members: &[Member]) -> Result<(), ConfigurationError> {
+    let used = levels_solved(members[0].lattice.grids().len());
+    let order = |k: usize| -> f64 {
+        members
+            .iter()
+            .map(|m| m.lattice.grids()[k].boxes.len() as f64)
+            .sum()
+    };
+    let bytes: f64 = (0..used).map(|k| 16.0 * order(k) * order(k)).sum();
+    if bytes <= MAX_SOLVE_BYTES {
+        return Ok(());
+    }
+    let boxes: Vec<String> = members
+        .iter()
+        .map(|m| format!("{} {}", name(m.part), m.lattice.boxes().len()))
+        .collect();
+    let worst = members
+        .iter()
+        .max_by_key(|m| m.lattice.boxes().len())
+        .expect("the wing at least");
+    Err(costly(
+        format!(
+            "the configuration's lattice has {} boxes on the half configuration ({}), solved as one dense complex matrix at each of the extrapolation's {used} levels side by side: {:.0} MB at once, more than the {:.0} MB the solver takes",
+            order(0),
+            boxes.join(", "),
+            bytes / 1e6,
+            MAX_SOLVE_BYTES / 1e6
+        ),
+        worst.part,
+        &worst.shape,
+        &worst.lattice.spec(),
+    ))
+}
+
+/// A surface's lattice with more boxes than a lattice may have, said as
+/// [`check_cost`] says it (other errors as they are).
+fn too_many(
+    e: LiftingSurfaceError,
+    part: Part,
+    shape: &Trapezoid,
+    spec: &LatticeSpec,
+) -> ConfigurationError {
+    match e {
+        LiftingSurfaceError::TooManyBoxes { boxes, max } => costly(
+            format!(
+                "the {}'s lattice alone has {boxes} boxes on its half, more than the {max} the solver takes (one dense complex matrix of {:.0} MB)",
+                name(part),
+                MAX_SOLVE_BYTES / 1e6
+            ),
+            part,
+            shape,
+            spec,
+        ),
+        e => e.into(),
+    }
+}
+
+/// The error of a lattice too costly to solve: `what`, then what makes the
+/// surface `part` (of planform `shape`, lattice `spec`) so costly and what
+/// to change.
+fn costly(what: String, part: Part, shape: &Trapezoid, spec: &LatticeSpec) -> ConfigurationError {
+    ConfigurationError::Geometry(format!(
+        "{what}. The {name}'s aspect ratio {a:.0} takes {n} strips of {c} boxes (16 strips, and 2 more for each unit of aspect ratio above 4): give the {name} a smaller aspect ratio — more leading-edge sweep (it has {sweep:.1}°), more taper, or a shorter span",
+        name = name(part),
+        a = shape.aspect_ratio(),
+        n = spec.spanwise,
+        c = spec.chordwise,
+        sweep = shape.sweep_le.to_degrees(),
+    ))
 }
 
 fn name(p: Part) -> &'static str {
@@ -228,6 +324,59 @@ fn check_layout(members: &[Member], scale: f64) -> Result<(), ConfigurationError
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A tailplane swept 1° (aspect ratio 153: 314 strips, 3768 boxes) is
+    /// within the single-surface limit, but the configuration's solve
+    /// holds six matrices of all 3960 boxes at once — 411 MB — and is
+    /// refused before anything is solved, naming the tailplane and what
+    /// to change; swept 10°, it is solved.
+    #[test]
+    fn a_configuration_costlier_than_the_solver_takes_is_refused_first() {
+        use crate::geometry::{Planform, Size};
+        let wing = Trapezoid::from(
+            &Planform::new(45f64.to_radians(), 0.0, Size::RootChord(10.0)).unwrap(),
+        );
+        let tail = |sweep: f64| {
+            let p = Planform::new(sweep.to_radians(), 0.2, Size::Area(16.0)).unwrap();
+            Configuration {
+                tailplane: Some(Surface {
+                    kind: SurfaceKind::Tailplane,
+                    shape: Trapezoid::from(&p),
+                    x: 12.0,
+                    z: 0.0,
+                    incidence: 0.0,
+                }),
+                ..Configuration::wing_alone(wing)
+            }
+        };
+        let e = match members(&tail(1.0), LatticeSpec::for_wing) {
+            Err(ConfigurationError::Geometry(m)) => m,
+            other => panic!("{:?}", other.map(|m| m.len())),
+        };
+        // by hand: A = 4(1 − λ)/((1 + λ) tan 1°) = 152.8 → 16 + 2·149 = 314
+        // strips of 12; 3768 + 192 = 3960 boxes; the levels' orders are
+        // 3960, 1980, 990 (chordwise halved) and 1980, 990, 495 (strips
+        // halved): 16·3960²·(1 + 1/4 + 1/16 + 1/4 + 1/16 + 1/64) = 411 MB
+        let mb = 16.0 * 3960f64.powi(2) * (1.0 + 0.25 + 0.0625 + 0.25 + 0.0625 + 0.015625) / 1e6;
+        assert!(
+            e.contains("3960 boxes") && e.contains("tailplane 3768"),
+            "{e}"
+        );
+        assert!(e.contains(&format!("{mb:.0} MB at once")), "{e}");
+        assert!(
+            e.contains("314 strips") && e.contains("more leading-edge sweep"),
+            "{e}"
+        );
+        // swept 0.5°: the tailplane alone is beyond a lattice's boxes
+        let e = members(&tail(0.5), LatticeSpec::for_wing)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("tailplane's lattice alone has 7440 boxes"),
+            "{e}"
+        );
+        assert!(members(&tail(10.0), LatticeSpec::for_wing).is_ok());
+    }
 
     #[test]
     fn overlap_in_plan() {
