@@ -8,11 +8,11 @@
 mod common;
 
 use common::{Scratch, path, run_ok, stdout};
-use delta_stability::report::Study;
-use delta_stability::report::conclusions::{Agreement, CONCLUSIONS, Judged, judge_all};
-use delta_stability::report::study::Assumption;
-use delta_stability::report::summary::{Findings, Worst};
 use stability_core::study::intervals;
+use stability_study::Study;
+use stability_study::conclusions::{Agreement, CONCLUSIONS, Judged, judge_all};
+use stability_study::study::Assumption;
+use stability_study::summary::{Findings, Worst};
 
 /// The verdict each conclusion gets on our models, by id — the one place
 /// they are written. The tolerance of each is its own, stated in
@@ -258,7 +258,7 @@ fn assert_page_contents(html: &str, out: &std::path::Path) {
     };
     let ids = attr("id");
     let hrefs = attr("href");
-    for section in 1..=delta_stability::report::SECTIONS.len() {
+    for section in 1..=stability_study::SECTIONS.len() {
         assert!(
             hrefs.contains(&format!("#section-{section}")),
             "section {section}"
