@@ -107,8 +107,9 @@ pub fn plates(study: &Study) -> Vec<Plate> {
     out
 }
 
-/// Fig 1, the section before the rest of §6 (`super::SECTIONS`).
-pub fn wave_drag_plates(_study: &Study) -> Vec<Plate> {
+/// Fig 1, the section before the rest of §6 ([`crate::SECTIONS`]), drawn
+/// without the study.
+pub fn wave_drag_plates() -> Vec<Plate> {
     vec![fig1()]
 }
 

@@ -36,45 +36,54 @@ pub use report::Report;
 pub use stability_io::plot::Plate;
 pub use study::Study;
 
-/// A section of the note: its figures, computed from the study.
+/// How a section's figures are drawn.
+#[derive(Debug, Clone, Copy)]
+pub enum Figures {
+    /// Without the study: drawn before it is computed ([`Report::compute`]).
+    Alone(fn() -> Vec<Plate>),
+    /// From the study.
+    FromStudy(fn(&Study) -> Vec<Plate>),
+}
+
+/// A section of the note: its figures.
 pub struct Section {
     /// What the progress bar shows while it is computed.
     pub title: &'static str,
-    pub plates: fn(&Study) -> Vec<Plate>,
+    pub plates: Figures,
 }
 
 /// The note's sections with figures, in its order.
 ///
 /// Fig 1, needing no study and quick, is a section of its own ahead of the
-/// rest of §6 (whose Fig 4 solves many lattices): the report's first
-/// files are written early.
+/// rest of §6 (whose Fig 4 solves many lattices), drawn before the study
+/// is computed: the report's first files are written at once.
 pub const SECTIONS: [Section; 7] = [
     Section {
         title: "§6: wave drag at zero lift (Fig 1)",
-        plates: coefficients::wave_drag_plates,
+        plates: Figures::Alone(coefficients::wave_drag_plates),
     },
     Section {
         title: "§6: aerodynamic coefficients and stiffness derivatives (Figs 2–12; Fig 4 by the lifting surface)",
-        plates: coefficients::plates,
+        plates: Figures::FromStudy(coefficients::plates),
     },
     Section {
         title: "§7: damping theories and derivatives (Figs 13–24; Figs 14–15 by the lifting surface)",
-        plates: damping::plates,
+        plates: Figures::FromStudy(damping::plates),
     },
     Section {
         title: "§8: the damping standard (Figs 25–26)",
-        plates: standard::plates,
+        plates: Figures::FromStudy(standard::plates),
     },
     Section {
         title: "§9: the quartic, its modes and the margins (Figs 27–35)",
-        plates: quartic::plates,
+        plates: Figures::FromStudy(quartic::plates),
     },
     Section {
         title: "§10: taper (Fig 36)",
-        plates: taper::plates,
+        plates: Figures::FromStudy(taper::plates),
     },
     Section {
         title: "§11: responses (Figs 37–38)",
-        plates: responses::plates,
+        plates: Figures::FromStudy(responses::plates),
     },
 ];

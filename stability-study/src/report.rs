@@ -5,6 +5,7 @@
 //! μ₁ ([`crate::summary`]), the note's conclusions swept over the unstated
 //! inputs ([`crate::conclusions`]) and how sure the headlines are
 //! ([`crate::certainty`]); then `summary.json` ([`Report::summary_json`]).
+//! Figures that need no study (Fig 1) are drawn before it.
 //! The caller is told of each step as it begins and ends, and handed each
 //! section's figures when drawn, so that a front end shows its progress
 //! and writes the first files early.
@@ -13,7 +14,7 @@ use crate::certainty::Certainty;
 use crate::conclusions::{self, Judged};
 use crate::summary::{self, Findings};
 use crate::tail::TailNeeded;
-use crate::{Plate, SECTIONS, Study};
+use crate::{Figures, Plate, SECTIONS, Study};
 use stability_io::diag::InputError;
 
 /// The title of §10 (ours), in the progress and on the page.
@@ -50,6 +51,19 @@ impl<E> From<E> for Stopped<E> {
     }
 }
 
+/// The study, computed (and told to `on`) when first asked for.
+fn computed<'s, E>(
+    study: &'s mut Option<Study>,
+    on: &mut impl FnMut(Step<'_>) -> Result<(), E>,
+) -> Result<&'s Study, E> {
+    if study.is_none() {
+        on(Step::Begins("the 45° and 60° deltas across Mach number"))?;
+        *study = Some(Study::new());
+        on(Step::Done)?;
+    }
+    Ok(study.get_or_insert_with(Study::new))
+}
+
 /// The note's study, computed whole.
 pub struct Report {
     /// The note's sections and §10 (ours), in order: each its title and
@@ -77,17 +91,26 @@ impl Report {
     pub fn compute<E>(mut on: impl FnMut(Step<'_>) -> Result<(), E>) -> Result<Report, Stopped<E>> {
         std::thread::scope(|scope| {
             let sizing = scope.spawn(TailNeeded::ours);
-            on(Step::Begins("the 45° and 60° deltas across Mach number"))?;
-            let study = Study::new();
-            on(Step::Done)?;
+            let mut study = None;
             let mut sections = Vec::new();
             for section in &SECTIONS {
-                on(Step::Begins(section.title))?;
-                let plates = (section.plates)(&study);
+                let plates = match section.plates {
+                    Figures::Alone(draw) => {
+                        on(Step::Begins(section.title))?;
+                        draw()
+                    }
+                    Figures::FromStudy(draw) => {
+                        let study = computed(&mut study, &mut on)?;
+                        on(Step::Begins(section.title))?;
+                        draw(study)
+                    }
+                };
                 on(Step::Drew(&plates))?;
                 sections.push((section.title, plates));
                 on(Step::Done)?;
             }
+            computed(&mut study, &mut on)?;
+            let study = study.unwrap_or_default();
             on(Step::Begins(TAIL_TITLE))?;
             let tail = sizing
                 .join()

@@ -207,7 +207,7 @@ fn contents(write: &Write<'_>, out: &Path, bar: &ProgressBar) -> Result<(usize, 
 /// What the terminal shows of the findings: each wing's intervals and the
 /// worst case of its largest μ₁ (a Mach number where none meets the
 /// standard is the worst), then each conclusion's verdict.
-fn terminal_summary(f: &Findings, judged: &[Judged]) -> String {
+pub fn terminal_summary(f: &Findings, judged: &[Judged]) -> String {
     let mut text = String::new();
     for (k, w) in f.wings.iter().enumerate() {
         text.push_str(&format!(
@@ -237,4 +237,53 @@ fn terminal_summary(f: &Findings, judged: &[Judged]) -> String {
         ));
     }
     text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The temporary directories of runs beside `out`.
+    fn temporaries(out: &Path) -> Vec<std::path::PathBuf> {
+        let dir = out.parent().unwrap();
+        std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.as_path() != out)
+            .collect()
+    }
+
+    /// A file saved into the report while a run writes the new one: the
+    /// run refuses at the swap, naming it, and removes nothing — the
+    /// previous report and the file stay, no temporary is left; with the
+    /// file moved away the report is replaced.
+    #[test]
+    fn a_file_saved_during_a_run_is_refused_at_the_swap() {
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("report");
+        write_report(&out, |write| write("index.html", b"the first")).unwrap();
+        let saved = out.join("notes.txt");
+        let err = write_report(&out, |write| {
+            write("index.html", b"the second")?;
+            std::fs::write(&saved, "saved during the run").unwrap();
+            Ok(())
+        })
+        .unwrap_err()
+        .to_string();
+        assert!(
+            err.contains("will not replace") && err.contains("`notes.txt`"),
+            "{err}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(&saved).unwrap(),
+            "saved during the run"
+        );
+        let page = std::fs::read_to_string(out.join("index.html")).unwrap();
+        assert_eq!(page, "the first");
+        assert!(temporaries(&out).is_empty(), "{:?}", temporaries(&out));
+        std::fs::remove_file(&saved).unwrap();
+        write_report(&out, |write| write("index.html", b"the third")).unwrap();
+        let page = std::fs::read_to_string(out.join("index.html")).unwrap();
+        assert_eq!(page, "the third");
+    }
 }
