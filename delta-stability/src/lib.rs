@@ -1,7 +1,9 @@
 //! The `delta-stability` program's library: the subcommands, their pages
-//! on the terminal, plots and the report. The files are read and written
-//! by [`stability_io`], the computations are [`stability_core`]'s; the
-//! binary (`src/main.rs`) is a thin clap front end.
+//! on the terminal, and the reports' pages and folders. The files are read
+//! and written by [`stability_io`] (figures drawn by [`stability_io::plot`]),
+//! the computations are [`stability_core`]'s and, for the note's study,
+//! [`stability_study`]'s; the binary (`src/main.rs`) is a thin clap front
+//! end.
 
 pub mod args;
 pub mod cmd;
@@ -10,7 +12,6 @@ pub mod engineering;
 pub mod output;
 pub mod overwrite;
 pub mod page;
-pub mod plot;
 pub mod report;
 pub mod state_space;
 

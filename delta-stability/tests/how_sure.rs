@@ -9,7 +9,6 @@
 mod common;
 
 use common::{json, run_ok};
-use delta_stability::report::certainty::{Answer, Claim, HEADLINES, SAMPLES, SEED};
 use rand::rngs::ChaCha12Rng;
 use rand::{RngExt, SeedableRng};
 use rand_distr::{Distribution, Triangular};
@@ -17,6 +16,7 @@ use stability_core::case::{Case, DampingModel, evaluate_harmonic};
 use stability_core::criteria::Verdict;
 use stability_core::lifting_surface::Harmonic;
 use stability_core::study::report_wing;
+use stability_study::certainty::{Answer, Claim, HEADLINES, SAMPLES, SEED};
 
 #[test]
 fn the_sections_counts_are_the_uncertainty_commands() {

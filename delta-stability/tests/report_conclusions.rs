@@ -7,12 +7,13 @@
 
 mod common;
 
-use common::{Scratch, path, run_ok, stdout};
-use delta_stability::report::Study;
-use delta_stability::report::conclusions::{Agreement, CONCLUSIONS, Judged, judge_all};
-use delta_stability::report::study::Assumption;
-use delta_stability::report::summary::{Findings, Worst};
+use delta_stability::cmd::report::terminal_summary;
+use delta_stability::report::html::{DOCS, index_html};
 use stability_core::study::intervals;
+use stability_study::Study;
+use stability_study::conclusions::{Agreement, CONCLUSIONS, Judged};
+use stability_study::study::Assumption;
+use stability_study::summary::{Findings, Worst};
 
 /// The verdict each conclusion gets on our models, by id — the one place
 /// they are written. The tolerance of each is its own, stated in
@@ -92,15 +93,16 @@ fn expected(id: &str) -> Agreement {
         .1
 }
 
+/// The tests share one computation of the study, whole
+/// ([`common::report`]): what `delta-stability report` writes.
 #[test]
 fn each_conclusions_verdict_is_the_expected_one() {
-    let findings = Findings::new(Study::new());
-    let judged = judge_all(&findings);
+    let judged = &common::report().judged;
     // the table and the conclusions are the same set
     assert_eq!(judged.len(), CONCLUSIONS.len());
     assert_eq!(EXPECTED.len(), CONCLUSIONS.len(), "a stale row in EXPECTED");
     let mut reversed = Vec::new();
-    for j in &judged {
+    for j in judged {
         let c = j.conclusion;
         let want = expected(c.id);
         if j.assessment.agreement != want {
@@ -127,7 +129,7 @@ fn each_conclusions_verdict_is_the_expected_one() {
 /// the declaration is checked, not trusted.
 #[test]
 fn a_conclusion_not_swept_does_not_depend_on_the_unstated_inputs() {
-    let ours = Findings::new(Study::new());
+    let ours = &common::report().findings;
     let far = Assumption::ALL
         .iter()
         .fold(ours.assumed(), |a, x| x.set(a, x.range().1));
@@ -138,7 +140,7 @@ fn a_conclusion_not_swept_does_not_depend_on_the_unstated_inputs() {
         .collect();
     assert!(!independent.is_empty());
     for c in independent {
-        assert_eq!((c.assess)(&ours), (c.assess)(&other), "{}", c.id);
+        assert_eq!((c.assess)(ours), (c.assess)(&other), "{}", c.id);
     }
     // while one that is swept does change there (ω̄ ≈ √(−m_w/(μ₁i_B)))
     let swept = CONCLUSIONS
@@ -146,7 +148,7 @@ fn a_conclusion_not_swept_does_not_depend_on_the_unstated_inputs() {
         .find(|c| c.id == "omega-maximum")
         .unwrap();
     assert_ne!(
-        (swept.assess)(&ours).computed,
+        (swept.assess)(ours).computed,
         (swept.assess)(&other).computed
     );
 }
@@ -174,7 +176,7 @@ fn assert_is_computed(j: &Judged) {
 /// the standard, not the smallest finite value elsewhere.
 #[test]
 fn a_mach_number_without_any_mu1_is_the_worst_case() {
-    let findings = Findings::new(Study::new());
+    let findings = &common::report().findings;
     let m = findings.max_mu1(0);
     let (ms, none): (Vec<f64>, Vec<bool>) =
         m.by_mach.iter().map(|(x, v)| (*x, v.is_none())).unzip();
@@ -189,18 +191,18 @@ fn a_mach_number_without_any_mu1_is_the_worst_case() {
     }
 }
 
-/// `report --out` somewhere nested: summary.json's conclusions have the
-/// keys scripts read first, the wings keep theirs and say their worst case
-/// (null where no μ₁ meets the standard, as the terminal says); the page's
-/// contents link to the conclusions and every section, and every link and
-/// anchor resolves.
+/// What `report` writes of the study (summary.json's text, the page and
+/// the terminal's summary, each made as the command makes them; cli.rs
+/// runs the command): summary.json's conclusions have the keys scripts
+/// read first, the wings keep theirs and say their worst case (null where
+/// no μ₁ meets the standard, as the terminal says); the page's contents
+/// link to the conclusions and every section, and every link and anchor
+/// resolves.
 #[test]
 fn the_report_writes_its_conclusions_worst_case_and_contents() {
-    let dir = Scratch::new();
-    let out = dir.path().join("x/y");
-    let run = run_ok(&["report", "--out", path(&out)]);
-    let terminal = stdout(&run);
-    let text = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    let report = common::report();
+    let terminal = terminal_summary(&report.findings, &report.judged);
+    let text = report.summary_json().unwrap();
     let summary: serde_json::Value = serde_json::from_str(&text).unwrap();
     let conclusions = summary["conclusions"].as_array().unwrap();
     assert_eq!(conclusions.len(), CONCLUSIONS.len());
@@ -243,13 +245,23 @@ fn the_report_writes_its_conclusions_worst_case_and_contents() {
             "{terminal}"
         );
     }
-    assert_page_contents(
-        &std::fs::read_to_string(out.join("index.html")).unwrap(),
-        &out,
+    let page = index_html(
+        &report.sections,
+        &report.judged,
+        Some((&report.sure, &report.sure_plate)),
     );
+    let mut files: Vec<String> = report
+        .plates()
+        .flat_map(|p| ["svg", "csv"].map(|e| format!("{}.{e}", p.name())))
+        .collect();
+    files.extend(DOCS.map(|(name, _)| name.to_string()));
+    files.push("summary.json".into());
+    assert_page_contents(&page, &files);
 }
 
-fn assert_page_contents(html: &str, out: &std::path::Path) {
+/// The page's contents and links: `files`, the report's files, are what
+/// its links may name.
+fn assert_page_contents(html: &str, files: &[String]) {
     let attr = |name: &str| -> Vec<String> {
         html.split(&format!("{name}=\""))
             .skip(1)
@@ -258,7 +270,7 @@ fn assert_page_contents(html: &str, out: &std::path::Path) {
     };
     let ids = attr("id");
     let hrefs = attr("href");
-    for section in 1..=delta_stability::report::SECTIONS.len() {
+    for section in 1..=stability_study::SECTIONS.len() {
         assert!(
             hrefs.contains(&format!("#section-{section}")),
             "section {section}"
@@ -276,7 +288,7 @@ fn assert_page_contents(html: &str, out: &std::path::Path) {
                 !t.contains("://") && !t.starts_with('/') && !t.starts_with(".."),
                 "{t}"
             );
-            assert!(out.join(t).is_file(), "{t} is not in the report");
+            assert!(files.contains(t), "{t} is not in the report");
         }
     }
 }

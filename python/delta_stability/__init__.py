@@ -20,7 +20,9 @@ arrays in and out. Equation numbers are the note's.
   :func:`lifting_surface` (the doublet-lattice method);
 - :func:`uncertainty` — the probability of meeting the §8 standard, of each
   MIL-F-8785C level and of a divergence when the inputs are uncertain, with
-  Sobol indices (``delta-stability uncertainty``), as a pandas DataFrame.
+  Sobol indices (``delta-stability uncertainty``), as a pandas DataFrame;
+- :func:`report` — the note's whole study (``delta-stability report``): its
+  ``summary.json`` and figures written into a folder, the summary returned.
 
 Inputs are read by the command line's own readers: a path to a TOML file or
 a dict of the same shape, and errors are :class:`InputError` (a
@@ -37,7 +39,7 @@ if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
-    from ._native import Axis, ConfigSource
+    from ._native import Axis, ConfigSource, PathLike
 
 from . import _native
 from ._native import (
@@ -77,6 +79,7 @@ __all__ = [
     "lifting_surface",
     "notations",
     "quartic",
+    "report",
     "response",
     "sensitivity",
     "size_tail",
@@ -259,6 +262,34 @@ def uncertainty(
     df = pd.read_csv(io.StringIO(csv))
     df.attrs["results"] = json.loads(text)
     return df
+
+
+def report(out: Optional[PathLike] = "report", *, figures: bool = True) -> dict:
+    """The note's whole study on its built-in cases: what ``delta-stability
+    report`` computes (``stability-study``, the same library), with the GIL
+    released — the 45° and 60° deltas across Mach number, the note's
+    figures, the findings, the note's ten conclusions judged and swept over
+    the unstated inputs, how sure the two headlines are, and the tail the
+    45° delta needs; it takes as long as the command does.
+
+    With ``out`` (a folder, made if missing) it writes ``summary.json`` —
+    byte for byte the command line's — and, with ``figures``, each figure's
+    ``figNN.svg`` and ``figNN.csv`` (``how-sure``, ``tail-needed``) as the
+    command line draws them; files of those names are replaced, nothing else
+    in the folder is touched. The page ``index.html`` and the replacement of
+    the whole folder at once are the command line's. ``out=None`` writes
+    nothing.
+
+    Returns ``summary.json`` as a dict (its keys in the file's order):
+    ``assumptions``, ``conclusions`` (each with ``claim``, ``section``,
+    ``ours``, ``reproduced``, ``id`` …), ``delta_45`` and ``delta_60``
+    (``unstable_mach``, ``fails_one_cycle_mach``, ``max_mu1_one_cycle`` …),
+    ``how_sure`` and ``tail_needed``. Raises ``OSError`` naming the file
+    that cannot be written.
+    """
+    import json
+
+    return json.loads(_native.report_run(out, figures=figures))
 
 
 def _argument_error(field: str, message: str) -> InputError:

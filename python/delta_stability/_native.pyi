@@ -202,6 +202,11 @@ def uncertainty_run(
     """The raw result of ``delta_stability.uncertainty``: the JSON of
     ``delta-stability uncertainty --json`` and its long CSV."""
 
+def report_run(out: Optional[PathLike], /, *, figures: bool = True) -> str:
+    """The raw result of ``delta_stability.report``: ``summary.json``'s text
+    (written into ``out`` with, given ``figures``, each figure's SVG and
+    CSV)."""
+
 def sweep_columns(
     config: ConfigSource,
     *,

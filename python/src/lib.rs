@@ -18,6 +18,7 @@ mod inputs;
 mod json;
 mod overrides;
 mod quartic;
+mod report;
 mod response;
 mod roots;
 mod sensitivity;
@@ -53,6 +54,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(theories::aero_models, m)?)?;
     m.add_function(wrap_pyfunction!(theories::lifting_surface, m)?)?;
     m.add_function(wrap_pyfunction!(uncertainty::uncertainty_run, m)?)?;
+    m.add_function(wrap_pyfunction!(report::report_run, m)?)?;
     m.add_function(wrap_pyfunction!(panic_for_tests, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

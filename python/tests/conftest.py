@@ -58,6 +58,24 @@ def cli():
     return Cli(_binary())
 
 
+@pytest.fixture(scope="session")
+def cli_report(cli, tmp_path_factory):
+    """The folder of `delta-stability report`: CI's run before the tests
+    (target/ci-report, .ci/run) when it is there and newer than the binary,
+    else one run of the binary, once for the session."""
+    ci = ROOT / "target" / "ci-report"
+    summary = ci / "summary.json"
+    if (
+        "DELTA_STABILITY_BIN" not in os.environ
+        and summary.exists()
+        and summary.stat().st_mtime >= cli.binary.stat().st_mtime
+    ):
+        return ci
+    out = tmp_path_factory.mktemp("cli") / "report"
+    cli.run("report", "--out", out)
+    return out
+
+
 @pytest.fixture(autouse=True)
 def _in_root(monkeypatch):
     """Paths in the tests are relative to the repository's root, as in the

@@ -6,6 +6,7 @@ floats."""
 
 import csv
 import io
+import json
 import math
 
 import numpy as np
@@ -323,3 +324,21 @@ def test_sweep_is_the_cli_csv(cli, tmp_path, case):
                 assert col[i] == pytest.approx(float(row[j]), rel=1e-15), (k, j, i)
             else:
                 assert col[i] == float(row[j]), (k, j, i, col[i], row[j])
+
+
+def test_report_writes_the_command_line_s_summary_and_figures(cli_report, tmp_path):
+    """report(): summary.json byte for byte the command line's (the same
+    library writes both), returned as the file's dict; each figure's SVG and
+    CSV the command line's, and every figure the command line draws."""
+    out = tmp_path / "report"
+    summary = ds.report(out)
+    ours = (out / "summary.json").read_bytes()
+    assert ours == (cli_report / "summary.json").read_bytes()
+    assert summary == json.loads(ours)
+    assert list(summary) == list(json.loads(ours))
+    figures = sorted(p.name for p in out.iterdir() if p.suffix in (".svg", ".csv"))
+    theirs = sorted(p.name for p in cli_report.iterdir() if p.suffix in (".svg", ".csv"))
+    assert figures == theirs and len(figures) >= 80
+    for name in figures:
+        assert (out / name).read_bytes() == (cli_report / name).read_bytes(), name
+    assert sorted(p.name for p in out.iterdir()) == sorted(figures + ["summary.json"])

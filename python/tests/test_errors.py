@@ -182,6 +182,17 @@ def test_missing_files_and_wrong_types():
         ds.damping_derivatives("nonesuch", sweep=45, mach=0.9)
 
 
+def test_report_names_a_folder_it_cannot_make(tmp_path):
+    """report() into a path through a file: an OSError naming the folder,
+    raised before the study is computed."""
+    plain = tmp_path / "plain"
+    plain.write_text("mine")
+    with pytest.raises(OSError) as e:
+        ds.report(plain / "out")
+    assert "plain/out" in str(e.value), e.value
+    assert plain.read_text() == "mine"
+
+
 def _garbage(rng):
     """A random value: numbers of every size and kind, strings, containers."""
     kind = rng.randrange(9)

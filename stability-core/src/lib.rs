@@ -56,8 +56,6 @@ pub use design::{atmosphere, case, examples, flight, study, sweep};
 #[doc(hidden)]
 pub use dynamics::{classical, damp, linear, mode_shape, modes, quartic, response, sensitivity};
 #[doc(hidden)]
-pub use lifting_surface::precomputed as frozen;
-#[doc(hidden)]
 pub use numerics::{display, grid, invalid, memo, roots};
 #[doc(hidden)]
 pub mod configuration {

@@ -1,5 +1,5 @@
 //! The lifting-surface solutions solved ahead of time
-//! (`stability-core/data/lifting-surface-solutions.csv`,
+//! (`stability-study/data/lifting-surface-solutions.csv`,
 //! `lifting_surface::precomputed`): the file is not stale (its
 //! fingerprints are the solvers' own), and a sample of its entries solved
 //! again gives the same numbers — the Mach box's and the near-sonic
@@ -14,7 +14,7 @@ use stability_core::lifting_surface::precomputed::{Precomputed, PrecomputedError
 use stability_core::lifting_surface::solution::{Key, ReducedFrequency, Solver, shape};
 use stability_core::lifting_surface::{Lattice, LatticeSpec, Solution, store};
 
-const FILE: &str = include_str!("../data/lifting-surface-solutions.csv");
+const FILE: &str = include_str!("../../stability-study/data/lifting-surface-solutions.csv");
 
 fn fresh(solver: Solver, wing: &Trapezoid, mach: f64, omega_bar: f64) -> Solution {
     match solver {

@@ -11,6 +11,7 @@
 //! | the `[control]` table (control derivatives) | [`control`] |
 //! | the state-space export: JSON, python-control and MATLAB scripts | [`state_space`] |
 //! | the guard every writer of results passes: no value that is not finite | [`finite`] |
+//! | figures (curves, bands, lines, labels) as SVG and their data as CSV | [`plot`] |
 //!
 //! Every reader checks what it reads: each value finite and within its
 //! range, every name known (a misspelt one gets the nearest valid name),
@@ -28,6 +29,7 @@ pub mod files;
 pub mod finite;
 pub mod input;
 pub mod limits;
+pub mod plot;
 pub mod response;
 pub mod state_space;
 pub mod sweep;

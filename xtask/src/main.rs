@@ -38,11 +38,11 @@ model change and commit it.
 cargo xtask tables [--add | --check]
 
 Solves again every Mach box and near-sonic lattice solution the note's study
-needs and writes them to stability-core/data/lifting-surface-solutions.csv,
+needs and writes them to stability-study/data/lifting-surface-solutions.csv,
 with each solver's fingerprint (a hash of its source; the report preloads
 the file into the store of solutions: stability_core::lifting_surface::
-precomputed): runs `delta-stability report` (release) with its hidden
---no-precomputed --solutions-out FILE. About a quarter of an hour on 2 cores.
+precomputed): computes the study in this process, every solution solved.
+About a quarter of an hour on 2 cores.
 Run it after a change to either solver (the report then refuses the stale
 file and solves afresh), their tables in Mach number or frequency, or the
 study's wings; review the diff.
@@ -101,73 +101,52 @@ fn main() -> ExitCode {
 }
 
 /// The precomputed solutions' file.
-const TABLES: &str = "stability-core/data/lifting-surface-solutions.csv";
+const TABLES: &str = "stability-study/data/lifting-surface-solutions.csv";
 
-/// `cargo xtask tables [--add | --check]` (see USAGE).
+/// `cargo xtask tables [--add | --check]` (see USAGE): the note's study
+/// computed in this process, its Mach box and near-sonic lattice solutions
+/// taken from the store.
 fn tables(root: &Path, mode: Tables) -> Result<(), String> {
-    use stability_core::lifting_surface::precomputed::Precomputed;
+    use stability_core::lifting_surface::precomputed::{Precomputed, SOLVERS};
+    use stability_core::lifting_surface::store;
+    use stability_study::report::Report;
     let path = root.join(TABLES);
     let old = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let parsed = Precomputed::parse(&old);
+    let file = Precomputed::parse(&old);
     if mode == Tables::Check {
-        parsed.as_ref().map_err(|e| format!("{TABLES}: {e}"))?;
+        file.as_ref().map_err(|e| format!("{TABLES}: {e}"))?;
     }
-    let out = std::env::temp_dir().join(format!("xtask-tables-{}", std::process::id()));
-    let solved = out.with_extension("csv");
-    let mut run = std::process::Command::new(env!("CARGO"));
-    run.current_dir(root)
-        .args([
-            "run",
-            "--release",
-            "-q",
-            "-p",
-            "delta-stability",
-            "--",
-            "report",
-            "--out",
-        ])
-        .arg(&out)
-        .arg("--solutions-out")
-        .arg(&solved);
-    if mode == Tables::Afresh {
-        run.arg("--no-precomputed");
+    eprintln!("computing the note's study ({}) …", match mode {
+        Tables::Afresh => "every solution solved: about a quarter of an hour on 2 cores",
+        _ => "the file's solutions preloaded",
+    });
+    let quiet = |_: stability_study::report::Step<'_>| Ok::<(), std::convert::Infallible>(());
+    let report = match mode {
+        Tables::Afresh => Report::compute_afresh(quiet),
+        Tables::Add | Tables::Check => Report::compute(quiet),
+    };
+    if let Err(stability_study::report::Stopped::Study { what, why }) = report {
+        return Err(format!("{what}: {why}"));
     }
-    let status = run
-        .status()
-        .map_err(|e| format!("cannot run delta-stability: {e}"))?;
-    let _ = std::fs::remove_dir_all(&out);
-    if !status.success() {
-        return Err(format!("delta-stability report failed: {status}"));
-    }
-    let text =
-        std::fs::read_to_string(&solved).map_err(|e| format!("{}: {e}", solved.display()))?;
-    let _ = std::fs::remove_file(&solved);
-    let used = Precomputed::parse(&text).map_err(|e| e.to_string())?;
+    let used = store::wing_solutions(&SOLVERS);
     match mode {
         Tables::Check => {
-            let file = parsed.map_err(|e| e.to_string())?;
-            let missing = used
-                .entries()
-                .iter()
-                .filter(|(k, _)| !file.contains(k))
-                .count();
+            let file = file.map_err(|e| e.to_string())?;
+            let missing = used.iter().filter(|(k, _)| !file.contains(k)).count();
             if missing > 0 {
                 return Err(format!(
-                    "{TABLES}: the report solved {missing} solutions the file does not hold: run `cargo xtask tables --add`"
+                    "{TABLES}: the study solved {missing} solutions the file does not hold: run `cargo xtask tables --add`"
                 ));
             }
             println!(
-                "{TABLES}: up to date ({} solutions, the solvers' own fingerprints)",
+                "{TABLES}: up to date ({} solutions, made by the solvers as they are)",
                 file.entries().len()
             );
         }
         Tables::Afresh | Tables::Add => {
-            std::fs::write(&path, &text).map_err(|e| format!("{}: {e}", path.display()))?;
-            println!(
-                "wrote {} ({} solutions)",
-                path.display(),
-                used.entries().len()
-            );
+            let n = used.len();
+            std::fs::write(&path, Precomputed::write(used)).map_err(|e| format!("{}: {e}", path.display()))?;
+            println!("wrote {} ({n} solutions)", path.display());
         }
     }
     Ok(())

@@ -3,7 +3,7 @@
 //! [`ensure_file_contents`], each with the preamble this module owns: whole
 //! files, and README.md's text between its `conclusions` markers (the
 //! paragraph under Fig 33 and the note's conclusions as the report judges
-//! them, `delta_stability::report::readme`), the preamble in the first
+//! them, `stability_study::readme`), the preamble in the first
 //! marker.
 //!
 //! After rust-analyzer's `xtask codegen`: the list of artefacts is
@@ -186,7 +186,7 @@ fn artefacts(root: &Path) -> Result<Vec<Artefact>, String> {
     // The README's figure, Fig 33 as the report draws it, and the text
     // under it: its numbers and the note's conclusions as the report judges
     // them.
-    let readme = delta_stability::report::readme::compute()?;
+    let readme = stability_study::readme::compute()?;
     for (rel, contents) in readme.figures {
         let comment = if rel.ends_with(".svg") {
             Comment::Html
@@ -197,7 +197,7 @@ fn artefacts(root: &Path) -> Result<Vec<Artefact>, String> {
     }
     out.push(Artefact {
         path: README.into(),
-        part: Part::Between(delta_stability::report::readme::MARKER),
+        part: Part::Between(stability_study::readme::MARKER),
         contents: readme.conclusions,
     });
     out.push(Artefact {

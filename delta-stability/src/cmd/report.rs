@@ -1,5 +1,5 @@
 //! `delta-stability report [--out DIR]`: the note's whole study
-//! ([`crate::report`]) written into DIR — figNN.svg and figNN.csv,
+//! ([`stability_study`]) written into DIR — figNN.svg and figNN.csv,
 //! `summary.json`, `index.html` and the documents it links to.
 //!
 //! The files are written into a temporary directory beside DIR, which
@@ -11,20 +11,15 @@
 
 use crate::Failure;
 use crate::output::{AtomicDir, Refused};
-use crate::report::certainty::Certainty;
-use crate::report::conclusions::{self, Judged};
+use crate::report::html;
 use crate::report::manifest::{self, MANIFEST, Manifest};
-use crate::report::summary::{self, Findings};
-use crate::report::tail::TailNeeded;
-use crate::report::{Plate, SECTIONS, Study, html};
-
-/// The progress bar's and the page's title of §10 (ours).
-const TAIL_TITLE: &str = "§10 (ours): the tail the 45° delta needs";
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use stability_core::lifting_surface::precomputed::{self, Precomputed};
-use stability_core::lifting_surface::store;
 use stability_io::diag::IoError;
 use stability_io::files::write_error;
+use stability_io::plot::Plate;
+use stability_study::conclusions::Judged;
+use stability_study::report::{Report, STEPS, Step, Stopped};
+use stability_study::summary::{self, Findings};
 use std::path::Path;
 
 /// DIR may be replaced: it does not exist, or it is a directory holding
@@ -88,15 +83,6 @@ pub struct Args {
     pub class: Option<crate::args::ClassArg>,
     #[command(flatten)]
     pub model: crate::args::ModelArgs,
-    /// Solve every lifting-surface solution afresh instead of taking the
-    /// precomputed ones (`cargo xtask tables`).
-    #[arg(long, hide = true)]
-    pub no_precomputed: bool,
-    /// After the run, write the Mach box and near-sonic lattice solutions
-    /// it used to this file, in the precomputed solutions' form (`cargo
-    /// xtask tables`).
-    #[arg(long, hide = true, value_name = "FILE")]
-    pub solutions_out: Option<String>,
 }
 
 /// A file of the report: its name in DIR and its bytes.
@@ -146,26 +132,13 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     }
     super::report_design::refuse_design_options(args)?;
     let out = Path::new(&args.out);
-    if !args.no_precomputed
-        && let Err(e) = crate::report::study::preload()
-    {
-        eprintln!("warning: {e}");
-    }
-    let bar = progress_bar(SECTIONS.len() + 5);
+    let bar = progress_bar(STEPS);
     let mut done = None;
     write_report(out, |write| {
-        std::thread::scope(|scope| {
-            // §10 (ours) sizes surfaces over Mach with the study's
-            // assumptions (Study::new's, Assumed::ours): begun beside the
-            // study, whose sweeps leave a core idle between their parallel
-            // parts
-            let sizing = scope.spawn(TailNeeded::ours);
-            done = Some(contents(write, out, &bar, sizing)?);
-            Ok(())
-        })
+        done = Some(contents(write, out, &bar)?);
+        Ok(())
     })?;
     bar.finish_and_clear();
-    write_solutions(args.solutions_out.as_deref())?;
     let (figures, summary) = done.unwrap_or_default();
     let text = format!(
         "wrote {figures} figures (SVG and CSV), summary.json and index.html to {}\n{summary}",
@@ -174,115 +147,61 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     crate::output::print(&text)
 }
 
-/// With `--solutions-out FILE`, the Mach box and near-sonic lattice
-/// solutions the run used written there, in the precomputed solutions'
-/// form (`cargo xtask tables`).
-fn write_solutions(path: Option<&str>) -> Result<(), Failure> {
-    let Some(path) = path else {
-        return Ok(());
-    };
-    let text = Precomputed::write(store::wing_solutions(&precomputed::SOLVERS));
-    std::fs::write(path, text).map_err(|e| Failure::Io(write_error(Path::new(path), &e)))
-}
-
-/// The note's report written through `write`: its figures' count and the
-/// terminal's summary. `sizing` is §10 (ours), computed beside the study.
+/// The note's report ([`Report::compute`]) written through `write`, each
+/// figure as soon as it is drawn, the bar showing each step: its figures'
+/// count and the terminal's summary.
 fn contents(
     write: &Write<'_>,
     out: &Path,
     bar: &ProgressBar,
-    sizing: std::thread::ScopedJoinHandle<'_, Result<TailNeeded, String>>,
 ) -> Result<(usize, String), Failure> {
-    bar.set_message("the 45° and 60° deltas across Mach number");
-    let study = Study::compute();
-    bar.inc(1);
-    let mut sections = Vec::new();
-    for section in &SECTIONS {
-        bar.set_message(section.title);
-        let plates = (section.plates)(&study);
-        for p in &plates {
-            write_plate(write, out, p)?;
+    let on = |step: Step<'_>| -> Result<(), Failure> {
+        match step {
+            Step::Begins(what) => bar.set_message(what.to_string()),
+            Step::Drew(plates) => {
+                for p in plates {
+                    write_plate(write, out, p)?;
+                }
+            }
+            Step::Done => bar.inc(1),
         }
-        sections.push((section.title, plates));
-        bar.inc(1);
-    }
-    bar.set_message(TAIL_TITLE);
-    let tail = sizing
-        .join()
-        .unwrap_or_else(|_| Err("the sizing's thread panicked".into()))
-        .map_err(|m| Failure::Io(IoError::new("cannot size the tail", out, m)))?;
-    let tail_plate = tail.plate();
-    write_plate(write, out, &tail_plate)?;
-    sections.push((TAIL_TITLE, vec![tail_plate]));
-    bar.inc(1);
-    bar.set_message("summary: intervals and the largest μ₁ (bisection)");
-    let findings = Findings::new(study);
-    findings.max_mu1(0);
-    findings.max_mu1(1);
-    bar.inc(1);
-    bar.set_message("conclusions, swept over i_B and C_L·M²");
-    let judged = conclusions::judge_all(&findings);
-    bar.inc(1);
-    bar.set_message("how sure: the headline conclusions as probabilities");
-    let sure = Certainty::new().map_err(|m| {
-        Failure::Io(IoError::new(
-            "cannot weigh the headline conclusions",
-            out,
-            m,
-        ))
+        Ok(())
+    };
+    let report = Report::compute(on).map_err(|e| match e {
+        Stopped::Caller(f) => f,
+        Stopped::Study { what, why } => Failure::Io(IoError::new(what, out, why)),
     })?;
-    let plate = sure.plate();
-    write_plate(write, out, &plate)?;
-    let summary = summary_with(summary::summary_json(&findings, &judged), &sure, &tail)?;
-    let json = serde_json::to_string_pretty(&summary).unwrap_or_default();
-    write("summary.json", json.as_bytes())?;
+    if let Some(Err(stale)) = &report.precomputed {
+        bar.suspend(|| eprintln!("warning: {stale} (the study solved them)"));
+    }
+    write("summary.json", report.summary_json()?.as_bytes())?;
     write(
         "index.html",
-        html::index_html(&sections, &judged, Some((&sure, &plate))).as_bytes(),
+        html::index_html(
+            &report.sections,
+            &report.judged,
+            Some((&report.sure, &report.sure_plate)),
+        )
+        .as_bytes(),
     )?;
     for (name, text) in html::DOCS {
         write(name, text.as_bytes())?;
     }
-    let figures = 1 + sections.iter().map(|(_, p)| p.len()).sum::<usize>();
-    let mut text = terminal_summary(&findings, &judged);
-    text.push_str(&format!("  the note's question: {}\n", tail.sentence()));
-    for a in &sure.answers {
+    let mut text = terminal_summary(&report.findings, &report.judged);
+    text.push_str(&format!(
+        "  the note's question: {}\n",
+        report.tail.sentence()
+    ));
+    for a in &report.sure.answers {
         text.push_str(&format!("  how sure: {}\n", a.sentence()));
     }
-    Ok((figures, text))
-}
-
-/// summary.json: the findings and conclusions, then the section "how
-/// sure" under `how_sure` ([`crate::report::certainty::CertaintyJson`]).
-#[derive(serde::Serialize)]
-struct SummaryWithHowSure<'a> {
-    #[serde(flatten)]
-    summary: summary::SummaryJson<'a>,
-    how_sure: crate::report::certainty::CertaintyJson,
-    /// §10 (ours): the smallest tailplane and foreplane meeting the
-    /// standard ([`crate::report::tail`]).
-    tail_needed: crate::report::tail::TailJson,
-}
-
-/// [`SummaryWithHowSure`], every number checked finite.
-fn summary_with<'a>(
-    summary: summary::SummaryJson<'a>,
-    sure: &Certainty,
-    tail: &TailNeeded,
-) -> Result<SummaryWithHowSure<'a>, Failure> {
-    let s = SummaryWithHowSure {
-        summary,
-        how_sure: sure.json(),
-        tail_needed: tail.json(),
-    };
-    crate::output::finite("summary.json", &s)?;
-    Ok(s)
+    Ok((report.plates().count(), text))
 }
 
 /// What the terminal shows of the findings: each wing's intervals and the
 /// worst case of its largest μ₁ (a Mach number where none meets the
 /// standard is the worst), then each conclusion's verdict.
-fn terminal_summary(f: &Findings, judged: &[Judged]) -> String {
+pub fn terminal_summary(f: &Findings, judged: &[Judged]) -> String {
     let mut text = String::new();
     for (k, w) in f.wings.iter().enumerate() {
         text.push_str(&format!(
@@ -312,4 +231,53 @@ fn terminal_summary(f: &Findings, judged: &[Judged]) -> String {
         ));
     }
     text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The temporary directories of runs beside `out`.
+    fn temporaries(out: &Path) -> Vec<std::path::PathBuf> {
+        let dir = out.parent().unwrap();
+        std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.as_path() != out)
+            .collect()
+    }
+
+    /// A file saved into the report while a run writes the new one: the
+    /// run refuses at the swap, naming it, and removes nothing — the
+    /// previous report and the file stay, no temporary is left; with the
+    /// file moved away the report is replaced.
+    #[test]
+    fn a_file_saved_during_a_run_is_refused_at_the_swap() {
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("report");
+        write_report(&out, |write| write("index.html", b"the first")).unwrap();
+        let saved = out.join("notes.txt");
+        let err = write_report(&out, |write| {
+            write("index.html", b"the second")?;
+            std::fs::write(&saved, "saved during the run").unwrap();
+            Ok(())
+        })
+        .unwrap_err()
+        .to_string();
+        assert!(
+            err.contains("will not replace") && err.contains("`notes.txt`"),
+            "{err}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(&saved).unwrap(),
+            "saved during the run"
+        );
+        let page = std::fs::read_to_string(out.join("index.html")).unwrap();
+        assert_eq!(page, "the first");
+        assert!(temporaries(&out).is_empty(), "{:?}", temporaries(&out));
+        std::fs::remove_file(&saved).unwrap();
+        write_report(&out, |write| write("index.html", b"the third")).unwrap();
+        let page = std::fs::read_to_string(out.join("index.html")).unwrap();
+        assert_eq!(page, "the third");
+    }
 }

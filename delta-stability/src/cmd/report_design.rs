@@ -72,7 +72,7 @@ pub fn run(args: &Args, config: &str) -> Result<(), Failure> {
         .filter_map(|(m, r)| {
             r.as_ref()
                 .err()
-                .map(|e| format!("M = {}: {e}", crate::plot::short(*m)))
+                .map(|e| format!("M = {}: {e}", stability_io::plot::short(*m)))
         })
         .collect();
     if failed.len() == design.points.len() {

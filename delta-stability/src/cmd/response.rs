@@ -11,7 +11,6 @@ use crate::Failure;
 use crate::args::ResponseInput;
 use crate::output::{print, write_set};
 use crate::overwrite::Named;
-use crate::plot::{Figure, Series};
 use stability_core::display::{Num, sig};
 use stability_core::linear::Control;
 use stability_core::response::{Computed, Sample};
@@ -19,6 +18,7 @@ use stability_io::design_point::read_set;
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
 use stability_io::input::DerivativeFile;
+use stability_io::plot::{Figure, Series};
 use stability_io::response::{Disturbance, Given, Spec, control_step, csv, respond};
 use std::path::PathBuf;
 

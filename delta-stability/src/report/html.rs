@@ -4,11 +4,11 @@
 //! written beside it ([`DOCS`]), so the page works wherever `--out` puts
 //! it.
 
-use super::Plate;
-use super::certainty::Certainty;
-use super::conclusions::{Agreement, Judged};
 use stability_core::display::sig;
 use stability_core::study::report_wing;
+use stability_io::plot::Plate;
+use stability_study::certainty::Certainty;
+use stability_study::conclusions::{Agreement, Judged};
 use std::fmt::Write;
 
 /// The documents the page links to, written into the report's `docs/`.
@@ -166,13 +166,13 @@ fn figure(p: &Plate) -> String {
 /// The section "How sure are the headline conclusions?": the inputs'
 /// distributions and their sources, each headline's probabilities by Mach
 /// number with the bounds on "throughout" and the deciding inputs, the
-/// command that reruns it, and the figure ([`super::certainty`]).
+/// command that reruns it, and the figure ([`stability_study::certainty`]).
 fn how_sure(c: &Certainty, plate: &Plate) -> String {
     let mut s = format!(
         "<section id=\"{HOW_SURE}\"><h2>How sure are the headline conclusions?</h2><p>The note answers yes or no; its inputs are not known that well. Here each headline conclusion is a probability under stated distributions of i_B and C_L·M² (which the note does not state), of the c.g., and of the damping theory itself (model-form uncertainty), by {} Owen-scrambled Sobol′ points at each Mach number (seed {}; each 95 % Wilson interval at most ±{}); the deciding inputs by their total Sobol indices for the short period's ζ ({} rows of Saltelli's design), averaged over Mach number.</p>\n",
         c.samples,
-        super::certainty::SEED,
-        super::certainty::percent(
+        stability_study::certainty::SEED,
+        stability_study::certainty::percent(
             stability_core::uncertainty::stats::Z95 * (0.25 / c.samples as f64).sqrt()
         ),
         c.sobol_samples,
@@ -181,7 +181,9 @@ fn how_sure(c: &Certainty, plate: &Plate) -> String {
         let _ = write!(
             s,
             "<h3>{}</h3><p>{}</p><table><tr><th>input</th><th>distribution</th><th>from</th></tr>",
-            esc(&super::certainty::capitalised(a.headline.question)),
+            esc(&stability_study::certainty::capitalised(
+                a.headline.question
+            )),
             esc(&a.sentence())
         );
         for i in &j.inputs {
@@ -209,7 +211,7 @@ const HOW_SURE: &str = "how-sure-section";
 
 /// The page: the introduction, the contents, the conclusions (with how
 /// sure the headline ones are, when `sure` is given), then each section
-/// (its title, from `report::SECTIONS`) with its figures, and the section
+/// (its title, from `stability_study::SECTIONS`) with its figures, and the section
 /// on how sure.
 pub fn index_html(
     sections: &[(&str, Vec<Plate>)],

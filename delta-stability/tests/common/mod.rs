@@ -2,9 +2,11 @@
 //! repository root, running a command and checking its exit status.
 #![allow(dead_code)] // each test binary uses its own part of this module
 
+use stability_study::Report;
 use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use std::sync::OnceLock;
 
 /// The program, run from the repository root (so that `examples/…` paths
 /// resolve). `DELTA_STABILITY_BIN` runs another build of it instead (to see
@@ -107,4 +109,38 @@ pub fn mode_s(v: &serde_json::Value, name: &str) -> (f64, f64) {
         .find(|m| m["name"] == name)
         .unwrap_or_else(|| panic!("no {name} in {v}"));
     (m["re_s"].as_f64().unwrap(), m["im_s"].as_f64().unwrap())
+}
+
+/// The note's study computed whole by the library ([`Report::compute`],
+/// what `delta-stability report` writes), once for the test binary.
+pub fn report() -> &'static Report {
+    static REPORT: OnceLock<Report> = OnceLock::new();
+    REPORT.get_or_init(|| Report::quietly().unwrap_or_else(|e| panic!("{e:?}")))
+}
+
+/// `delta-stability report --out DIR`, run once for the test binary — the
+/// one run of the whole report end to end: DIR, under the target
+/// directory's scratch space (each run replaces it, as a report replaces a
+/// report).
+pub fn note_report() -> &'static Path {
+    static OUT: OnceLock<PathBuf> = OnceLock::new();
+    OUT.get_or_init(|| {
+        let out = Path::new(env!("CARGO_TARGET_TMPDIR")).join("note-report/somewhere/report");
+        run_ok(&["report", "--out", path(&out)]);
+        out
+    })
+}
+
+/// Copies the directory `from`, whole, to `to` (which must not exist).
+pub fn copy_dir(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).expect("create");
+    for entry in std::fs::read_dir(from).expect("read") {
+        let entry = entry.expect("entry");
+        let target = to.join(entry.file_name());
+        if entry.file_type().expect("type").is_dir() {
+            copy_dir(&entry.path(), &target);
+        } else {
+            std::fs::copy(entry.path(), target).expect("copy");
+        }
+    }
 }

@@ -8,12 +8,12 @@
 //! [`stability_core::cap::regions`]), not restated.
 
 use super::{Design, phugoid, short_period, times};
-use crate::plot::short;
-use crate::report::Plate;
 use stability_core::cap::regions;
 use stability_core::criteria::{Category, Level, phugoid_level, short_period_level};
 use stability_core::modes::Mode;
 use stability_io::design_point::Results;
+use stability_io::plot::Plate;
+use stability_io::plot::short;
 
 /// The page's sections of figures, in order: each a title and its plates.
 pub fn sections(d: &Design) -> Vec<(&'static str, Vec<Plate>)> {

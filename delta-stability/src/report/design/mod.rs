@@ -16,7 +16,6 @@ pub mod configuration;
 pub mod figures;
 pub mod page;
 
-use crate::plot::{Band, Figure, Series};
 use rayon::prelude::*;
 use stability_core::geometry::sonic_leading_edge_mach;
 use stability_core::grid::grid;
@@ -24,6 +23,7 @@ use stability_core::modes::Mode;
 use stability_io::class::ClassChoice;
 use stability_io::config::Config;
 use stability_io::design_point::{Results, at_mach};
+use stability_io::plot::{Band, Figure, Series};
 
 /// The default Mach numbers of a design's report: 0.5 to 2.0 in steps of
 /// 0.05, widened (in the same steps) to take in the config's own Mach
@@ -119,11 +119,11 @@ impl Design {
             .runs(f)
             .into_iter()
             .map(|(what, a, b)| match a == b {
-                true => format!("{what} at M {}", crate::plot::short(a)),
+                true => format!("{what} at M {}", stability_io::plot::short(a)),
                 false => format!(
                     "{what} for M {}–{}",
-                    crate::plot::short(a),
-                    crate::plot::short(b)
+                    stability_io::plot::short(a),
+                    stability_io::plot::short(b)
                 ),
             })
             .collect();
@@ -133,29 +133,29 @@ impl Design {
     /// A figure against Mach number, named `file`, with the regimes behind
     /// it: the bands where the design's coefficients or damping
     /// derivatives are faired between theories
-    /// ([`super::regimes::shaded`]), the damping theory of each Mach
+    /// ([`stability_study::regimes::shaded`]), the damping theory of each Mach
     /// number named along the top, and where the leading edge turns sonic.
     pub fn figure(&self, title: &str, y: &str) -> Figure {
         let mut fig = Figure::new("design", title, "Mach number M", y);
         let planform = self.cfg.case.planform;
-        let mut joins = super::regimes::coefficient_joins(
+        let mut joins = stability_study::regimes::coefficient_joins(
             self.results().map(|(_, r)| &r.result),
             std::slice::from_ref(&planform),
         );
-        joins.extend(super::regimes::model_damping_joins(
+        joins.extend(stability_study::regimes::model_damping_joins(
             self.cfg.case.damping,
             &planform,
         ));
         let (lo, hi) = self.mach_range();
-        let joins: Vec<(f64, f64)> = super::regimes::merged(joins)
+        let joins: Vec<(f64, f64)> = stability_study::regimes::merged(joins)
             .into_iter()
             .filter(|&(a, b)| b > lo && a < hi)
             .collect();
-        fig = super::regimes::shaded(fig, &joins);
+        fig = stability_study::regimes::shaded(fig, &joins);
         fig.regions = self.theory_regions();
         let edge = sonic_leading_edge_mach(self.cfg.case.planform.sweep_le);
         if edge > lo && edge < hi {
-            fig.markers.push(crate::plot::VerticalLine {
+            fig.markers.push(stability_io::plot::VerticalLine {
                 x: edge,
                 label: "leading edge sonic".into(),
             });

@@ -6,13 +6,13 @@
 //! link is relative to the page.
 
 use super::{Design, phugoid, short_period, times};
-use crate::plot::{csv_field, num, short};
-use crate::report::Plate;
 use stability_core::analysis::Timebase;
 use stability_core::display::sig;
 use stability_core::modes::Mode;
 use stability_core::verdict::Overall;
 use stability_io::design_point::Results;
+use stability_io::plot::Plate;
+use stability_io::plot::{csv_field, num, short};
 use std::fmt::Write;
 
 fn esc(t: &str) -> String {

@@ -7,13 +7,16 @@
 //! the unstated inputs, which the conclusions are swept over — and works out
 //! what it is asked: what needs no further case is found at once, what
 //! evaluates further cases (the largest μ₁, other c.g. positions, sweeps and
-//! planforms) when first asked, once.
+//! planforms) when first asked, once. [`summary_file`] writes the file
+//! whole, with how sure the headlines are and the tail the 45° delta needs.
 
 use super::Study;
 use super::conclusions::{ConclusionJson, Judged, conclusions_json};
 use super::quartic::cycles;
 use super::standard::{CGS, margin};
 use super::study::{Assumed, WINGS};
+use crate::certainty::{Certainty, CertaintyJson};
+use crate::tail::{TailJson, TailNeeded};
 use rayon::prelude::*;
 use serde::Serialize;
 use stability_core::case::{Case, CaseResult};
@@ -23,6 +26,7 @@ use stability_core::faired::{LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM};
 use stability_core::geometry::{Planform, Size, cropped_h};
 use stability_core::response::TwoDof;
 use stability_core::study::{grid, intervals, max_mu1_one_cycle, report_wing};
+use stability_io::diag::InputError;
 use std::sync::OnceLock;
 
 /// The Mach numbers (0.5 to 2, 0.05 apart) at which the largest μ₁ meeting
@@ -468,6 +472,35 @@ pub fn summary_json<'a>(f: &'a Findings, judged: &[Judged]) -> SummaryJson<'a> {
         delta_45: wing_json(f, 0),
         delta_60: wing_json(f, 1),
     }
+}
+
+/// `summary.json` whole: the findings and conclusions ([`SummaryJson`]),
+/// then the section "how sure" under `how_sure` ([`CertaintyJson`]) and
+/// §10 (ours), the smallest tailplane and foreplane meeting the standard
+/// ([`crate::tail`]), under `tail_needed`.
+#[derive(Serialize)]
+pub struct SummaryWithHowSure<'a> {
+    #[serde(flatten)]
+    summary: SummaryJson<'a>,
+    how_sure: CertaintyJson,
+    tail_needed: TailJson,
+}
+
+/// `summary.json`'s text (pretty JSON), every number checked finite
+/// ([`stability_io::finite::guard`]: the error names the file).
+pub fn summary_file(
+    f: &Findings,
+    judged: &[Judged],
+    sure: &Certainty,
+    tail: &TailNeeded,
+) -> Result<String, InputError> {
+    let s = SummaryWithHowSure {
+        summary: summary_json(f, judged),
+        how_sure: sure.json(),
+        tail_needed: tail.json(),
+    };
+    stability_io::finite::guard("summary.json", &s)?;
+    Ok(serde_json::to_string_pretty(&s).unwrap_or_default())
 }
 
 /// Mach intervals in words: `1.16–2.00, 2.10` or `none`.

@@ -7,7 +7,8 @@
 //! (`regions`). How it is drawn — the series' styles, the legend below the
 //! frame, the off-scale notes — is the private module `svg`'s; the CSV
 //! ([`Figure::to_csv`]) holds the curves' data only, its numbers written by
-//! [`num`].
+//! [`num`]. A [`Plate`] is a figure of a report with its caption and
+//! file name.
 
 mod legend;
 mod svg;
@@ -259,11 +260,58 @@ impl Figure {
     }
 }
 
-/// A CSV number: [`stability_io::csv::number`], the one rule for every
+/// One figure of a report, with its caption for the page: written as
+/// `figNN.svg` and `figNN.csv` (the note's figure NN), or under a name of
+/// its own.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plate {
+    pub figure: Figure,
+    pub caption: String,
+    /// The files' name, when not the note's `figNN` ([`Plate::named`]).
+    pub file: Option<String>,
+}
+
+impl Plate {
+    pub fn new(figure: Figure, caption: impl Into<String>) -> Plate {
+        Plate {
+            figure,
+            caption: caption.into(),
+            file: None,
+        }
+    }
+
+    /// A figure written as `file.svg` and `file.csv` (a design report's
+    /// `cycles-to-half`, say).
+    pub fn named(file: &str, figure: Figure, caption: impl Into<String>) -> Plate {
+        Plate {
+            file: Some(file.to_string()),
+            ..Plate::new(figure, caption)
+        }
+    }
+
+    /// The file name without extension: `fig02`, `fig33` (or its own).
+    pub fn name(&self) -> String {
+        if let Some(f) = &self.file {
+            return f.clone();
+        }
+        format!("fig{:0>2}", self.figure.id)
+    }
+
+    /// The figure's two files, `figNN.svg` and `figNN.csv`.
+    pub fn files(&self) -> Result<[(String, Vec<u8>); 2], String> {
+        let name = self.name();
+        Ok([
+            (format!("{name}.svg"), self.figure.to_svg()?.into_bytes()),
+            (format!("{name}.csv"), self.figure.to_csv().into_bytes()),
+        ])
+    }
+}
+
+/// A CSV number: [`crate::csv::number`], the one rule for every
 /// number the program writes in CSV (12 significant digits, the shortest
 /// decimal that reads back, exponent form for the very small and large,
 /// empty where not finite).
-pub use stability_io::csv::number as num;
+pub use crate::csv::number as num;
 
 /// A number written on a figure or its caption: [`LABEL_DIGITS`]
 /// significant digits, shortest form (12.3, 1.2, 100).
@@ -271,7 +319,7 @@ pub fn short(v: f64) -> String {
     format!("{}", stability_core::display::round_to(v, LABEL_DIGITS))
 }
 
-pub use stability_io::csv::field as csv_field;
+pub use crate::csv::field as csv_field;
 
 #[cfg(test)]
 mod tests {

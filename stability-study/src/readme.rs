@@ -54,7 +54,12 @@ impl Judgement {
 
 /// The study, Fig 33 and the findings the text is written from.
 pub fn compute() -> Result<Readme, String> {
-    let findings = Findings::new(Study::new());
+    of(&Findings::new(Study::new()))
+}
+
+/// README.md's figure and text from `findings` (ours: a [`Study::new`]'s,
+/// as the report's).
+pub fn of(findings: &Findings) -> Result<Readme, String> {
     let plate = quartic::fig33(&findings.study);
     let figures = vec![
         ("docs/figures/fig33.svg".to_string(), plate.figure.to_svg()?),
@@ -64,12 +69,12 @@ pub fn compute() -> Result<Readme, String> {
         .iter()
         .map(|c| Judgement {
             conclusion: c,
-            assessment: (c.assess)(&findings),
+            assessment: (c.assess)(findings),
         })
         .collect();
     let heavy = heavy_60(&findings.study);
     let conclusions = [
-        wrap(&figure_paragraph(&findings, &heavy), ""),
+        wrap(&figure_paragraph(findings, &heavy), ""),
         wrap(&verdicts_paragraph(&judged), ""),
         format!(
             "<details>\n<summary>The {} conclusions: the note's claim and our numbers</summary>\n",

@@ -24,11 +24,11 @@
 //! parameter (1) or time (37–38).
 
 use super::Study;
-use crate::plot::{Band, Figure, VerticalLine};
 use stability_core::aero::{Origin, defaults};
 use stability_core::case::{CaseResult, DampingModel};
 use stability_core::faired::{self, RegimeKind};
 use stability_core::geometry::{Planform, Size, sonic_leading_edge_mach};
+use stability_io::plot::{Band, Figure, VerticalLine};
 
 /// What a figure's curves are built from, so which joins it shows.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -71,7 +71,7 @@ pub(crate) fn damping_joins(sweeps: &[f64]) -> Vec<(f64, f64)> {
 
 /// The damping derivatives' joins of the fairing `model` on `planform`
 /// (none for a single theory).
-pub(crate) fn model_damping_joins(model: DampingModel, planform: &Planform) -> Vec<(f64, f64)> {
+pub fn model_damping_joins(model: DampingModel, planform: &Planform) -> Vec<(f64, f64)> {
     let regimes = match model {
         DampingModel::Faired => faired::regimes(planform),
         DampingModel::FairedTheories => faired::theories::regimes(planform),
@@ -87,7 +87,7 @@ pub(crate) fn model_damping_joins(model: DampingModel, planform: &Planform) -> V
 /// The coefficients' joins, as the results (of the wings `planforms`)
 /// had them: the methods' band, the default model's (and the lifting
 /// surface's) join through the sonic point, `faired-theories`' joins.
-pub(crate) fn coefficient_joins<'a>(
+pub fn coefficient_joins<'a>(
     results: impl Iterator<Item = &'a CaseResult>,
     planforms: &[Planform],
 ) -> Vec<(f64, f64)> {
@@ -117,7 +117,7 @@ pub(crate) fn coefficient_joins<'a>(
 
 /// The union of intervals, as disjoint intervals in order (touching ones
 /// joined).
-pub(crate) fn merged(mut joins: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+pub fn merged(mut joins: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
     joins.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut out: Vec<(f64, f64)> = Vec::new();
     for (a, b) in joins {

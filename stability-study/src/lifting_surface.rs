@@ -10,11 +10,11 @@
 //! c.g.: the choices are stated in the captions.
 
 use super::Plate;
-use crate::plot::{Figure, Series};
 use rayon::prelude::*;
 use stability_core::figures::{
     DampingInPitchPoint, damping_in_pitch_against_aspect_ratio, lift_slope_against_aspect_ratio,
 };
+use stability_io::plot::{Figure, Series};
 use std::f64::consts::PI;
 
 /// Fig 4's leading-edge sweeps (degrees) and taper.

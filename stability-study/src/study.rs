@@ -4,13 +4,13 @@
 //! other values of the inputs the note does not state ([`Assumed`]), which
 //! the conclusions are swept over.
 
-use crate::plot::{Figure, Series};
 use rayon::prelude::*;
 use stability_core::case::{Case, CaseResult, DampingModel, evaluate_harmonic};
 use stability_core::damping::Theory;
 use stability_core::faired::LIFTING_SURFACE_LIMIT;
 use stability_core::lifting_surface::Harmonic;
 use stability_core::study::{grid, report_wing};
+use stability_io::plot::{Figure, Series};
 
 /// The note's two wings, by leading-edge sweep (degrees).
 pub const WINGS: [f64; 2] = [45.0, 60.0];
@@ -253,7 +253,7 @@ impl Study {
 /// (`cargo xtask tables`): the Mach box's and the near-sonic lattice's,
 /// which take seconds each to solve.
 pub const PRECOMPUTED: &str =
-    include_str!("../../../stability-core/data/lifting-surface-solutions.csv");
+    include_str!("../data/lifting-surface-solutions.csv");
 
 /// Puts [`PRECOMPUTED`] into the store of solutions (once per process), so
 /// that the study need not solve them: how many. A stale file (made by

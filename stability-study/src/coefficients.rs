@@ -7,13 +7,13 @@
 use super::regimes::{self, Basis};
 use super::study::{WINGS, machs};
 use super::{Plate, Study};
-use crate::plot::{Figure, Series, VerticalLine, short};
 use rayon::prelude::*;
 use stability_core::aero::defaults;
 use stability_core::case::CaseResult;
 use stability_core::geometry::{Planform, Size};
 use stability_core::study::grid;
 use stability_core::supersonic::wave_drag::{NOTE_RIDGE, fig1_series};
+use stability_io::plot::{Figure, Series, VerticalLine, short};
 
 type Of = fn(&CaseResult) -> f64;
 
@@ -107,8 +107,9 @@ pub fn plates(study: &Study) -> Vec<Plate> {
     out
 }
 
-/// Fig 1, the section before the rest of §6 (`super::SECTIONS`).
-pub fn wave_drag_plates(_study: &Study) -> Vec<Plate> {
+/// Fig 1, the section before the rest of §6 ([`crate::SECTIONS`]), drawn
+/// without the study.
+pub fn wave_drag_plates() -> Vec<Plate> {
     vec![fig1()]
 }
 

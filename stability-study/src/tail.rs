@@ -20,7 +20,6 @@
 
 use super::Plate;
 use super::study::{Assumed, mach_fig};
-use crate::plot::Series;
 use rayon::prelude::*;
 use serde::Serialize;
 use stability_core::case::Case;
@@ -28,12 +27,13 @@ use stability_core::configuration::sizing::{Sizing, outcomes_at, size_surface};
 use stability_core::configuration::{Configuration, SurfaceKind};
 use stability_core::display::sig;
 use stability_core::study::report_wing;
+use stability_io::plot::Series;
 use std::sync::Arc;
 
 /// The tailed config whose tailplane is the family.
-pub const TAILED: &str = include_str!("../../../examples/delta-45-tailed.toml");
+pub const TAILED: &str = include_str!("../data/delta-45-tailed.toml");
 /// The canard config whose foreplane is the family.
-pub const CANARD: &str = include_str!("../../../examples/delta-60-canard.toml");
+pub const CANARD: &str = include_str!("../data/delta-60-canard.toml");
 
 /// The Mach numbers the standard must hold at: 0.5 to 2.0, dense where
 /// the tailless wing fails (Fig 33's 0.97 < M₁ < 1.5), sparse elsewhere —
@@ -212,7 +212,7 @@ mod tests {
     use stability_core::verdict::overall;
 
     /// The transonic band where the tailless wing fails (the report's
-    /// full range is the CLI's; this keeps the test short).
+    /// full range is [`machs`]; this keeps the test short).
     const MS: [f64; 3] = [0.97, 1.25, 1.45];
 
     /// The verdict at each of `ms` with the tailplane of the example

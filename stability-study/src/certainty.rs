@@ -23,11 +23,11 @@
 
 use super::Plate;
 use super::conclusions::{ABOUT, MU1_LIMIT};
-use crate::plot::{Band, Figure, Series};
 use serde::Serialize;
 use stability_core::display::sig;
 use stability_core::uncertainty::stats::{Proportion, Z95};
 use stability_core::uncertainty::{Options, Sampling, Study, Summary};
+use stability_io::plot::{Band, Figure, Series};
 
 /// Samples at each Mach number: the 95 % Wilson interval of a probability
 /// is at most ±1.96·√(0.25/8192) = ±1.1 % (binomial, at p = ½; the
@@ -72,7 +72,7 @@ pub const HEADLINES: [Headline; 2] = [
     Headline {
         id: "45-transonic",
         file: "examples/delta-45-how-sure.toml",
-        text: include_str!("../../../examples/delta-45-how-sure.toml"),
+        text: include_str!("../data/delta-45-how-sure.toml"),
         machs: "0.98:1.48:0.02",
         claim: Claim::FailsStandard,
         question: "the probability that the 45° delta at μ₁ = 50 fails the one-cycle standard (0.97 < M < 1.5)",
@@ -81,7 +81,7 @@ pub const HEADLINES: [Headline; 2] = [
     Headline {
         id: "60-mu1-limit",
         file: "examples/delta-60-how-sure.toml",
-        text: include_str!("../../../examples/delta-60-how-sure.toml"),
+        text: include_str!("../data/delta-60-how-sure.toml"),
         machs: "0.5:2:0.05",
         claim: Claim::MeetsStandard,
         question: "the probability that the 60° delta meets the one-cycle standard at μ₁ = 160 (200/1.25, the low end of “about 200”)",

@@ -3,9 +3,9 @@
 //! without z_q, z_ẇ (Fig 38).
 
 use super::{Plate, Study};
-use crate::plot::{Figure, Series};
 use stability_core::response::{Input, Simplifications, StateSpace, TwoDof};
 use stability_core::study::{grid, report_wing};
+use stability_io::plot::{Figure, Series};
 
 pub fn plates(_study: &Study) -> Vec<Plate> {
     vec![fig37(), fig38()]

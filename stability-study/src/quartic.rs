@@ -37,7 +37,7 @@ pub fn plates(study: &Study) -> Vec<Plate> {
 
 /// A figure of the note's two wings with the regimes of the coefficients
 /// and the damping derivatives both: the quartic is built on both.
-fn faired(fig: crate::plot::Figure, study: &Study) -> crate::plot::Figure {
+fn faired(fig: stability_io::plot::Figure, study: &Study) -> stability_io::plot::Figure {
     regimes::faired(fig, study, &WINGS, Basis::Both)
 }
 

@@ -6,10 +6,10 @@
 use super::regimes::{self, Basis};
 use super::study::{WINGS, curve, label, mach_fig};
 use super::{Plate, Study};
-use crate::plot::{Figure, Series};
 use stability_core::case::CaseResult;
 use stability_core::damping::{DampingDerivatives, Fig18, Theory, WingInput, damping_derivatives};
 use stability_core::study::{grid, intervals};
+use stability_io::plot::{Figure, Series};
 
 pub fn plates(study: &Study) -> Vec<Plate> {
     let mut out = vec![fig13()];
