@@ -116,10 +116,13 @@ fn tables(root: &Path, mode: Tables) -> Result<(), String> {
     if mode == Tables::Check {
         file.as_ref().map_err(|e| format!("{TABLES}: {e}"))?;
     }
-    eprintln!("computing the note's study ({}) …", match mode {
-        Tables::Afresh => "every solution solved: about a quarter of an hour on 2 cores",
-        _ => "the file's solutions preloaded",
-    });
+    eprintln!(
+        "computing the note's study ({}) …",
+        match mode {
+            Tables::Afresh => "every solution solved: about a quarter of an hour on 2 cores",
+            _ => "the file's solutions preloaded",
+        }
+    );
     let quiet = |_: stability_study::report::Step<'_>| Ok::<(), std::convert::Infallible>(());
     let report = match mode {
         Tables::Afresh => Report::compute_afresh(quiet),
@@ -145,7 +148,8 @@ fn tables(root: &Path, mode: Tables) -> Result<(), String> {
         }
         Tables::Afresh | Tables::Add => {
             let n = used.len();
-            std::fs::write(&path, Precomputed::write(used)).map_err(|e| format!("{}: {e}", path.display()))?;
+            std::fs::write(&path, Precomputed::write(used))
+                .map_err(|e| format!("{}: {e}", path.display()))?;
             println!("wrote {} ({n} solutions)", path.display());
         }
     }
