@@ -239,6 +239,23 @@ impl DampingModel {
         }
     }
 
+    /// The methods of [`Self::increment`] for `config`, in words (a page's).
+    pub fn increment_methods(self, config: &Configuration) -> String {
+        if self.is_lifting_surface() {
+            format!(
+                "up to M = {} by the multi-surface doublet lattice, from M = {:.4} (where every surface has its Mach box) by the Mach box for every surface with the tail in the wing's downwash, a straight bridge between, linear supersonic theory beyond M = {MACH_RANGE_MAX}",
+                faired::SONIC_JOIN,
+                faired::increment_mach_box_from(config)
+            )
+        } else {
+            format!(
+                "up to M = {} by the multi-surface doublet lattice, from M = {} by linear supersonic theory with the tail in the wing's downwash, faired between",
+                faired::theories::LIFTING_SURFACE_LIMIT,
+                faired::theories::SUPERSONIC_FROM
+            )
+        }
+    }
+
     /// Whether the model is one lifting-surface theory through M = 1
     /// (`faired`, `lifting-surface`, `lifting-surface-frequency`).
     pub fn is_lifting_surface(self) -> bool {
