@@ -1,4 +1,4 @@
-//! "How sure are the headline conclusions?" (issue 23): the note's two
+//! "How sure are the headline conclusions?": the note's two
 //! headline conclusions (Summary; §9, Fig 33) as probabilities, under
 //! stated distributions of the inputs it does not pin down — i_B and
 //! C_L·M² (which it does not state), the c.g. (its Fig 26 moves it) and the

@@ -65,7 +65,7 @@ cargo xtask bench-report
 Times the main job, `delta-stability report` (release), three times on every
 core and three times on one (RAYON_NUM_THREADS=1), each a fresh process
 whose lattice solves start from an empty cache; prints the medians, their
-ratio and the share of the 10 s budget (issue 11). Writes
+ratio and the share of the 10 s budget. Writes
 target/bench/report-time.md.";
 
 fn main() -> ExitCode {

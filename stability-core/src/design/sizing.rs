@@ -1,5 +1,5 @@
 //! Sizing a tailplane (or foreplane) to the note's §8 standard
-//! (`delta-stability size-tail`, issue 21).
+//! (`delta-stability size-tail`).
 //!
 //! The family: the config's surface with its sweep, taper, aspect ratio
 //! and apex fixed and its area S_T varied, every length scaled by

@@ -38,7 +38,7 @@ pub enum DampingModel {
     Faired,
     /// The theories faired through Mach number as the note built its Figs
     /// 19–24, `faired-theories` ([`crate::aerodynamics::models::faired::theories`], the default
-    /// until stop 28): lifting-surface theory at the short period's own ω̄
+    /// before `faired`): lifting-surface theory at the short period's own ω̄
     /// to M = 0.9, Mangler's transonic theory (38)–(40) at M = 1, linear
     /// supersonic theory from M = 1.2 ((36), then the supersonic-edge
     /// theory past the sonic leading edge), joined between by stated
@@ -340,7 +340,7 @@ const FAIRED: Row = Row {
     source: "Albano & Rodden (AIAA J. 7(2), 1969); Pines, Dugundji & Neuringer (J. Aero. Sci. 22(10), 1955); docs/damping-theories.md, \"The faired model\"",
 };
 
-/// The note's fairing of its theories, the default until stop 28.
+/// The note's fairing of its theories, the default before `faired`.
 const FAIRED_THEORIES: Row = Row {
     name: "faired-theories",
     equations: "Figs 19–24",

@@ -1,6 +1,6 @@
 //! The supersonic aerodynamics of a configuration: each surface by the
 //! program's theories, with the wing's downwash at the tailplane and its
-//! lag (issue 21 item 3).
+//! lag.
 //!
 //! - **Each surface** — the wing, a tailplane, a foreplane — by linear
 //!   supersonic theory ([`supersonic::edge_theory`]: eq (36) while its

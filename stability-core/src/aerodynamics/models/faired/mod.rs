@@ -26,7 +26,7 @@
 //!
 //! The note's own construction — the lattice to 0.9, Mangler's theory at
 //! M = 1, linear theory from 1.2 and cubics between — is
-//! `faired-theories` ([`theories`]), the default until stop 28.
+//! `faired-theories` ([`theories`]), the default before `faired`.
 //!
 //! A sweep's (or the report's) frequency iteration
 //! ([`Harmonic::Interpolated`]) interpolates the lattice in ω̄ and the Mach

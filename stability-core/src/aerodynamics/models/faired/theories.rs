@@ -12,8 +12,8 @@
 //! | 1 < M < 1.2 | faired: Mangler's at M = 1 joined to linear theory's at 1.2 | (faired, as above) |
 //! | M ≥ [`SUPERSONIC_FROM`] (1.2) | linear supersonic theory: (36) while the leading edge is subsonic (a cropped wing: its potentials less the tips' corrections, `supersonic::subsonic_edge`), the supersonic-edge theory past it (`supersonic::edge_theory`; continuous at the sonic edge) | the same theory's |
 //!
-//! The bands are where the curve is a guess. Until stop 28 this was the
-//! default `faired`; the default is now one lifting-surface theory through
+//! The bands are where the curve is a guess. Until the lifting surface through M = 1 became
+//! the default `faired`, this was it; the default is now one lifting-surface theory through
 //! M = 1 ([`super`]), and this model is kept for comparison and for the
 //! note's own construction.
 
