@@ -110,6 +110,7 @@ impl Headline {
     /// when `sobol_samples` > 0, again with that many rows of the Saltelli
     /// design (the indices).
     pub fn answer(&'static self, samples: u64, sobol_samples: u64) -> Result<Answer, String> {
+        let _ = crate::study::preload();
         let (study, sampling) = self.study()?;
         let machs = self.mach_numbers();
         let options = Options {
