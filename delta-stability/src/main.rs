@@ -278,17 +278,10 @@ enum Command {
     /// later run once stale). A grid whose file would not fit in the free
     /// space of OUT's file system (or the file-size limit) is refused before
     /// it is written, with the estimate (bytes per row, measured on the
-    /// first rows, × rows). Columns: the grid values, stable (Routh),
-    /// verdict (the one-cycle standard: meets, fails, divergent), the short
-    /// period's root, cycles to half amplitude, damping ratio and ω̄, the
-    /// phugoid's root, m_θ̇ and Δm_θ̇ (eq 41), the phugoid's ζ and period,
-    /// the MIL-F-8785C levels, the four roots, k_n (eq 42's static margin
-    /// K_n = −dC_m/dC_L at constant C_L·M², from the quartic's E: it
-    /// includes the pitching moment's change with Mach number, m_u),
-    /// neutral_point (h_n, where m_w = 0 at constant speed — the
-    /// aerodynamic centre H₀ — as a fraction of the M.A.C.) and
-    /// static_margin_pct (h_n − h, % M.A.C.; positive: stable in
-    /// incidence), and an error for points outside a theory's validity.
+    /// first rows, × rows). The columns, in order, are listed below (the
+    /// CSV's header and the JSON's keys; the Python package's `sweep()`
+    /// names them alike); a point outside a theory's validity has its
+    /// error.
     /// Roots are in units of 1/τ, τ = m/(½ρSV).
     /// The damping theory and aerodynamic model are CONFIG's unless --damping
     /// or --aero replace them (listed in `analyze --help`); the lifting
@@ -305,14 +298,14 @@ enum Command {
     /// each point's μ₁, i_B, C_L·M² and speed of sound from its altitude,
     /// mass and I_y, as `analyze` computes them for CONFIG edited to them
     /// (without a physical condition they are refused). The rows then carry
-    /// altitude, mass and I_y after i_b, and also v_m_s,
-    /// c_l, tau_s and the modes in seconds (sp_re_s, sp_im_s,
-    /// sp_natural_frequency_rad_s, sp_period_s, ph_re_s, ph_im_s).
+    /// the point's altitude, mass and I_y, V, C_L, τ and the modes in
+    /// seconds (the columns below marked so).
     ///
     /// Example: the 60° delta from Mach 0.5 to 2, c.g. 0.20 to 0.30, μ₁ 50 to
     /// 450, 31 × 11 × 5 points:
     ///
     /// delta-stability sweep examples/delta-60.toml --mach 0.5:2:0.05 --cg 0.2:0.3:0.01 --mu1 50:450:100 -o sweep.csv
+    #[command(after_long_help = cmd::sweep::columns_help())]
     Sweep(cmd::sweep::Args),
     /// The smallest tailplane (or foreplane) that meets the one-cycle standard across Mach.
     ///

@@ -13,6 +13,7 @@
 //! before it exits (status 130 or 143, 128 + the signal):
 //! [`remove_temporaries_on_signals`].
 
+use stability_io::format::Format;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
@@ -317,17 +318,17 @@ pub fn finite(source: &str, value: &impl serde::Serialize) -> Result<(), crate::
     Ok(stability_io::finite::guard(source, value)?)
 }
 
-/// Prints `value`, a result of the input file `source`, as pretty JSON
-/// (the `--json` of every command), every number in it finite.
-pub fn print_json(source: &str, value: &impl serde::Serialize) -> Result<(), crate::Failure> {
-    finite(source, value)?;
-    let text = serde_json::to_string_pretty(value).map_err(|e| {
-        crate::Failure::Input(stability_io::diag::InputError::file(
-            source,
-            format!("the result cannot be written as JSON: {e}"),
-        ))
-    })?;
-    print(&format!("{text}\n"))
+/// Prints a result of the input file `source` in `format`, the one its
+/// command's options chose ([`Format::document`]): its view as JSON (the
+/// `--json` of every command), every number in it finite, or `text()`,
+/// the command's own page.
+pub fn print_as(
+    format: Format,
+    source: &str,
+    view: &impl serde::Serialize,
+    text: impl FnOnce() -> Result<String, crate::Failure>,
+) -> Result<(), crate::Failure> {
+    print(&format.document(source, view, text)?)
 }
 
 /// Write `bytes` to `path` through a temporary file in the same directory,

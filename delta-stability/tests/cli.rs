@@ -1618,3 +1618,63 @@ fn the_class_is_given_or_the_configs_or_category_c_is_not_assessed() {
         "{err}"
     );
 }
+
+/// The sweep's columns come from one table (issue 30, item 5): the CSV's
+/// header, the JSON objects' keys and the list after `sweep --help` name
+/// the same columns in the same order, at a physical flight condition
+/// with the derivatives (every column but the one `c_l` it gives once) and
+/// without either.
+#[test]
+fn the_sweeps_header_json_keys_and_help_list_the_same_columns() {
+    let dir = Scratch::new();
+    let help = common::stdout(&run_ok(&["sweep", "--help"]));
+    let listed: Vec<&str> = help
+        .split_once("Columns (name [unit]: meaning):\n")
+        .expect("the column list")
+        .1
+        .lines()
+        .filter_map(|l| l.strip_prefix("  "))
+        .filter_map(|l| l.split([' ', ':']).next())
+        .collect();
+    let runs: [&[&str]; 2] = [
+        &["examples/delta-60-physical.toml", "--derivatives"],
+        &["examples/delta-60.toml"],
+    ];
+    for args in runs {
+        let mut header = Vec::new();
+        for ext in ["csv", "json"] {
+            let out = dir.path().join(format!("columns.{ext}"));
+            let mut a = vec!["sweep", args[0], "--mach", "0.8,1.2"];
+            a.extend(&args[1..]);
+            a.extend(["--damping", "faired-slender", "-o", path(&out)]);
+            run_ok(&a);
+            let text = std::fs::read_to_string(&out).unwrap();
+            if ext == "csv" {
+                header = text
+                    .lines()
+                    .next()
+                    .unwrap()
+                    .split(',')
+                    .map(String::from)
+                    .collect();
+                continue;
+            }
+            // the first object's keys in the file's order (a point with a
+            // result has every column but `error`; no value has a comma)
+            let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+            assert!(v[0].get("error").is_none() && v[0]["verdict"].is_string());
+            let first = text.lines().nth(1).unwrap();
+            let keys: Vec<&str> = first
+                .split(',')
+                .filter_map(|kv| kv.split('"').nth(1))
+                .collect();
+            assert_eq!(keys, header[..header.len() - 1]);
+        }
+        assert_eq!(header.last().map(String::as_str), Some("error"));
+        // the help's list in its order, with the columns of other rows
+        let mut at = listed.iter();
+        for name in &header {
+            assert!(at.any(|l| l == name), "{name} out of order in {listed:?}");
+        }
+    }
+}

@@ -89,36 +89,25 @@ __all__ = [
 ]
 
 class SweepResult(dict):
-    """The columns of a sweep, one numpy array each (a ``dict``), named and
-    ordered as ``delta-stability sweep``'s CSV: the grid values ``mach``,
-    ``sweep_deg``, ``cg``, ``mu1``, ``i_b``; ``stable`` (Routh, §4);
-    ``verdict`` (the overall verdict, every root judged: ``meets``,
-    ``fails``, ``divergent`` — never ``meets`` where any mode grows — or
-    ``""`` where the point has no result); the short period's root
-    ``sp_re``, ``sp_im`` (1/τ), ``sp_cycles_to_half`` (eq 8),
-    ``sp_damping_ratio``, ``sp_omega_bar`` (ω̄ = s/μ₁, §9); the phugoid's
-    ``ph_re``, ``ph_im``; ``m_thetadot`` and ``delta_m_thetadot`` (its margin
-    over eq 41's m_θ̇max); ``ph_damping_ratio``, ``ph_period`` (τ); the
-    MIL-F-8785C levels ``sp_level_a``, ``sp_level_b``, ``sp_level_c``,
-    ``ph_level`` (1, 2, 3, or 4 for worse than Level 3); the four roots
-    ``root1_re`` … ``root4_im`` (1/τ); ``k_n`` (eq 42's static margin
-    −dC_m/dC_L at constant C_L·M², with the Mach-number terms),
-    ``neutral_point`` (h_n, where m_w = 0 at constant speed: the aerodynamic
-    centre, a fraction of the M.A.C.) and ``static_margin_pct`` (h_n − h, %
-    M.A.C.); at a physical flight condition ``altitude``, ``mass`` and
-    ``I_y`` (the point's, in the config's units; after ``i_b``) and the
-    modes in seconds (``v_m_s``, ``c_l``, ``tau_s``, ``sp_re_s``,
-    ``sp_im_s``, ``sp_natural_frequency_rad_s``, ``sp_period_s``,
-    ``ph_re_s``, ``ph_im_s``, ``ph_period_s``, ``root1_re_s`` …
-    ``root4_im_s``: V = M·a, C_L and τ at each Mach number, eq 24); with
-    ``derivatives=True`` the twelve derivatives and ``c_l``; and ``error``
-    (``""`` or why the point has no result, e.g. outside a theory's
-    validity). Numbers
-    that are undefined (a short period that does not oscillate) are NaN.
+    """The columns of a sweep, one numpy array each (a ``dict``), named,
+    ordered and computed as ``delta-stability sweep``'s CSV (one table of
+    columns, listed below): the grid values, then each point's results —
+    Routh's test, the overall verdict (``meets``, ``fails``, ``divergent``,
+    or ``""`` where the point has no result), the modes, m_θ̇ and its margin
+    (eq 41), the MIL-F-8785C levels, the roots, K_n (eq 42), the neutral
+    point and the static margin — at a physical flight condition the
+    point's altitude, mass and I_y and the modes in seconds, with
+    ``derivatives=True`` the quartic's inputs, and last ``error`` (``""``
+    or why the point has no result, e.g. outside a theory's validity).
+    Numbers that are undefined (a short period that does not oscillate)
+    are NaN. Roots are in 1/τ, τ = m/(½ρSV).
 
     ``shape`` is the grid's shape (mach, sweep, cg, mu1, i_b):
     ``r["sp_cycles_to_half"].reshape(r.shape)`` indexes by axis.
-    """
+
+    Columns (name [unit]: meaning), in order:
+
+"""
 
     shape: "tuple[int, ...]"
 
@@ -133,6 +122,10 @@ class SweepResult(dict):
     def __repr__(self):
         n = len(self["mach"]) if "mach" in self else 0
         return f"SweepResult({n} points, grid {self.shape}, columns {list(self)})"
+
+
+# the column list, from the table the command line's columns come from
+SweepResult.__doc__ += "".join("    " + line for line in _native.sweep_columns_doc().splitlines(True))
 
 
 def sweep(
@@ -194,9 +187,8 @@ def sweep(
         derivatives=derivatives,
         datcom=datcom,
     )
-    verdicts = _np.array(list(raw["verdicts"]) + [""])
-    messages = _np.array(list(raw["messages"]) + [""], dtype=object)
-    decode = {"verdict": verdicts, "error": messages}
+    decode = {k: _np.array(list(v)) for k, v in raw["words"].items()}
+    decode["error"] = _np.array(list(raw["messages"]) + [""], dtype=object)
     out = SweepResult()
     for k in raw["columns"]:
         out[k] = decode[k][raw[k]] if k in decode else raw[k]

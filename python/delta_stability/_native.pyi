@@ -223,8 +223,13 @@ def sweep_columns(
 ) -> dict[str, Any]:
     """The raw columns of ``delta_stability.sweep`` (the library's grid,
     ``stability_core::sweep``): ``columns`` (the CSV's names, in order), each
-    column (``verdict`` and ``error`` as codes into ``verdicts`` and
-    ``messages``) and ``shape``."""
+    column (a word column such as ``verdict`` as codes into its list in
+    ``words`` — ``verdict``'s also as ``verdicts``, the older key —
+    ``error`` as codes into ``messages``, −1 for none) and ``shape``."""
+
+def sweep_columns_doc() -> str:
+    """The sweep's columns, one line each (name [unit]: meaning), from the
+    table the command line's columns come from."""
 
 def batch_roots(
     coefficients: npt.NDArray[np.float64], *, nan: bool = False

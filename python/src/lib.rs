@@ -42,6 +42,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(quartic::quartic, m)?)?;
     m.add_function(wrap_pyfunction!(quartic::analyze, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_columns, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_columns_doc, m)?)?;
     m.add_function(wrap_pyfunction!(roots::batch_roots, m)?)?;
     m.add_function(wrap_pyfunction!(response::response, m)?)?;
     m.add_function(wrap_pyfunction!(convert::convert, m)?)?;
@@ -56,6 +57,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(uncertainty::uncertainty_run, m)?)?;
     m.add_function(wrap_pyfunction!(report::report_run, m)?)?;
     m.add_function(wrap_pyfunction!(panic_for_tests, m)?)?;
+    m.add_function(wrap_pyfunction!(views::json_attributes, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -9,7 +9,7 @@ use crate::guard;
 use crate::inputs::derivative_file;
 use crate::json::{to_py, view_to_py};
 use crate::overrides::{Model, overridden};
-use crate::views::{Attr, dir, getattr, keys};
+use crate::views::{Attr, always, dir, getattr, optional};
 use numpy::{Complex64, IntoPyArray, PyArray1};
 use pyo3::exceptions::{PyAttributeError, PyTypeError};
 use pyo3::prelude::*;
@@ -249,36 +249,36 @@ pub struct Mode {
     json: Value,
 }
 
-/// The attributes of a [`Mode`]: its JSON's keys.
-const MODE_ATTRS: &[Attr] = keys!(
-    "name",
-    "origin",
-    "re",
-    "im",
-    "period",
-    "time_to_half",
-    "time_to_double",
-    "cycles_to_half",
-    "cycles_to_double",
-    "damping_ratio",
-    "natural_frequency",
-    "frequency_parameter",
-    "tau_s",
-    "period_s",
-    "time_to_half_s",
-    "time_to_double_s",
-    "re_s",
-    "im_s",
-    "natural_frequency_s",
-);
+/// The attributes of a [`Mode`]: its JSON's keys, those in seconds where
+/// τ is known.
+const MODE_ATTRS: &[Attr] = &[
+    always("name", &["name"]),
+    always("origin", &["origin"]),
+    always("re", &["re"]),
+    always("im", &["im"]),
+    always("period", &["period"]),
+    always("time_to_half", &["time_to_half"]),
+    always("time_to_double", &["time_to_double"]),
+    always("cycles_to_half", &["cycles_to_half"]),
+    always("cycles_to_double", &["cycles_to_double"]),
+    always("damping_ratio", &["damping_ratio"]),
+    always("natural_frequency", &["natural_frequency"]),
+    always("frequency_parameter", &["frequency_parameter"]),
+    optional("period_s", &["period_s"], SECONDS),
+    optional("time_to_half_s", &["time_to_half_s"], SECONDS),
+    optional("time_to_double_s", &["time_to_double_s"], SECONDS),
+    optional("re_s", &["re_s"], SECONDS),
+    optional("im_s", &["im_s"], SECONDS),
+    optional("natural_frequency_s", &["natural_frequency_s"], SECONDS),
+];
+
+/// When the JSON has the quantities in seconds.
+const SECONDS: &str = "τ known (a physical flight condition, or a set with τ)";
 
 impl Mode {
     fn new(mode: CoreMode, tau: Option<f64>) -> PyResult<Mode> {
-        let mut json = serde_json::to_value(mode.timed(tau))
+        let json = serde_json::to_value(mode.timed(tau))
             .map_err(|e| PyTypeError::new_err(e.to_string()))?;
-        if let Value::Object(o) = &mut json {
-            o.insert("tau_s".into(), serde_json::json!(tau));
-        }
         Ok(Mode { mode, tau, json })
     }
 }
@@ -290,11 +290,16 @@ impl Mode {
     fn root(&self) -> Complex64 {
         Complex64::new(self.mode.re, self.mode.im)
     }
+    /// τ = m/(½ρSV) in seconds, where it is known.
+    #[getter]
+    fn tau_s(&self) -> Option<f64> {
+        self.tau
+    }
     fn __getattr__<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
         getattr(py, "Mode", &self.json, MODE_ATTRS, name)
     }
     fn __dir__(&self) -> Vec<&'static str> {
-        dir(MODE_ATTRS, &["root", "to_dict"])
+        dir(MODE_ATTRS, &["root", "tau_s", "to_dict"])
     }
     /// The mode as the command line's JSON gives it.
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
@@ -354,12 +359,12 @@ fn coefficients<'py>(
 
 /// The attributes the JSON answers, shared by [`Quartic`] and [`Analysis`].
 const ANALYSIS_ATTRS: &[Attr] = &[
-    ("stable", &["stable"]),
-    ("tau_s", &["tau_s"]),
-    ("verdict", &["verdict", "overall"]),
-    ("verdict_reasons", &["verdict", "reasons"]),
-    ("criteria", &["criteria"]),
-    ("classical", &["classical_eq7"]),
+    always("stable", &["stable"]),
+    always("tau_s", &["tau_s"]),
+    always("verdict", &["verdict", "overall"]),
+    always("verdict_reasons", &["verdict", "reasons"]),
+    always("criteria", &["criteria"]),
+    always("classical", &["classical_eq7"]),
 ];
 
 /// The attributes of a [`Quartic`].
@@ -370,8 +375,8 @@ const QUARTIC_ATTRS: &[Attr] = &[
     ANALYSIS_ATTRS[3],
     ANALYSIS_ATTRS[4],
     ANALYSIS_ATTRS[5],
-    ("warnings", &["warnings"]),
-    ("notation", &["notation"]),
+    always("warnings", &["warnings"]),
+    always("notation", &["notation"]),
 ];
 
 /// The attributes of an [`Analysis`].
@@ -382,13 +387,24 @@ const DESIGN_POINT_ATTRS: &[Attr] = &[
     ANALYSIS_ATTRS[3],
     ANALYSIS_ATTRS[4],
     ANALYSIS_ATTRS[5],
-    ("flight", &["flight"]),
-    ("mode_shapes", &["mode_shapes"]),
-    ("damp", &["damp"]),
-    ("short_period_frequency", &["short_period_frequency"]),
-    ("aerodynamics", &["aerodynamics"]),
-    ("damping", &["damping"]),
-    ("case", &["case"]),
+    optional("flight", &["flight"], "a physical flight condition"),
+    always("mode_shapes", &["mode_shapes"]),
+    optional("damp", &["damp"], SECONDS),
+    optional(
+        "short_period_frequency",
+        &["short_period_frequency"],
+        "τ known and n/α defined, the short period oscillating",
+    ),
+    always("aerodynamics", &["aerodynamics"]),
+    always("damping", &["damping"]),
+    always("case", &["case"]),
+];
+
+/// Each class's attributes read from its JSON ([`crate::views`]).
+pub const ATTRIBUTES: [(&str, &[Attr]); 3] = [
+    ("Mode", MODE_ATTRS),
+    ("Quartic", QUARTIC_ATTRS),
+    ("Analysis", DESIGN_POINT_ATTRS),
 ];
 
 /// The attributes both classes compute rather than read.

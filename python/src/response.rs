@@ -7,9 +7,9 @@ use crate::inputs::derivative_file;
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use stability_core::display::Num;
 use stability_core::response::MAX_STEPS;
 use stability_io::input::suggest::did_you_mean;
-use stability_core::display::Num;
 use stability_io::response::{Disturbance, Given, Spec, respond};
 
 /// The longitudinal response (§11) of a derivative set to an elevon step

@@ -1,8 +1,8 @@
 //! `sweep()`: the library's sweep ([`stability_core::sweep::Sweep`], the
 //! grid `delta-stability sweep` evaluates) with the GIL released, into
-//! columns — one numpy array each, named and ordered as the command
-//! line's CSV ([`stability_core::sweep::columns`]), with no text in
-//! between. The axes are the library's ([`stability_io::sweep::axes`]:
+//! columns — one numpy array each, named, ordered and computed as the
+//! command line's CSV (from one table, [`columns::COLUMNS`]), with no text
+//! in between. The axes are the library's ([`stability_io::sweep::axes`]:
 //! ranges, lists or one value, each within its range).
 //!
 //! The grid, its order (mach, sweep_deg, cg, mu1, i_b, the last varying
@@ -11,8 +11,7 @@
 //! ([`Sweep::prepare`]) and a frequency iteration's interpolation in its
 //! frequency table (`Harmonic::Interpolated`) are the library's; so are a
 //! physical flight condition's μ₁, i_B and C_L·M² per planform
-//! ([`Sweep::with_flight`]). The modes in seconds at such a condition are
-//! the library's columns ([`Points::seconds`]).
+//! ([`Sweep::with_flight`]).
 
 use crate::errors::{argument, input_error};
 use crate::guard;
@@ -20,22 +19,16 @@ use crate::overrides::{Model, overridden};
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use stability_core::Derivatives;
-use stability_core::criteria::Verdict;
-use stability_core::sweep::{
-    Cell, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Sweep, SweepError, columns,
-};
+use stability_core::sweep::{Points, Sweep, SweepError};
 use stability_io::config::Config;
 use stability_io::diag;
+use stability_io::sweep::columns::{self, Point, Value};
 use stability_io::sweep::{Given, axes, parse_values};
 use std::collections::HashMap;
 
 /// The most points one call evaluates: every column is held in memory
 /// (the command line streams its rows; its limit is the library's).
 pub const MAX_POINTS: usize = 50_000_000;
-
-/// The verdicts the `verdict` codes index (the code 3: no result).
-const VERDICTS: [Verdict; 3] = [Verdict::Meets, Verdict::Fails, Verdict::Divergent];
 
 /// An axis as given: a number, a sequence or array of numbers, or the
 /// command line's "A:B:STEP".
@@ -121,55 +114,35 @@ pub fn sweep_of(a: &AxisArgs<'_, '_>, cfg: &Config) -> PyResult<Sweep> {
     .map_err(|e| sweep_error(cfg, e))
 }
 
-/// A column of results, as numpy takes it.
-enum Column {
+/// A column, as numpy takes it.
+enum Array {
     Bool(Vec<bool>),
-    /// An index into [`VERDICTS`], or 3 (no result).
-    Code(Vec<u8>),
+    /// An index into the column's words.
+    Code(Vec<u16>),
     /// NaN where the command line leaves the cell empty.
     Float(Vec<f64>),
+    /// An index into the messages, or −1 (no error).
+    Message(Vec<i32>),
 }
 
-impl Column {
-    fn push(&mut self, cell: Cell) {
-        match (self, cell) {
-            (Column::Bool(v), Cell::Bool(b)) => v.push(b),
-            (Column::Code(v), Cell::Word(w)) => v.push(verdict_code(w)),
-            (Column::Float(v), Cell::Number(x)) => v.push(x.unwrap_or(f64::NAN)),
-            _ => unreachable!("a column's cells are of one kind"),
-        }
-    }
-
-    fn of(cell: Cell, n: usize) -> Column {
-        match cell {
-            Cell::Bool(_) => Column::Bool(Vec::with_capacity(n)),
-            Cell::Word(_) => Column::Code(Vec::with_capacity(n)),
-            Cell::Number(_) => Column::Float(Vec::with_capacity(n)),
-        }
-    }
-
+impl Array {
     fn into_py<'py>(self, py: Python<'py>) -> Bound<'py, PyAny> {
         match self {
-            Column::Bool(v) => v.into_pyarray(py).into_any(),
-            Column::Code(v) => v.into_pyarray(py).into_any(),
-            Column::Float(v) => v.into_pyarray(py).into_any(),
+            Array::Bool(v) => v.into_pyarray(py).into_any(),
+            Array::Code(v) => v.into_pyarray(py).into_any(),
+            Array::Float(v) => v.into_pyarray(py).into_any(),
+            Array::Message(v) => v.into_pyarray(py).into_any(),
         }
     }
 }
 
-/// A sweep's results as columns, ready for numpy.
+/// A sweep's results as columns, ready for numpy: those of the command
+/// line's rows ([`columns::columns`]), in their order.
 pub struct Columns {
-    points: Points,
-    /// The sweep axis's values as given (the library's `sweep_deg` is the
-    /// planform's, converted back from radians).
-    sweep_deg: Vec<f64>,
-    /// [`RESULT_COLUMNS`], then at a physical flight condition
-    /// [`SECONDS_COLUMNS`], by name.
-    results: Vec<(&'static str, Column)>,
-    /// An index into `messages`, or −1.
-    error: Vec<i32>,
+    arrays: Vec<(&'static str, Array)>,
+    /// The words each word column's codes index.
+    words: Vec<(&'static str, Vec<&'static str>)>,
     messages: Vec<String>,
-    physical: bool,
 }
 
 /// Evaluates every point (in parallel: [`Sweep::run`]) into columns.
@@ -177,8 +150,42 @@ pub fn evaluate(sweep: &Sweep, derivatives: bool) -> Columns {
     let points = sweep.run(derivatives);
     let n = points.len();
     let axis = &sweep.axes().sweep_deg;
-    let sweep_deg = sweep.indices(0..n).map(|idx| axis[idx[1]]).collect();
-    let mut error = vec![-1; n];
+    let sweep_deg: Vec<f64> = sweep.indices(0..n).map(|idx| axis[idx[1]]).collect();
+    let (error, messages) = errors(&points);
+    let flights: Vec<_> = (0..n)
+        .map(|k| (error[k] < 0).then(|| sweep.flight_point(k)).flatten())
+        .collect();
+    let point = |k: usize| Point::new(&points, k, sweep_deg[k], flights[k]);
+    let floats =
+        |v: &dyn Fn(&Point<'_>) -> f64| Array::Float((0..n).map(|k| v(&point(k))).collect());
+    let mut words = Vec::new();
+    let physical = sweep.flights().is_some();
+    let arrays = columns::columns(derivatives, physical)
+        .map(|c| {
+            let array = match c.value {
+                Value::Grid(v) => floats(&v),
+                Value::Number(v) => floats(&|p| v(p).unwrap_or(f64::NAN)),
+                Value::Bool(v) => Array::Bool((0..n).map(|k| v(&point(k))).collect()),
+                Value::Word(v) => {
+                    let (codes, vocabulary) = encode((0..n).map(|k| v(&point(k))));
+                    words.push((c.name, vocabulary));
+                    Array::Code(codes)
+                }
+                Value::Error => Array::Message(error.clone()),
+            };
+            (c.name, array)
+        })
+        .collect();
+    Columns {
+        arrays,
+        words,
+        messages,
+    }
+}
+
+/// Each point's error as an index into the distinct messages (−1: none).
+fn errors(points: &Points) -> (Vec<i32>, Vec<String>) {
+    let mut error = vec![-1; points.len()];
     let mut messages: Vec<String> = Vec::new();
     let mut seen: HashMap<String, i32> = HashMap::new();
     for (k, e) in &points.errors {
@@ -188,122 +195,56 @@ pub fn evaluate(sweep: &Sweep, derivatives: bool) -> Columns {
             messages.len() as i32 - 1
         });
     }
-    let physical = sweep.flights().is_some();
-    let results = results(sweep, &points, &error);
-    Columns {
-        points,
-        sweep_deg,
-        results,
-        error,
-        messages,
-        physical,
-    }
+    (error, messages)
 }
 
-/// Every point's [`Points::results`] (and at a physical flight condition
-/// its [`Points::seconds`]), as the command line writes them, by column.
-fn results(sweep: &Sweep, points: &Points, error: &[i32]) -> Vec<(&'static str, Column)> {
-    let n = points.len();
-    let mut columns: Vec<(&'static str, Column)> = Vec::new();
-    for (k, e) in error.iter().enumerate() {
-        let point = (*e < 0).then(|| sweep.flight_point(k)).flatten();
-        let cells = points.results(k, point.map(|p| p.tau));
-        let seconds = sweep
-            .flights()
-            .map(|_| points.seconds(k, point).map(Cell::Number));
-        let names = RESULT_COLUMNS.iter().chain(SECONDS_COLUMNS.iter());
-        let row = cells.into_iter().chain(seconds.into_iter().flatten());
-        for (j, (name, cell)) in names.zip(row).enumerate() {
-            if k == 0 {
-                columns.push((name, Column::of(cell, n)));
+/// Words as codes into their distinct values, in the order first seen.
+fn encode(words: impl Iterator<Item = &'static str>) -> (Vec<u16>, Vec<&'static str>) {
+    let mut vocabulary: Vec<&'static str> = Vec::new();
+    let codes = words
+        .map(|w| match vocabulary.iter().position(|v| *v == w) {
+            Some(i) => i as u16,
+            None => {
+                vocabulary.push(w);
+                vocabulary.len() as u16 - 1
             }
-            columns[j].1.push(cell);
-        }
-    }
-    columns
-}
-
-/// The index of the verdict `word` in [`VERDICTS`]; 3 for none.
-fn verdict_code(word: &str) -> u8 {
-    let at = VERDICTS.iter().position(|v| v.as_str() == word);
-    at.map_or(3, |k| k as u8)
-}
-
-/// The grid's float column `name` of the library's points (moved out), if
-/// it is one of them.
-fn grid_column(p: &mut Points, name: &str) -> Option<Vec<f64>> {
-    let c = match name {
-        "mach" => &mut p.mach,
-        "cg" => &mut p.cg,
-        "mu1" => &mut p.mu1,
-        "i_b" => &mut p.i_b,
-        "altitude" => &mut p.altitude,
-        "mass" => &mut p.mass,
-        "I_y" => &mut p.i_y,
-        _ => return None,
-    };
-    Some(std::mem::take(c))
-}
-
-/// The fifteen quartic inputs as columns (in the order of
-/// `Derivatives::QUARTIC_INPUTS`).
-fn derivative_columns(p: &Points) -> Vec<Vec<f64>> {
-    let Some(ds) = &p.derivatives else {
-        return Vec::new();
-    };
-    let mut out: Vec<Vec<f64>> = (0..15).map(|_| Vec::with_capacity(ds.len())).collect();
-    for d in ds {
-        for (c, v) in out.iter_mut().zip(d.quartic_input_values()) {
-            c.push(v);
-        }
-    }
-    out
+        })
+        .collect();
+    (codes, vocabulary)
 }
 
 /// The columns as a dict: each of `columns` (the CSV's names, in its
-/// order) as an array, `verdict`, `standard` and `error` as codes into
-/// `verdicts` and `messages`; and the grid's `shape`.
+/// order) as an array, a word column (`verdict`) as codes into its list in
+/// `words` (`verdict`'s also as `verdicts`, the older key), `error` as
+/// codes into `messages` (−1: none); and the grid's `shape`.
 fn to_dict<'py>(py: Python<'py>, c: Columns, shape: Vec<usize>) -> PyResult<Bound<'py, PyDict>> {
-    let Columns {
-        mut points,
-        sweep_deg,
-        results,
-        error,
-        messages,
-        physical,
-    } = c;
-    let names = columns(points.derivatives.is_some(), physical);
-    let mut arrays: HashMap<&str, Bound<'py, PyAny>> = HashMap::new();
-    let mut put = |name: &'static str, a: Bound<'py, PyAny>| {
-        arrays.entry(name).or_insert(a);
-    };
-    put("sweep_deg", sweep_deg.into_pyarray(py).into_any());
-    put("error", error.into_pyarray(py).into_any());
-    for name in &names {
-        if let Some(v) = grid_column(&mut points, name) {
-            put(name, v.into_pyarray(py).into_any());
-        }
-    }
-    for (name, column) in results {
-        put(name, column.into_py(py));
-    }
-    let inputs = Derivatives::QUARTIC_INPUTS;
-    for (name, v) in inputs.into_iter().zip(derivative_columns(&points)) {
-        put(name, v.into_pyarray(py).into_any());
-    }
     let out = PyDict::new(py);
-    let mut columns = Vec::with_capacity(names.len());
-    for name in names {
-        if let Some(a) = arrays.remove(name) {
-            out.set_item(name, a)?;
-            columns.push(name);
-        }
+    let mut names = Vec::with_capacity(c.arrays.len());
+    for (name, array) in c.arrays {
+        out.set_item(name, array.into_py(py))?;
+        names.push(name);
     }
-    out.set_item("columns", columns)?;
-    out.set_item("verdicts", VERDICTS.map(Verdict::as_str))?;
-    out.set_item("messages", messages)?;
+    out.set_item("columns", names)?;
+    let words = PyDict::new(py);
+    for (name, vocabulary) in c.words {
+        if name == "verdict" {
+            // the key before `words`: still decodes `verdict`'s codes
+            out.set_item("verdicts", &vocabulary)?;
+        }
+        words.set_item(name, vocabulary)?;
+    }
+    out.set_item("words", words)?;
+    out.set_item("messages", c.messages)?;
     out.set_item("shape", shape)?;
     Ok(out)
+}
+
+/// The sweep's columns, one line each (name, unit, meaning, the rows that
+/// carry it): the table of the command line's columns
+/// ([`columns::listing`]), for `SweepResult`'s docs.
+#[pyfunction]
+pub fn sweep_columns_doc() -> String {
+    columns::listing("derivatives=True")
 }
 
 /// The sweep's columns as a dict of numpy arrays (see [`to_dict`]);

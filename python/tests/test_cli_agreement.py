@@ -93,6 +93,44 @@ def test_quartic_attributes_are_the_json_values(cli, path):
     assert q.routh["discriminant"] == j["routh_discriminant"]
 
 
+def test_every_attribute_reads_a_key_the_json_has(cli):
+    """The attributes read from the JSON (the package's table of names and
+    key paths, _json_attributes) against the command line's --json: results
+    that have every key (a physical flight condition: flight, damp, the
+    short-period frequency requirement, the modes in seconds; a set with
+    τ) have each attribute's key, and the attribute is its value there. A
+    key renamed in the library without its attribute fails here; in use it
+    is a RuntimeError, never a silent None. Where τ is unknown the keys in
+    seconds are left out, and those attributes alone are None."""
+    full = {
+        "Analysis": [(ds.analyze("examples/delta-60-physical.toml"),
+                      cli.json("analyze", "examples/delta-60-physical.toml"))],
+        "Quartic": [(ds.quartic("examples/boeing-747-american.toml"),
+                     cli.json("quartic", "examples/boeing-747-american.toml"))],
+    }
+    full["Mode"] = [(m, j) for o, d in full["Analysis"] + full["Quartic"]
+                    for m, j in zip(o.modes, d["modes"])]
+    bare = ds.quartic("examples/tailless-delta-45.toml")
+    partial = {"Quartic": [bare], "Mode": bare.modes,
+               "Analysis": [ds.analyze("examples/delta-45.toml")]}
+    attributes = ds._native._json_attributes()
+    assert {a[0] for a in attributes} == set(full)
+    for cls, name, path, optional in attributes:
+        for obj, j in full[cls]:
+            for key in path:
+                assert key in j, f"{cls}.{name}: the --json has no key {'.'.join(path)}"
+                j = j[key]
+            assert getattr(obj, name) == j, (cls, name)
+        for obj in partial[cls]:
+            # a key always there is read (else a RuntimeError), one that
+            # needs τ or a physical condition is absent: None
+            value = getattr(obj, name)
+            assert optional is None or value is None, (cls, name, value)
+    assert bare.tau_s is None and all(m.tau_s is None for m in bare.modes)
+    m = full["Mode"][0][0]
+    assert m.tau_s == full["Analysis"][0][0].tau_s > 0 and "tau_s" in dir(m)
+
+
 def test_a_dict_and_keyword_arguments_read_as_the_file(cli):
     j = cli.json("quartic", "examples/boeing-747-american.toml")
     flat = {
@@ -307,6 +345,8 @@ def test_sweep_is_the_cli_csv(cli, tmp_path, case):
     # quartic input, computed apart: equal to rounding): a dict holds each
     # name once, its first column, and every repetition must be that column
     assert list(ours) == list(dict.fromkeys(header)), (list(ours), header)
+    # and the docs list them, from the same table
+    assert all(f"\n      {k}" in ds.SweepResult.__doc__ for k in header)
     assert len(ours["mach"]) == len(rows) == int(np.prod(ours.shape)) > 1
     error = header.index("error")
     assert any(r[error] == "" for r in rows)

@@ -11,6 +11,8 @@
 //! | the `[control]` table (control derivatives) | [`control`] |
 //! | the state-space export: JSON, python-control and MATLAB scripts | [`state_space`] |
 //! | the guard every writer of results passes: no value that is not finite | [`finite`] |
+//! | the form a result is written in (text, JSON, CSV), chosen once, and the writers of whole results and of records | [`format`] |
+//! | a sweep's axes, grid and rows, in the columns of one table | [`sweep`] |
 //! | figures (curves, bands, lines, labels) as SVG and their data as CSV | [`plot`] |
 //!
 //! Every reader checks what it reads: each value finite and within its
@@ -27,6 +29,7 @@ pub mod design_point;
 pub mod diag;
 pub mod files;
 pub mod finite;
+pub mod format;
 pub mod input;
 pub mod limits;
 pub mod plot;

@@ -6,7 +6,7 @@
 //! in seconds too.
 
 use crate::Failure;
-use crate::output::print;
+use crate::output::print_as;
 use crate::page::analysis_page;
 use stability_core::Derivatives;
 use stability_core::aero::{Coefficients, Origin};
@@ -18,6 +18,7 @@ use stability_core::display::sig;
 use stability_core::flight::{FlightPoint, PhysicalFlight};
 use stability_io::config::{self, Overrides, overridden};
 use stability_io::design_point::{Results, results};
+use stability_io::format::Format;
 use stability_io::views::AnalyzeJson;
 use std::fmt::Write;
 
@@ -90,11 +91,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     if let Some(out) = &args.write_derivatives {
         write_derivatives(out, &cfg, &res)?;
     }
-    if args.json {
-        crate::output::print_json(path, &view)
-    } else {
-        print(&page(&cfg, &res))
-    }
+    print_as(Format::printed(args.json), path, &view, || {
+        Ok(page(&cfg, &res))
+    })
 }
 
 /// `--write-derivatives OUT.toml`: the design point as a derivative file

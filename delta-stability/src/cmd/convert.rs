@@ -5,9 +5,10 @@
 
 use crate::Failure;
 use crate::args::{NotationArg, TargetNotation};
-use crate::output::print;
+use crate::output::print_as;
 use stability_io::convert::{Target, convert, written_in};
 use stability_io::diag::InputError;
+use stability_io::format::Format;
 use stability_io::input;
 
 /// The command's options.
@@ -46,9 +47,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
     };
     let conversion = convert(&any, from.name(), target)?;
     crate::output::warn_all(conversion.warnings());
-    if args.json {
-        crate::output::print_json(file, &conversion.json())
-    } else {
-        print(&conversion.toml()?)
-    }
+    print_as(Format::printed(args.json), file, &conversion.json(), || {
+        Ok(conversion.toml()?)
+    })
 }

@@ -9,12 +9,13 @@
 
 use crate::Failure;
 use crate::args::ClassArg;
-use crate::output::print;
+use crate::output::print_as;
 use crate::page::analysis_page;
 use stability_core::analysis::Analysis;
 use stability_core::engineering::Engineering;
 use stability_core::linear::Control;
 use stability_io::class::ClassChoice;
+use stability_io::format::Format;
 use stability_io::input::dimensional_notation::{self, DimensionalFile, is_dimensional};
 use stability_io::input::{self, DerivativeFile};
 use stability_io::views::{DimensionalJson, QuarticJson};
@@ -100,11 +101,9 @@ pub fn run(a: &Args) -> Result<(), Failure> {
             },
         )?;
     }
-    if a.json {
-        crate::output::print_json(file, &view)
-    } else {
-        print(&table(&input, &analysis, &engineering, &class))
-    }
+    print_as(Format::printed(a.json), file, &view, || {
+        Ok(table(&input, &analysis, &engineering, &class))
+    })
 }
 
 pub fn table(
@@ -167,15 +166,14 @@ fn run_dimensional(input: &DimensionalFile, args: &Args) -> Result<(), Failure> 
             },
         )?;
     }
-    if args.json {
-        return crate::output::print_json(&input.path, &view);
-    }
-    let title = format!(
-        "Stability quartic of {} (notation \"dimensional\": the general longitudinal model, eqs D1–D2)",
-        input.path
-    );
-    let mut page = crate::page::dimensional_page(&title, &a);
-    page.push_str(&frequency_line(&engineering, &class));
-    page.push_str(&crate::engineering::tables(&engineering));
-    print(&page)
+    print_as(Format::printed(args.json), &input.path, &view, || {
+        let title = format!(
+            "Stability quartic of {} (notation \"dimensional\": the general longitudinal model, eqs D1–D2)",
+            input.path
+        );
+        let mut page = crate::page::dimensional_page(&title, &a);
+        page.push_str(&frequency_line(&engineering, &class));
+        page.push_str(&crate::engineering::tables(&engineering));
+        Ok(page)
+    })
 }

@@ -9,9 +9,10 @@
 //! |p·∂r/∂p|, the first-order change of r if p doubled.
 
 use crate::Failure;
-use crate::output::print;
+use crate::output::print_as;
 use crate::page::{aligned, root};
 use stability_core::display::sig;
+use stability_io::format::Format;
 use stability_io::views::SensitivityJson;
 use std::fmt::Write;
 
@@ -34,11 +35,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         let m = "the sensitivities overflow f64: no result can be written";
         return Err(input.error_at(input.most_extreme_input(), m).into());
     }
-    if args.json {
-        crate::output::print_json(&args.file, &out)
-    } else {
-        print(&page(&out))
-    }
+    print_as(Format::printed(args.json), &args.file, &out, || {
+        Ok(page(&out))
+    })
 }
 
 /// The tables, one per mode.

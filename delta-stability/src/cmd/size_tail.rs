@@ -10,6 +10,7 @@ use stability_core::configuration::sizing::{SCAN, Sizing, TOLERANCE, size_surfac
 use stability_core::display::sig;
 use stability_io::config::overridden;
 use stability_io::diag::InputError;
+use stability_io::format::Format;
 use stability_io::sweep::parse_machs;
 use std::fmt::Write as _;
 
@@ -65,10 +66,8 @@ pub fn run(o: &Args) -> Result<(), Failure> {
     let s = size_surface(&cfg.case, kind, &machs, o.max_area).map_err(|e| bad(e.to_string()))?;
     // the page too: every number finite
     crate::output::finite(&o.config, &s)?;
-    if o.json {
-        return crate::output::print_json(&o.config, &s);
-    }
-    crate::output::print(&page(&o.config, &s))
+    let format = Format::printed(o.json);
+    crate::output::print_as(format, &o.config, &s, || Ok(page(&o.config, &s)))
 }
 
 /// The answer in words, then the verdict at each Mach number.

@@ -18,7 +18,8 @@ use stability_core::sweep::{Axes, SweepError};
 use stability_io::config::{Config, overridden};
 use stability_io::diag::{InputError, IoError};
 use stability_io::files::write_error;
-use stability_io::sweep::{Format, Given, Grid, axes, check_flight_limits, parse_range};
+use stability_io::format::{Format, Table};
+use stability_io::sweep::{Given, Grid, axes, check_flight_limits, parse_range};
 use std::io::Write as _;
 use std::path::Path;
 
@@ -69,6 +70,13 @@ pub struct Args {
     pub model: ModelArgs,
 }
 
+/// The list of the columns after `sweep --help`: every column of the
+/// rows, from their table ([`stability_io::sweep::columns`]).
+pub fn columns_help() -> String {
+    let list = stability_io::sweep::columns::listing("--derivatives");
+    format!("Columns (name [unit]: meaning):\n{list}")
+}
+
 /// The options' flags, in the order of [`Axes::NAMES`] and
 /// [`Axes::FLIGHT_NAMES`].
 const FLAGS: [&str; 8] = ["mach", "sweep", "cg", "mu1", "ib", "altitude", "mass", "iy"];
@@ -104,18 +112,6 @@ pub fn grid(o: &Args, cfg: &Config) -> Result<Grid, String> {
     Ok(grid)
 }
 
-/// Whether the output is JSON (`.json`) or CSV (`.csv`).
-fn is_json(o: &Args) -> Result<bool, String> {
-    match Path::new(&o.output).extension().and_then(|e| e.to_str()) {
-        Some("csv") => Ok(false),
-        Some("json") => Ok(true),
-        _ => Err(format!(
-            "-o {}: the output must end in .csv or .json",
-            o.output
-        )),
-    }
-}
-
 fn progress_bar(total: usize) -> ProgressBar {
     let bar = ProgressBar::with_draw_target(Some(total as u64), ProgressDrawTarget::stderr());
     bar.set_style(
@@ -133,7 +129,7 @@ pub fn run(o: &Args) -> Result<(), Failure> {
         stability_io::files::recording(|| overridden(&o.config, &o.model.overrides()));
     let cfg = cfg?;
     let bad = |m: String| Failure::Input(InputError::file(&o.config, m));
-    let json = is_json(o).map_err(&bad)?;
+    let format = Format::of_file(&o.output).map_err(|e| bad(format!("-o {}: {e}", o.output)))?;
     let outputs = [crate::overwrite::Named::new("-o", &o.output)];
     crate::overwrite::refuse("CONFIG", &o.config, &read, &outputs)?;
     let grid = grid(o, &cfg).map_err(&bad)?;
@@ -144,22 +140,17 @@ pub fn run(o: &Args) -> Result<(), Failure> {
     let bar = progress_bar(total);
     // the lifting surface's solves, once per (planform, Mach), in parallel
     grid.sweep.prepare();
-    let format = Format {
-        json,
+    let rows = Rows {
+        table: Table::new(format),
         derivatives: o.derivatives,
     };
-    let head = if json {
-        "[\n".to_string()
-    } else {
-        format!("{}\n", grid.columns(o.derivatives).join(","))
-    };
-    let first = chunk(&grid, format, 0);
+    let head = rows.table.head(grid.columns(o.derivatives).map(|c| c.name));
+    let first = chunk(&grid, rows, 0);
     fits(out, head.len(), &first, total)?;
     file.write_all(head.as_bytes()).map_err(write_err)?;
-    write_points(&mut file, &grid, format, &bar, first).map_err(write_err)?;
-    if json {
-        file.write_all(b"\n]\n").map_err(write_err)?;
-    }
+    write_points(&mut file, &grid, rows, &bar, first).map_err(write_err)?;
+    file.write_all(rows.table.foot().as_bytes())
+        .map_err(write_err)?;
     file.commit().map_err(write_err)?;
     bar.finish_and_clear();
     let mut message = format!("wrote {total} design points to {}\n", o.output);
@@ -169,19 +160,26 @@ pub fn run(o: &Args) -> Result<(), Failure> {
     crate::output::print(&message)
 }
 
+/// How the rows are written: as CSV or JSON, with the derivatives or not.
+#[derive(Clone, Copy)]
+struct Rows {
+    table: Table,
+    derivatives: bool,
+}
+
 /// The points of a chunk.
 const CHUNK: usize = 1 << 16;
 
 /// The rows of the chunk from point `start`: blocks of points evaluated
 /// and formatted in parallel, each into its own buffer.
-fn chunk(grid: &Grid, format: Format, start: usize) -> Vec<Vec<u8>> {
+fn chunk(grid: &Grid, rows: Rows, start: usize) -> Vec<Vec<u8>> {
     const BLOCK: usize = 1 << 10;
     let end = (start + CHUNK).min(grid.points());
     (start..end)
         .step_by(BLOCK)
         .collect::<Vec<_>>()
         .into_par_iter()
-        .map(|b| grid.rows(b..(b + BLOCK).min(end), format))
+        .map(|b| grid.rows(b..(b + BLOCK).min(end), rows.table, rows.derivatives))
         .collect()
 }
 
@@ -221,7 +219,7 @@ fn fits(out: &Path, head: usize, first: &[Vec<u8>], total: usize) -> Result<(), 
 fn write_points(
     file: &mut AtomicFile,
     grid: &Grid,
-    format: Format,
+    rows: Rows,
     bar: &ProgressBar,
     first: Vec<Vec<u8>>,
 ) -> std::io::Result<()> {
@@ -236,7 +234,7 @@ fn write_points(
                 }
                 Ok(())
             },
-            || (start < total).then(|| chunk(grid, format, start)),
+            || (start < total).then(|| chunk(grid, rows, start)),
         );
         written?;
         bar.set_position(start.min(total) as u64);

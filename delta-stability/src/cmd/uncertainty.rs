@@ -12,6 +12,7 @@ use stability_core::uncertainty::{Options, Sampling, Study};
 use stability_io::config::overridden;
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
+use stability_io::format::Format;
 use stability_io::sweep::parse_machs;
 use stability_io::uncertainty::{
     CSV_HEADER, ProportionJson, QuantilesJson, SummaryJson, UncertaintyJson, csv_rows_of,
@@ -73,16 +74,8 @@ pub fn run(o: &Args) -> Result<(), Failure> {
         .map(|out| crate::overwrite::Named::new("-o", out))
         .collect();
     crate::overwrite::refuse("CONFIG", &o.config, &inputs, &outputs)?;
-    let json_out = match o
-        .output
-        .as_deref()
-        .map(|p| Path::new(p).extension().and_then(|e| e.to_str()))
-    {
-        None => None,
-        Some(Some("csv")) => Some(false),
-        Some(Some("json")) => Some(true),
-        Some(_) => return Err(bad("-o: the output must end in .csv or .json".into())),
-    };
+    let file_format = o.output.as_deref().map(Format::of_file).transpose();
+    let file_format = file_format.map_err(|e| bad(format!("-o: {e}")))?;
     let machs = parse_machs(&o.mach).map_err(&bad)?;
     let options = Options {
         samples: o.samples,
@@ -103,14 +96,12 @@ pub fn run(o: &Args) -> Result<(), Failure> {
     bar.finish_and_clear();
     // every output from the one view, every number in it finite
     let view = UncertaintyJson::new(&o.config, &study, &options, &results).checked()?;
-    if let (Some(out), Some(json)) = (&o.output, json_out) {
-        write(Path::new(out), json, &view)?;
+    if let (Some(out), Some(format)) = (&o.output, file_format) {
+        write(Path::new(out), format, &o.config, &view)?;
     }
-    if o.json {
-        crate::output::print_json(&o.config, &view)
-    } else {
-        crate::output::print(&page(&view, &study.factor_names(), o, sampling))
-    }
+    crate::output::print_as(Format::printed(o.json), &o.config, &view, || {
+        Ok(page(&view, &study.factor_names(), o, sampling))
+    })
 }
 
 /// The config's study and its sampling (the command line's `--sampling`,
@@ -142,18 +133,22 @@ fn progress_bar(total: u64) -> ProgressBar {
     bar
 }
 
-/// OUT written atomically: the JSON view or the long CSV.
-fn write(out: &Path, json: bool, view: &UncertaintyJson<'_>) -> Result<(), Failure> {
+/// OUT written atomically in `format`: the JSON view or the long CSV (a
+/// result of the config `source`).
+fn write(
+    out: &Path,
+    format: Format,
+    source: &str,
+    view: &UncertaintyJson<'_>,
+) -> Result<(), Failure> {
     let write_err = |e: std::io::Error| Failure::Io(write_error(out, &e));
-    let text = if json {
-        serde_json::to_string_pretty(view).unwrap_or_default() + "\n"
-    } else {
+    let text = format.document(source, view, || {
         let mut s = format!("{CSV_HEADER}\n");
         view.results
             .iter()
             .for_each(|r| s.push_str(&csv_rows_of(r)));
-        s
-    };
+        Ok(s)
+    })?;
     let mut file = AtomicFile::create(out).map_err(write_err)?;
     file.write_all(text.as_bytes()).map_err(write_err)?;
     file.commit().map_err(write_err)

@@ -1,9 +1,9 @@
 //! A sweep as the front ends ask for it: the axes from ranges
 //! (`A:B:STEP`, a list `A,B,…`, or one value) or the base design point's
-//! values, each within its range ([`crate::limits`]); the grid with each
-//! value's text; and the rows as CSV or JSON, in the columns of
-//! [`stability_core::sweep::columns`], numbers in their shortest
-//! round-trip form.
+//! values, each within its range ([`crate::limits`]); the grid; and its
+//! rows as CSV or JSON ([`crate::format::Table`]), in the columns of one
+//! table ([`columns::COLUMNS`]), numbers in their shortest round-trip
+//! form.
 //!
 //! The computation is the library's ([`stability_core::sweep`]).
 
@@ -13,10 +13,12 @@ use stability_core::aero::{Source, TableOrigin};
 use stability_core::case::Case;
 use stability_core::display::{Num, sig};
 use stability_core::grid;
-use stability_core::sweep::{
-    Axes, Cell, DIMS, ERROR_COLUMN, PointError, Points, RESULT_COLUMNS, SECONDS_COLUMNS, Seconds,
-    Sweep, SweepError, columns, derivative_columns,
-};
+use stability_core::sweep::{Axes, PointError, Sweep, SweepError};
+
+pub mod columns;
+
+use crate::format::{Record, Repeated, Table};
+pub use columns::{Column, Point, Value};
 
 /// The most values one range may have.
 pub const MAX_RANGE_VALUES: usize = 10_000_000;
@@ -275,11 +277,10 @@ pub fn check_flight_limits(sweep: &Sweep) -> Result<(), String> {
     Ok(())
 }
 
-/// The library's grid, and each axis's values as written (formatted once,
-/// not once per row).
+/// The library's grid, whose rows are written in the columns of
+/// [`columns::COLUMNS`].
 pub struct Grid {
     pub sweep: Sweep,
-    text: [Vec<Box<str>>; 5],
     /// Whether the flight condition is physical: each point's μ₁ and i_B
     /// are then its planform's and condition's, written beside its
     /// altitude, mass and I_y.
@@ -295,21 +296,9 @@ impl Grid {
             Some(p) => Sweep::physical(base, axes, &p.condition)?,
             None => Sweep::new(base, axes)?,
         };
-        let axes = sweep.axes();
-        let mut num = zmij::Buffer::new();
-        let mut text =
-            |v: &[f64]| -> Vec<Box<str>> { v.iter().map(|&x| num.format(x).into()).collect() };
-        let text = [
-            text(&axes.mach),
-            text(&axes.sweep_deg),
-            text(&axes.cg),
-            text(&axes.mu1),
-            text(&axes.i_b),
-        ];
         Ok(Grid {
             physical: physical.is_some(),
             sweep,
-            text,
         })
     }
 
@@ -324,220 +313,56 @@ impl Grid {
     }
 
     /// The columns of the rows.
-    pub fn columns(&self, derivatives: bool) -> Vec<&'static str> {
-        columns(derivatives, self.is_physical())
-    }
-
-    /// The grid values as written of the point of indices `idx`.
-    fn head(&self, idx: [usize; DIMS]) -> [&str; 5] {
-        std::array::from_fn(|k| &*self.text[k][idx[k]])
+    pub fn columns(&self, derivatives: bool) -> impl Iterator<Item = &'static Column> {
+        columns::columns(derivatives, self.physical)
     }
 
     /// Evaluates points `range` of the grid (the library's lean path,
     /// reusing the aerodynamics across μ₁ and i_B where the model allows)
-    /// and writes them as rows into one buffer: CSV lines, or JSON objects
-    /// separated by `,\n` (the first preceded by it too unless it is the
-    /// grid's first point).
-    pub fn rows(&self, range: std::ops::Range<usize>, format: Format) -> Vec<u8> {
+    /// and writes them as records of `table` into one buffer, in the
+    /// columns of [`Grid::columns`] (the first record preceded by the
+    /// separator from the one before unless it is the grid's first point).
+    pub fn rows(&self, range: std::ops::Range<usize>, table: Table, derivatives: bool) -> Vec<u8> {
         let mut out = Vec::with_capacity(range.len() * 280);
-        let points = self.sweep.evaluate(range.clone(), format.derivatives);
+        let points = self.sweep.evaluate(range.clone(), derivatives);
+        let columns: Vec<&Column> = self.columns(derivatives).collect();
         let mut errors = points.errors.iter().peekable();
+        let sweeps = &self.sweep.axes().sweep_deg;
+        // the grid's values, formatted once per change
+        let mut last = vec![Repeated::default(); columns.len()];
         let indices = self.sweep.indices(range.clone());
         for (k, (i, idx)) in range.zip(indices).enumerate() {
-            if format.json && i > 0 {
-                out.extend_from_slice(b",\n");
-            }
-            let r = match errors.peek() {
-                Some((at, e)) if *at == k => {
-                    errors.next();
-                    Err(e)
-                }
-                _ => Ok((&points, k)),
+            let error = errors.next_if(|(at, _)| *at == k).map(|(_, e)| e);
+            let flight = match (self.physical, error) {
+                (true, None) => self.sweep.flight_point(i),
+                _ => None,
             };
-            let seconds = self.physical.then(|| {
-                let point = r.is_ok().then(|| self.sweep.flight_point(i)).flatten();
-                points.seconds(k, point)
-            });
-            // at a physical condition μ₁ and i_B are the point's own, with
-            // its altitude, mass and I_y
-            let flight = self.physical.then(|| {
-                let p = &points;
-                [p.mu1[k], p.i_b[k], p.altitude[k], p.mass[k], p.i_y[k]]
-            });
-            let head = Head {
-                text: self.head(idx),
-                flight,
-            };
-            write_point(&mut out, head, r, format, seconds);
-            if !format.json {
-                out.push(b'\n');
-            }
+            let point = Point::new(&points, k, sweeps[idx[1]], flight);
+            let mut record = table.record(&mut out, i == 0);
+            write_point(&mut record, &columns, &point, error, &mut last);
+            record.end();
         }
         out
     }
 }
 
-/// How rows are written.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Format {
-    /// JSON objects (else CSV lines).
-    pub json: bool,
-    /// With the quartic inputs ([`derivative_columns`]).
-    pub derivatives: bool,
-}
-
-/// Formats one row (CSV) or object (JSON) into a byte buffer, numbers in
-/// their shortest round-trip form.
-struct Row<'a> {
-    out: &'a mut Vec<u8>,
-    num: zmij::Buffer,
-    json: bool,
-    first: bool,
-}
-
-impl Row<'_> {
-    fn key(&mut self, name: &str) {
-        if !self.first {
-            self.out.push(b',');
-        }
-        self.first = false;
-        if self.json {
-            self.out.push(b'"');
-            self.out.extend_from_slice(name.as_bytes());
-            self.out.extend_from_slice(b"\":");
-        }
-    }
-
-    fn number(&mut self, name: &str, v: Option<f64>) {
-        self.key(name);
-        match v.filter(|x| x.is_finite()) {
-            Some(x) => self
-                .out
-                .extend_from_slice(self.num.format_finite(x).as_bytes()),
-            None if self.json => self.out.extend_from_slice(b"null"),
-            None => {}
-        }
-    }
-
-    fn word(&mut self, name: &str, w: &str) {
-        self.key(name);
-        if self.json {
-            self.out.push(b'"');
-        }
-        self.out.extend_from_slice(w.as_bytes());
-        if self.json {
-            self.out.push(b'"');
-        }
-    }
-
-    fn boolean(&mut self, name: &str, b: bool) {
-        self.key(name);
-        self.out
-            .extend_from_slice(if b { b"true" as &[u8] } else { b"false" });
-    }
-
-    fn text(&mut self, name: &str, t: &str) {
-        self.key(name);
-        if self.json {
-            let quoted = serde_json::to_string(t).unwrap_or_else(|_| "\"?\"".into());
-            self.out.extend_from_slice(quoted.as_bytes());
-        } else {
-            self.out.extend_from_slice(crate::csv::field(t).as_bytes());
-        }
-    }
-}
-
-/// A row's grid values: the axes as written, and at a physical flight
-/// condition the point's μ₁, i_B, altitude, mass and I_y (in place of the
-/// μ₁ and i_B axes).
-struct Head<'a> {
-    text: [&'a str; 5],
-    flight: Option<[f64; 5]>,
-}
-
+/// A point's record in `columns`: its grid values, then its results or,
+/// where it has none, why.
 fn write_point(
-    out: &mut Vec<u8>,
-    head: Head<'_>,
-    r: Result<(&Points, usize), &PointError>,
-    format: Format,
-    seconds: Option<Seconds>,
+    r: &mut Record<'_>,
+    columns: &[&Column],
+    p: &Point<'_>,
+    error: Option<&PointError>,
+    last: &mut [Repeated],
 ) {
-    if format.json {
-        out.push(b'{');
-    }
-    let mut row = Row {
-        out,
-        num: zmij::Buffer::new(),
-        json: format.json,
-        first: true,
-    };
-    let given = if head.flight.is_some() { 3 } else { 5 };
-    for (name, v) in Axes::NAMES.iter().zip(head.text).take(given) {
-        row.key(name);
-        row.out.extend_from_slice(v.as_bytes());
-    }
-    if let Some(values) = head.flight {
-        let names = ["mu1", "i_b"].iter().chain(&Axes::FLIGHT_NAMES);
-        for (name, v) in names.zip(values) {
-            row.number(name, Some(v));
-        }
-    }
-    match r {
-        Ok((p, k)) => {
-            results(&mut row, p, k, format.derivatives, seconds);
-            if !format.json {
-                row.key(ERROR_COLUMN);
-            }
-        }
-        Err(e) => {
-            if !format.json {
-                let physical = seconds.is_some();
-                let n = RESULT_COLUMNS.len()
-                    + seconds.map_or(0, |s| s.len())
-                    + if format.derivatives {
-                        derivative_columns(physical).len()
-                    } else {
-                        0
-                    };
-                for _ in 0..n {
-                    row.key("");
-                }
-            }
-            row.text(ERROR_COLUMN, &e.to_string());
-        }
-    }
-    if format.json {
-        row.out.push(b'}');
-    }
-}
-
-/// Point `k`'s results ([`Points::results`]), the modes in seconds and the
-/// derivatives when asked for.
-fn results(
-    row: &mut Row<'_>,
-    p: &Points,
-    k: usize,
-    with_derivatives: bool,
-    seconds: Option<Seconds>,
-) {
-    let tau = seconds.and_then(|s| s[2]);
-    for (name, cell) in RESULT_COLUMNS.iter().zip(p.results(k, tau)) {
-        match cell {
-            Cell::Bool(b) => row.boolean(name, b),
-            Cell::Word(w) => row.word(name, w),
-            Cell::Number(v) => row.number(name, v),
-        }
-    }
-    if let Some(values) = seconds {
-        for (name, v) in SECONDS_COLUMNS.iter().zip(values) {
-            row.number(name, v);
-        }
-    }
-    if let (true, Some(ds)) = (with_derivatives, &p.derivatives) {
-        let names = derivative_columns(seconds.is_some());
-        let values = ds[k].quartic_input_values();
-        for (name, v) in names.iter().zip(values) {
-            row.number(name, Some(v));
+    for (c, last) in columns.iter().zip(last) {
+        match (c.value, error) {
+            (Value::Grid(v), _) => r.repeated(c.name, v(p), last),
+            (Value::Error, Some(e)) => r.text(c.name, &e.to_string()),
+            (_, Some(_)) | (Value::Error, None) => r.absent(),
+            (Value::Number(v), None) => r.number(c.name, v(p)),
+            (Value::Bool(v), None) => r.boolean(c.name, v(p)),
+            (Value::Word(v), None) => r.word(c.name, v(p)),
         }
     }
 }
