@@ -413,6 +413,11 @@ fn main() -> ExitCode {
     // run's temporary files and directories before it exits
     delta_stability::output::remove_temporaries_on_signals();
     let cli = Cli::parse();
+    // the note's wings' Mach box and near-sonic solutions, solved ahead of
+    // time (`cargo xtask tables`), into the store: a cache, checked by the
+    // solvers' fingerprints (a stale file is refused whole and every
+    // solution solved afresh; `report` says so)
+    let _ = stability_study::study::preload();
     let result = match cli.command {
         Command::Quartic(a) => cmd::quartic::run(&a),
         Command::Sensitivity(a) => cmd::sensitivity::run(&a),

@@ -18,8 +18,8 @@ pub const NEWTON_PER_LBF: f64 = 0.453_592_37 * STANDARD_GRAVITY;
 pub const KG_PER_SLUG: f64 = NEWTON_PER_LBF / FOOT;
 
 /// The handbooks' g in ft/s², 32.174 (g₀/0.3048 = 32.174 05 to more
-/// digits): the default g of a dimensional set in feet, as NASA CR-2144 and
-/// issue 12 state it.
+/// digits): the default g of a dimensional set in feet, as NASA CR-2144
+/// states it.
 pub const HANDBOOK_G_FT: f64 = 32.174;
 
 /// A system of units.

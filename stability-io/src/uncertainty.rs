@@ -1,4 +1,4 @@
-//! The results of an uncertainty study (issue 23) as JSON and CSV: what
+//! The results of an uncertainty study as JSON and CSV: what
 //! `delta-stability uncertainty` writes and Python's `uncertainty()`
 //! returns.
 //!

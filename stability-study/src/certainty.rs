@@ -1,4 +1,4 @@
-//! "How sure are the headline conclusions?" (issue 23): the note's two
+//! "How sure are the headline conclusions?": the note's two
 //! headline conclusions (Summary; §9, Fig 33) as probabilities, under
 //! stated distributions of the inputs it does not pin down — i_B and
 //! C_L·M² (which it does not state), the c.g. (its Fig 26 moves it) and the
@@ -110,6 +110,7 @@ impl Headline {
     /// when `sobol_samples` > 0, again with that many rows of the Saltelli
     /// design (the indices).
     pub fn answer(&'static self, samples: u64, sobol_samples: u64) -> Result<Answer, String> {
+        let _ = crate::study::preload();
         let (study, sampling) = self.study()?;
         let machs = self.mach_numbers();
         let options = Options {

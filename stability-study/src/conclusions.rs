@@ -27,9 +27,9 @@
 use super::standard::CGS;
 use super::study::{Assumed, Assumption, Study, WINGS};
 use super::summary::{CROPPED_TAPER, Findings, SWEEPS_ABOUT_60, Worst, show_intervals};
+use crate::study::{NOTE_SUPERSONIC, SUBCRITICAL};
 use serde::Serialize;
 use stability_core::display::sig;
-use stability_core::faired::{LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM};
 use stability_core::study::intervals;
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -397,7 +397,7 @@ fn subcritical_trend(f: &Findings) -> Assessment {
         agreement,
         computed: format!("Eq (45) per unit t̂ over {span}: {d}; {w}."),
         tolerance: format!(
-            "both rise by ≥ {} over M ≤ {LIFTING_SURFACE_LIMIT}, never falling by more than {} a step (in part: one rises)",
+            "both rise by ≥ {} over M ≤ {SUBCRITICAL}, never falling by more than {} a step (in part: one rises)",
             percent(APPARENT_RISE),
             percent(STEP_SLACK)
         ),
@@ -431,7 +431,7 @@ fn mwdot_negligible(f: &Findings) -> Assessment {
     Assessment {
         agreement: Agreement::at_least(-worst, -MWDOT_AGREES, -MWDOT_PARTLY),
         computed: format!(
-            "m_ẇ's share of the short period's damping b (eq 45) at M ≤ {LIFTING_SURFACE_LIMIT}: {}.",
+            "m_ẇ's share of the short period's damping b (eq 45) at M ≤ {SUBCRITICAL}: {}.",
             parts.join("; ")
         ),
         tolerance: format!(
@@ -461,7 +461,7 @@ fn m_thetadot_positive_45(f: &Findings) -> Assessment {
     Assessment {
         agreement,
         computed: format!(
-            "m_θ̇ of (36) at M = {SUPERSONIC_FROM}: {}, {}, {}; positive at x₀/c₀ {} ({n} of {} points).",
+            "m_θ̇ of (36) at M = {NOTE_SUPERSONIC}: {}, {}, {}; positive at x₀/c₀ {} ({n} of {} points).",
             show(0),
             show(v.len() / 2),
             show(v.len().saturating_sub(1)),
@@ -512,7 +512,7 @@ fn cropping(f: &Findings) -> Assessment {
     Assessment {
         agreement,
         computed: format!(
-            "−m_θ̇ at M = {SUPERSONIC_FROM}, tips cropped to taper 1/{} with the c.g. in place: {}.",
+            "−m_θ̇ at M = {NOTE_SUPERSONIC}, tips cropped to taper 1/{} with the c.g. in place: {}.",
             (1.0 / CROPPED_TAPER).round(),
             parts.join("; ")
         ),

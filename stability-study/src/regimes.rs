@@ -1,32 +1,38 @@
 //! What the figures against Mach number show behind their curves: where a
-//! curve is faired between theories (a shaded band, "faired between
-//! theories" in the legend; the theories on either side named along the
+//! curve is joined between theories (a shaded band, labelled in the
+//! damping model's own words; the theories on either side named along the
 //! top), and where each wing's leading edge turns sonic (a labelled dashed
-//! line). Each is read from the library, where it is defined once:
+//! line). Each is asked of the damping model
+//! (`stability_core::aerodynamics::models::damping_model::DampingModel`),
+//! where it is defined once:
 //!
-//! - the damping derivatives' joins (Figs 19–24): the faired model's
-//!   regimes, `stability_core::faired::regimes` — lifting surface to 0.9,
-//!   faired to Mangler's theory at 1 and on to linear theory at 1.2;
-//! - the coefficients' joins (Figs 2–3, 5–12): as the study's results say
-//!   their coefficients were had (`aero::Origin`) — the methods of
+//! - the damping derivatives' joins (Figs 19–24): the model's regimes'
+//!   joins ([`DampingModel::damping_joins`]: the default `faired`'s one
+//!   join through the sonic point, from 0.99 to the Mach box's first Mach
+//!   number);
+//! - the coefficients' joins: as the study's results say their
+//!   coefficients were had (`aero::Origin`) — a coefficient of a model's
+//!   own theory has that model's joins ([`DampingModel::coefficient_joins`]),
+//!   and on the coefficient figures (Figs 2–3, 5–12) the methods of
 //!   `aero::defaults` are faired between `SUBSONIC_LIMIT` and
-//!   `SUPERSONIC_LIMIT` (0.8 to 1.2); a coefficient of the faired model's
-//!   own theories has its joins;
+//!   `SUPERSONIC_LIMIT` (0.8 to 1.2);
 //! - the figures built on both (the standard, the quartic, the margins,
-//!   taper: Figs 25–36) shade the union;
+//!   taper: Figs 25–36) shade the union of the damping joins and the
+//!   model's own coefficients' joins (the drag methods' fairing enters them
+//!   only through C_D in z_w, and is not a join of theories);
 //! - the sonic leading edge, M = 1/cos Λ (`geometry::sonic_leading_edge_mach`:
-//!   45°, √2; 60°, 2), where the supersonic theories change — (36) to the
-//!   supersonic-edge theory in the faired model, the lift slope's two forms
-//!   in the methods.
+//!   45°, √2; 60°, 2), where the supersonic theories change — the Mach box's
+//!   edges in the default model, the lift slope's two forms in the methods.
 //!
 //! Not on the figures of one theory (13, 16–18: Figs 16–17 get the sonic
 //! edge alone, where (36) ends), against aspect ratio (4, 14–15), edge
 //! parameter (1) or time (37–38).
 
 use super::Study;
-use stability_core::aero::{Origin, defaults};
+use stability_core::aero::{Origin, OwnTheory, defaults};
+use stability_core::aerodynamics::models::regime::{Regime, RegimeKind};
 use stability_core::case::{CaseResult, DampingModel};
-use stability_core::faired::{self, RegimeKind};
+use stability_core::damping::Theory;
 use stability_core::geometry::{Planform, Size, sonic_leading_edge_mach};
 use stability_io::plot::{Band, Figure, VerticalLine};
 
@@ -41,18 +47,18 @@ pub enum Basis {
     Both,
 }
 
-/// The note's delta of leading-edge sweep `deg` (degrees), as the faired
+/// The note's delta of leading-edge sweep `deg` (degrees), as the damping
 /// model's regimes take it.
 fn delta(deg: f64) -> Option<Planform> {
     Planform::new(deg.to_radians(), 0.0, Size::RootChord(1.0)).ok()
 }
 
-/// The faired model's regimes of the delta of sweep `deg`.
-fn regimes(deg: f64) -> Vec<faired::Regime> {
-    delta(deg).map_or_else(Vec::new, |p| faired::regimes(&p))
+/// The default damping model's regimes of the delta of sweep `deg`.
+fn regimes(deg: f64) -> Vec<Regime> {
+    delta(deg).map_or_else(Vec::new, |p| DampingModel::default().regimes(&p))
 }
 
-/// The bands' label, the faired model's own words.
+/// The bands' label, the default model's own words.
 pub(crate) fn faired_label() -> &'static str {
     regimes(45.0)
         .iter()
@@ -60,39 +66,37 @@ pub(crate) fn faired_label() -> &'static str {
         .map_or("faired between theories", |r| r.label)
 }
 
-/// The damping derivatives' joins for the wings of sweeps `sweeps`.
+/// The default model's damping derivatives' joins for the wings of sweeps
+/// `sweeps`.
 pub(crate) fn damping_joins(sweeps: &[f64]) -> Vec<(f64, f64)> {
     sweeps
         .iter()
         .filter_map(|&deg| delta(deg))
-        .flat_map(|p| model_damping_joins(DampingModel::Faired, &p))
+        .flat_map(|p| DampingModel::default().damping_joins(&p))
         .collect()
 }
 
-/// The damping derivatives' joins of the fairing `model` on `planform`
-/// (none for a single theory).
+/// The damping derivatives' joins of `model` on `planform` (none for a
+/// single theory): [`DampingModel::damping_joins`].
 pub fn model_damping_joins(model: DampingModel, planform: &Planform) -> Vec<(f64, f64)> {
-    let regimes = match model {
-        DampingModel::Faired => faired::regimes(planform),
-        DampingModel::FairedTheories => faired::theories::regimes(planform),
-        _ => Vec::new(),
-    };
-    regimes
-        .iter()
-        .filter(|r| r.kind == RegimeKind::Faired)
-        .map(|r| (r.from, r.to))
-        .collect()
+    model.damping_joins(planform)
 }
 
-/// The coefficients' joins, as the results (of the wings `planforms`)
-/// had them: the methods' band, the default model's (and the lifting
-/// surface's) join through the sonic point, `faired-theories`' joins.
+/// The coefficients' joins, as the results (of the wings `planforms`) had
+/// them: a model's own theory's joins, and with `methods` the default
+/// methods' band.
 pub fn coefficient_joins<'a>(
     results: impl Iterator<Item = &'a CaseResult>,
     planforms: &[Planform],
+    methods: bool,
 ) -> Vec<(f64, f64)> {
-    let methods = (defaults::SUBSONIC_LIMIT, defaults::SUPERSONIC_LIMIT);
-    let sonic: Vec<(f64, f64)> = planforms.iter().filter_map(faired::sonic_join).collect();
+    let band = (defaults::SUBSONIC_LIMIT, defaults::SUPERSONIC_LIMIT);
+    let of = |model: DampingModel| -> Vec<(f64, f64)> {
+        planforms
+            .iter()
+            .flat_map(|p| model.coefficient_joins(p))
+            .collect()
+    };
     let mut out = Vec::new();
     for r in results {
         let o = r.coefficients.origin;
@@ -103,12 +107,13 @@ pub fn coefficient_joins<'a>(
             o.aerodynamic_centre,
         ] {
             match origin {
-                Origin::Method => out.push(methods),
-                Origin::DampingModel("lifting-surface") | Origin::LiftingSurface => {
-                    out.extend(sonic.iter().copied())
+                Origin::Method if methods => out.push(band),
+                Origin::DampingModel(OwnTheory::Theory(Theory::LiftingSurface))
+                | Origin::LiftingSurface => out.extend(of(DampingModel::Faired)),
+                Origin::DampingModel(OwnTheory::Joined) => {
+                    out.extend(of(DampingModel::FairedTheories))
                 }
-                Origin::DampingModel(_) => out.extend(faired::JOINS),
-                Origin::Table | Origin::Datcom => {}
+                _ => {}
             }
         }
     }
@@ -139,6 +144,7 @@ pub fn faired(mut fig: Figure, study: &Study, sweeps: &[f64], basis: Basis) -> F
         joins.extend(coefficient_joins(
             study.results.iter().flatten().flatten(),
             &planforms,
+            basis == Basis::Coefficients,
         ));
     }
     if basis != Basis::Coefficients {
@@ -210,7 +216,7 @@ mod tests {
                 .unwrap();
             assert_eq!(sup.from, x, "{deg}°");
             let p = delta(deg).unwrap();
-            let old = faired::theories::regimes(&p);
+            let old = DampingModel::FairedTheories.regimes(&p);
             let sup = old
                 .iter()
                 .find(|r| r.kind == RegimeKind::SupersonicEdge)
@@ -248,11 +254,15 @@ mod tests {
             .collect();
         let p45 = [delta(45.0).unwrap()];
         assert_eq!(
-            merged(coefficient_joins(faired.iter(), &p45)),
+            merged(coefficient_joins(faired.iter(), &p45, true)),
             vec![(0.8, 1.2)]
         );
         assert_eq!(results.len(), ms.len());
-        let bands = merged(coefficient_joins(results.iter().map(|(_, r)| r), &p45));
+        let bands = merged(coefficient_joins(
+            results.iter().map(|(_, r)| r),
+            &p45,
+            true,
+        ));
         let [(from, to)] = bands[..] else {
             panic!("{bands:?}")
         };
@@ -284,13 +294,13 @@ mod tests {
         let [(from, to)] = merged(damping_joins(&[45.0, 60.0]))[..] else {
             panic!()
         };
-        assert_eq!(from, faired::SONIC_JOIN);
+        assert_eq!(from, stability_core::faired::SONIC_JOIN);
         assert!((to - 1.0164).abs() < 1e-3 && to < 1.03, "{to}");
         // the note's fairing's two joins touch at M = 1: 0.9 to 1.2
         let p = delta(45.0).unwrap();
         assert_eq!(
             merged(model_damping_joins(DampingModel::FairedTheories, &p)),
-            vec![(faired::LIFTING_SURFACE_LIMIT, faired::SUPERSONIC_FROM)]
+            vec![(0.9, 1.2)]
         );
     }
 }

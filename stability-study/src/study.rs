@@ -7,7 +7,7 @@
 use rayon::prelude::*;
 use stability_core::case::{Case, CaseResult, DampingModel, evaluate_harmonic};
 use stability_core::damping::Theory;
-use stability_core::faired::LIFTING_SURFACE_LIMIT;
+use stability_core::geometry::{Planform, Size};
 use stability_core::lifting_surface::Harmonic;
 use stability_core::study::{grid, report_wing};
 use stability_io::plot::{Figure, Series};
@@ -15,14 +15,30 @@ use stability_io::plot::{Figure, Series};
 /// The note's two wings, by leading-edge sweep (degrees).
 pub const WINGS: [f64; 2] = [45.0, 60.0];
 
-/// The Mach numbers of the figures: 0.5 to 0.9 in steps of 0.05, where the
-/// faired model is the lifting surface — smooth in Mach number, and one
-/// lattice (a frequency table) per wing and Mach number — then in steps of
-/// 0.01 to 2.0, through the joins and the supersonic theories, where the
-/// curves turn.
+/// The note's sub-critical speeds, M ≤ 0.9: where it finds the damping and
+/// frequency rising with Mach number and m_ẇ negligible (§7 (a), §11), and
+/// where it trusts lifting-surface theory ("a reliable prediction of the
+/// effects of compressibility up to a Mach number of about 0.9", §7).
+pub const SUBCRITICAL: f64 = 0.9;
+
+/// The Mach number at which the note applies supersonic theory (36) to its
+/// wings (§7, §10, Fig 17: "at M = 1.2").
+pub const NOTE_SUPERSONIC: f64 = 1.2;
+
+/// The Mach numbers of the figures: from 0.5 in steps of 0.05 while the
+/// default damping model is the plain lattice on both wings — smooth in
+/// Mach number, one lattice per wing and Mach number — then in steps of
+/// 0.01 to 2.0, through the refined lattice, the join and the Mach box,
+/// where the curves turn (the model's first regime's end:
+/// `DampingModel::regimes`).
 pub fn machs() -> Vec<f64> {
-    let mut ms = grid(0.5, LIFTING_SURFACE_LIMIT, 0.05);
-    ms.extend(grid(LIFTING_SURFACE_LIMIT + 0.01, 2.0, 0.01));
+    let coarse_to = WINGS
+        .iter()
+        .filter_map(|&deg| Planform::new(deg.to_radians(), 0.0, Size::RootChord(1.0)).ok())
+        .filter_map(|p| DampingModel::default().regimes(&p).first().map(|r| r.to))
+        .fold(2.0, f64::min);
+    let mut ms = grid(0.5, coarse_to, 0.05);
+    ms.extend(grid(coarse_to + 0.01, 2.0, 0.01));
     ms
 }
 
@@ -252,8 +268,7 @@ impl Study {
 /// The lifting-surface solutions the study needs, solved ahead of time
 /// (`cargo xtask tables`): the Mach box's and the near-sonic lattice's,
 /// which take seconds each to solve.
-pub const PRECOMPUTED: &str =
-    include_str!("../data/lifting-surface-solutions.csv");
+pub const PRECOMPUTED: &str = include_str!("../data/lifting-surface-solutions.csv");
 
 /// Puts [`PRECOMPUTED`] into the store of solutions (once per process), so
 /// that the study need not solve them: how many. A stale file (made by

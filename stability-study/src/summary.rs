@@ -16,13 +16,13 @@ use super::quartic::cycles;
 use super::standard::{CGS, margin};
 use super::study::{Assumed, WINGS};
 use crate::certainty::{Certainty, CertaintyJson};
+use crate::study::{NOTE_SUPERSONIC, SUBCRITICAL};
 use crate::tail::{TailJson, TailNeeded};
 use rayon::prelude::*;
 use serde::Serialize;
 use stability_core::case::{Case, CaseResult};
 use stability_core::criteria::Verdict;
 use stability_core::damping::{Theory, WingInput, damping_derivatives};
-use stability_core::faired::{LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM};
 use stability_core::geometry::{Planform, Size, cropped_h};
 use stability_core::response::TwoDof;
 use stability_core::study::{grid, intervals, max_mu1_one_cycle, report_wing};
@@ -232,9 +232,7 @@ fn subcritical_results(study: &Study, k: usize) -> impl Iterator<Item = (f64, &C
         .ms
         .iter()
         .zip(&study.results[k])
-        .filter(|(m, _)| {
-            stability_core::grid::within(**m, f64::NEG_INFINITY, LIFTING_SURFACE_LIMIT)
-        })
+        .filter(|(m, _)| stability_core::grid::within(**m, f64::NEG_INFINITY, SUBCRITICAL))
         .filter_map(|(&m, r)| Some((m, r.as_ref()?)))
 }
 
@@ -326,7 +324,7 @@ impl Findings {
     /// on the unstated inputs.)
     pub fn m_thetadot_36(&self) -> &[(f64, f64)] {
         self.m_thetadot_36.get_or_init(|| {
-            let case = report_wing(WINGS[0], SUPERSONIC_FROM);
+            let case = report_wing(WINGS[0], NOTE_SUPERSONIC);
             let wing = WingInput::from(&case.planform);
             practical_cg_range()
                 .iter()
@@ -349,7 +347,7 @@ impl Findings {
 
     fn crop(&self, deg: f64) -> Option<Cropping> {
         let sweep = deg.to_radians();
-        let case = self.study.case(deg, SUPERSONIC_FROM);
+        let case = self.study.case(deg, NOTE_SUPERSONIC);
         let h = cropped_h(case.h, sweep, CROPPED_TAPER).ok()?;
         let planform = Planform::new(
             sweep,

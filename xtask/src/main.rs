@@ -65,7 +65,7 @@ cargo xtask bench-report
 Times the main job, `delta-stability report` (release), three times on every
 core and three times on one (RAYON_NUM_THREADS=1), each a fresh process
 whose lattice solves start from an empty cache; prints the medians, their
-ratio and the share of the 10 s budget (issue 11). Writes
+ratio and the share of the 10 s budget. Writes
 target/bench/report-time.md.";
 
 fn main() -> ExitCode {
@@ -116,10 +116,13 @@ fn tables(root: &Path, mode: Tables) -> Result<(), String> {
     if mode == Tables::Check {
         file.as_ref().map_err(|e| format!("{TABLES}: {e}"))?;
     }
-    eprintln!("computing the note's study ({}) …", match mode {
-        Tables::Afresh => "every solution solved: about a quarter of an hour on 2 cores",
-        _ => "the file's solutions preloaded",
-    });
+    eprintln!(
+        "computing the note's study ({}) …",
+        match mode {
+            Tables::Afresh => "every solution solved: about a quarter of an hour on 2 cores",
+            _ => "the file's solutions preloaded",
+        }
+    );
     let quiet = |_: stability_study::report::Step<'_>| Ok::<(), std::convert::Infallible>(());
     let report = match mode {
         Tables::Afresh => Report::compute_afresh(quiet),
@@ -145,7 +148,8 @@ fn tables(root: &Path, mode: Tables) -> Result<(), String> {
         }
         Tables::Afresh | Tables::Add => {
             let n = used.len();
-            std::fs::write(&path, Precomputed::write(used)).map_err(|e| format!("{}: {e}", path.display()))?;
+            std::fs::write(&path, Precomputed::write(used))
+                .map_err(|e| format!("{}: {e}", path.display()))?;
             println!("wrote {} ({n} solutions)", path.display());
         }
     }

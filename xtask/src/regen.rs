@@ -43,7 +43,7 @@ const QUARTIC_SPECS: &[QuarticSpec] = &[
         expansion: "docs/generated/quartic-expansion.txt",
         generated: "docs/generated/quartic.rs.txt",
     },
-    // The general dimensional model (issue 12): eq (4) is its special case.
+    // The general dimensional model: eq (4) is its special case.
     QuarticSpec {
         spec: "stability-core/specs/dimensional.toml",
         ty: "DescriptorSystem",

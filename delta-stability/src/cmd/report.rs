@@ -150,11 +150,7 @@ pub fn run(args: &Args) -> Result<(), Failure> {
 /// The note's report ([`Report::compute`]) written through `write`, each
 /// figure as soon as it is drawn, the bar showing each step: its figures'
 /// count and the terminal's summary.
-fn contents(
-    write: &Write<'_>,
-    out: &Path,
-    bar: &ProgressBar,
-) -> Result<(usize, String), Failure> {
+fn contents(write: &Write<'_>, out: &Path, bar: &ProgressBar) -> Result<(usize, String), Failure> {
     let on = |step: Step<'_>| -> Result<(), Failure> {
         match step {
             Step::Begins(what) => bar.set_message(what.to_string()),

@@ -13,6 +13,8 @@ use stability_core::study::report_wing;
 
 /// examples/delta-45.toml's design point at `mach`, as the library sees it.
 fn delta_45(mach: f64, damping: Theory, aero: AeroModelName) -> Case {
+    // the note's Mach box solutions, as the command line has them
+    let _ = stability_study::study::preload();
     Case {
         planform: stability_core::geometry::Planform::new(
             45f64.to_radians(),

@@ -48,12 +48,39 @@ impl From<&Planform> for WingInput {
 /// z_q, m_q, z_ẇ, m_ẇ.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct TheoryCoefficients {
-    /// The damping model's name (`supersonic`).
-    pub model: &'static str,
+    /// Which theory gave them.
+    pub model: OwnTheory,
     /// a = ∂C_L/∂α (per radian).
     pub lift_slope: Value,
     /// H₀, fraction of the M.A.C. aft of its leading edge.
     pub aerodynamic_centre: Value,
+}
+
+/// The theory a damping model's own coefficients come from: one theory of
+/// the registry, or the join of `faired-theories` between the lattice and
+/// linear supersonic theory. Serializes as the theory's name, the join as
+/// `faired` (the key the output has always had).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OwnTheory {
+    Theory(Theory),
+    /// `faired-theories`' join between two theories.
+    Joined,
+}
+
+impl OwnTheory {
+    /// Its name in the output.
+    pub fn name(self) -> &'static str {
+        match self {
+            OwnTheory::Theory(t) => t.name(),
+            OwnTheory::Joined => "faired",
+        }
+    }
+}
+
+impl Serialize for OwnTheory {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
 }
 
 impl DampingDerivatives {
@@ -340,7 +367,7 @@ pub fn theory_coefficients(
     }
     let c = supersonic::edge_coefficients(&Wing::from(planform), mach)?;
     Ok(Some(TheoryCoefficients {
-        model: theory.name(),
+        model: OwnTheory::Theory(theory),
         lift_slope: c.lift_slope,
         aerodynamic_centre: c.aerodynamic_centre,
     }))

@@ -7,7 +7,7 @@ pub mod verdict;
 
 use crate::criteria::{DampingStandard, FlyingQualities, Routh, ShortPeriodApproximation, Verdict};
 use crate::dynamics::classical::{first_approximation, refine, relative_errors};
-use crate::dynamics::modes::Modes;
+use crate::dynamics::modes::{Axis, Modes};
 use crate::numerics::display::Num;
 use crate::numerics::invalid::Invalid;
 use crate::numerics::roots::{RootsError, solve_quartic};
@@ -206,6 +206,12 @@ impl Characteristic {
             verdict: Verdict::of(&modes),
             modes,
         })
+    }
+
+    /// The axis whose motion the characteristic quartic describes: the
+    /// pitch plane's (eqs 2–4) — the only one today ([`Axis`]).
+    pub fn axis(&self) -> Axis {
+        Axis::Longitudinal
     }
 
     /// Whether every number the analysis would print is finite (absent

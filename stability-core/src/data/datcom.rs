@@ -1,5 +1,5 @@
-//! USAF Digital DATCOM's longitudinal derivatives in the report's notation
-//! (issue 21 item 5): the static CLA, CMA, CD and the dynamic CLQ, CMQ,
+//! USAF Digital DATCOM's longitudinal derivatives in the report's notation:
+//! the static CLA, CMA, CD and the dynamic CLQ, CMQ,
 //! CLAD, CMAD at α = 0, per Mach number, about DATCOM's moment centre on
 //! its reference area and length — made into the tables of
 //! `[model.tables]` ([`crate::aerodynamics::models::aero::Table`], [`crate::aerodynamics::models::derivative_tables`]).

@@ -14,18 +14,15 @@
 
 use crate::Derivatives;
 use crate::aerodynamics::damping::{
-    Damping, DampingDerivatives, DampingError, Theory, UnknownTheory, WingInput,
-    damping_derivatives_with, theory_coefficients, x_q, x_wdot,
+    Damping, DampingDerivatives, DampingError, WingInput, x_q, x_wdot,
 };
 use crate::aerodynamics::lifting_surface::Harmonic;
 use crate::aerodynamics::lifting_surface::configuration::ConfigurationError;
 use crate::aerodynamics::models::aero::{
-    AeroError, AeroModel, Coefficients, Configured, TheoryCoefficients, level_flight_lift,
+    AeroError, AeroModel, Coefficients, Configured, level_flight_lift,
 };
 use crate::aerodynamics::models::derivative_tables::TableUse;
-use crate::aerodynamics::models::faired;
 use crate::aerodynamics::models::stiffness::{Stiffness, stiffness};
-use crate::aerodynamics::theory::Row;
 use crate::aerodynamics::warnings::{Warning, Warnings};
 use crate::analysis::{Analysis, AnalysisError};
 use crate::design::shares::Shares;
@@ -33,177 +30,7 @@ use crate::geometry::Planform;
 use crate::numerics::invalid::{self, Invalid};
 use serde::Serialize;
 
-/// Which damping derivatives a case uses; serializes as its name.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum DampingModel {
-    /// One theory, wherever it is asked for (errors outside its domain).
-    Theory(Theory),
-    /// The default ([`crate::aerodynamics::models::faired`]): one frequency-dependent linear
-    /// lifting-surface theory at the short period's own ω̄ from M = 0 to 3
-    /// — the doublet lattice, its sonic extrapolation at M = 1, the Mach box
-    /// above — with one stated join narrower than ±0.03 about M = 1 through
-    /// the sonic point; linear supersonic theory beyond M = 3; the lift
-    /// slope and aerodynamic centre from the same theory.
-    Faired,
-    /// The theories faired through Mach number as the note built its Figs
-    /// 19–24, `faired-theories` ([`crate::aerodynamics::models::faired::theories`], the default
-    /// until stop 28): lifting-surface theory at the short period's own ω̄
-    /// to M = 0.9, Mangler's transonic theory (38)–(40) at M = 1, linear
-    /// supersonic theory from M = 1.2 ((36), then the supersonic-edge
-    /// theory past the sonic leading edge), joined between by stated
-    /// cubics; the lift slope and aerodynamic centre from the same
-    /// theories.
-    FairedTheories,
-    /// The previous slender-wing fairing, `faired-slender`
-    /// ([`crate::aerodynamics::models::faired::slender_fairing`]): slender-wing theory (37) to
-    /// M = 1, blended into linear supersonic theory over 1 ≤ M ≤ 1.2, (36)
-    /// held at its sonic-leading-edge values past the sonic edge, with a
-    /// warning; quasi-steady, and the default methods' lift slope and
-    /// aerodynamic centre.
-    FairedSlender,
-}
-
-impl Serialize for DampingModel {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.name())
-    }
-}
-
-impl DampingModel {
-    /// Whether the derivatives depend on μ₁ and i_B. They do not, except
-    /// through the frequency parameter ω̄ = s/μ₁ of a frequency-dependent
-    /// theory: μ₁ and i_B enter the equations of motion (eqs 2, 4), not the
-    /// derivatives of §5–7. So a sweep over them need evaluate the
-    /// aerodynamics once per planform, Mach number and c.g. (The warnings
-    /// may depend on them: `supersonic`'s low-frequency rule is checked at
-    /// the short period's ω̄.)
-    pub fn depends_on_mass(self) -> bool {
-        self.uses_frequency()
-    }
-
-    /// Whether the model's derivatives depend on the frequency parameter ω̄
-    /// (at some Mach number) and it is iterated (Mangler's (39)–(40),
-    /// `lifting-surface-frequency`, `faired`).
-    pub fn uses_frequency(self) -> bool {
-        match self {
-            DampingModel::Theory(t) => t.uses_frequency(),
-            DampingModel::Faired | DampingModel::FairedTheories => true,
-            DampingModel::FairedSlender => false,
-        }
-    }
-
-    /// Whether the model's derivatives depend on ω̄ at Mach `mach`: the
-    /// faired model's below [`faired::SUPERSONIC_FROM`] only (linear
-    /// supersonic theory is quasi-steady; it checks its low-frequency rule
-    /// at §9's estimate of the short period's ω̄ as `supersonic` does).
-    pub fn uses_frequency_at(self, mach: f64) -> bool {
-        match self {
-            DampingModel::Faired => mach <= faired::MACH_RANGE_MAX,
-            DampingModel::FairedTheories => mach < faired::SUPERSONIC_FROM,
-            _ => self.uses_frequency(),
-        }
-    }
-
-    /// Every model: the two fairings, then the theories (in the order of
-    /// [`Theory::ALL`]).
-    pub const ALL: [DampingModel; 3 + Theory::ALL.len()] = {
-        let mut out = [DampingModel::Faired; 3 + Theory::ALL.len()];
-        out[1] = DampingModel::FairedTheories;
-        out[2] = DampingModel::FairedSlender;
-        let mut i = 0;
-        while i < Theory::ALL.len() {
-            out[3 + i] = DampingModel::Theory(Theory::ALL[i]);
-            i += 1;
-        }
-        out
-    };
-
-    /// The model's row of the registry ([`crate::aerodynamics::theory`]).
-    pub fn row(self) -> &'static Row {
-        match self {
-            DampingModel::Theory(t) => t.row(),
-            DampingModel::Faired => &FAIRED,
-            DampingModel::FairedTheories => &FAIRED_THEORIES,
-            DampingModel::FairedSlender => &FAIRED_SLENDER,
-        }
-    }
-
-    /// Whether the model takes a frequency parameter ω̄ at all
-    /// ([`Theory::takes_omega_bar`]).
-    pub fn takes_omega_bar(self) -> bool {
-        match self {
-            DampingModel::Theory(t) => t.takes_omega_bar(),
-            DampingModel::Faired | DampingModel::FairedTheories => true,
-            DampingModel::FairedSlender => false,
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        self.row().name
-    }
-
-    /// `faired`, `faired-slender` or a theory's name.
-    pub fn parse(s: &str) -> Result<Self, UnknownDampingModel> {
-        match DampingModel::ALL.into_iter().find(|m| m.name() == s) {
-            Some(m) => Ok(m),
-            None => Err(UnknownDampingModel(s.parse::<Theory>().unwrap_err())),
-        }
-    }
-
-    /// The lift slope and aerodynamic centre the model's own theory gives
-    /// at `mach`, with their Mach derivatives — taken by
-    /// [`aero::Source::Default`](crate::aerodynamics::models::aero::Source::Default) in place of
-    /// the default methods: the supersonic theory's at M > 1
-    /// (`damping::theory_coefficients`), the faired model's everywhere
-    /// ([`faired::coefficients`]). `faired-slender` gives none.
-    pub fn own_coefficients(
-        self,
-        planform: &Planform,
-        mach: f64,
-    ) -> Result<Option<TheoryCoefficients>, DampingError> {
-        match self {
-            DampingModel::Theory(t) => theory_coefficients(t, planform, mach),
-            DampingModel::Faired => faired::coefficients(planform, mach),
-            DampingModel::FairedTheories => faired::theories::coefficients(planform, mach),
-            DampingModel::FairedSlender => Ok(None),
-        }
-    }
-}
-
-/// The default model: one lifting-surface theory through M = 1.
-const FAIRED: Row = Row {
-    name: "faired",
-    equations: "Figs 19–24",
-    summary: "the default: one frequency-dependent linear lifting-surface theory at the short period's own ω̄ from M = 0 to 3 (the doublet lattice, its sonic extrapolation at M = 1, the Mach box), one stated join through the sonic point between M = 0.99 and the Mach box's first Mach number (within ±0.03 of M = 1), linear supersonic theory beyond M = 3; the lift slope and aerodynamic centre from the same theory",
-    validity: "any Mach number (the lifting surface 0 ≤ M ≤ 3); true and cropped deltas, trapezoids",
-    supplies: "z_q, z_ẇ, m_q, m_ẇ, the lift slope and the aerodynamic centre",
-    source: "Albano & Rodden (AIAA J. 7(2), 1969); Pines, Dugundji & Neuringer (J. Aero. Sci. 22(10), 1955); docs/damping-theories.md, \"The faired model\"",
-};
-
-/// The note's fairing of its theories, the default until stop 28.
-const FAIRED_THEORIES: Row = Row {
-    name: "faired-theories",
-    equations: "Figs 19–24",
-    summary: "the note's own fairing: the lifting surface at the short period's own ω̄ to M = 0.9, Mangler's transonic theory (39)–(40) at M = 1, linear supersonic theory (36) from 1.2, joined between by stated cubics; the lift slope and aerodynamic centre from the same theories",
-    validity: "any Mach number; true and cropped deltas",
-    supplies: "z_q, z_ẇ, m_q, m_ẇ, the lift slope and the aerodynamic centre",
-    source: "the note's Figs 19–24 (docs/damping-theories.md, \"The note's fairing\")",
-};
-
-/// The previous, quasi-steady fairing.
-const FAIRED_SLENDER: Row = Row {
-    name: "faired-slender",
-    equations: "(37), (36)",
-    summary: "the previous, quasi-steady fairing (fast: no lattice): slender-wing theory (37) through M = 1, blended into (36) by M = 1.2, (36) held at its sonic-leading-edge values beyond the sonic edge",
-    validity: "any Mach number; true and cropped deltas",
-    supplies: "z_q, z_ẇ, m_q, m_ẇ",
-    source: "Ribner (NACA TN 1423); Mangler; Ribner & Malvestuto (NACA Rep. 908)",
-};
-
-/// A damping model's name that is neither a fairing's nor a theory's.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("{0}; or the fairings `faired` (the default), `faired-theories` and `faired-slender`")]
-pub struct UnknownDampingModel(#[from] pub UnknownTheory);
+pub use crate::aerodynamics::models::damping_model::{DampingModel, UnknownDampingModel};
 
 /// A design point.
 #[derive(Debug, Clone, PartialEq)]
@@ -353,36 +180,19 @@ impl Case {
     }
 }
 
-/// The damping derivatives of the case's model at ω̄ (used by the
-/// frequency-dependent theories, and by `supersonic` for its low-frequency
-/// warning), the lifting surface's harmonic solutions had as `harmonic`
-/// says.
+/// The damping derivatives of the case's model at ω̄ (the short period's:
+/// the frequency-dependent theories take it, `supersonic` checks its
+/// low-frequency warning at it; [`DampingModel::damping`]), the lifting
+/// surface's harmonic solutions had as `harmonic` says.
 fn damping_at(
     case: &Case,
     wing: &WingInput,
     omega_bar: Option<f64>,
     harmonic: Harmonic,
 ) -> Result<Damping, CaseError> {
-    let (h, m) = (case.h, case.mach);
-    match case.damping {
-        // its ω̄ is the case's own (fixed), or none (quasi-steady)
-        DampingModel::Theory(t @ Theory::LiftingSurface) => Ok(damping_derivatives_with(
-            t,
-            wing,
-            h,
-            m,
-            case.omega_bar,
-            harmonic,
-        )?),
-        DampingModel::Theory(t) => Ok(damping_derivatives_with(
-            t, wing, h, m, omega_bar, harmonic,
-        )?),
-        DampingModel::Faired => Ok(faired::damping(wing, h, m, omega_bar, harmonic)?),
-        DampingModel::FairedTheories => {
-            Ok(faired::theories::damping(wing, h, m, omega_bar, harmonic)?)
-        }
-        DampingModel::FairedSlender => Ok(faired::slender_fairing(wing, h, m)?),
-    }
+    Ok(case
+        .damping
+        .damping(wing, case.h, case.mach, omega_bar, case.omega_bar, harmonic)?)
 }
 
 /// Evaluate a design point.
@@ -478,7 +288,7 @@ impl<'a> Point<'a> {
         let own = case.damping.own_coefficients(&case.planform, case.mach)?;
         let (coefficients, configured) =
             case.aero
-                .at_configured(&case.planform, case.mach, own.as_ref())?;
+                .at_configured(&case.planform, case.mach, own.as_ref(), case.damping)?;
         let c_l = level_flight_lift(case.cl_m2, case.mach).value;
         Ok(Point {
             case,
@@ -503,9 +313,11 @@ impl<'a> Point<'a> {
             return Ok(None);
         };
         let case = self.case;
-        let w = omega_bar.unwrap_or(0.0);
+        // at the wing's own ω̄, as the model takes it (quasi-steady: 0)
+        let model = case.damping;
+        let w = model.increment_omega_bar(case.mach, omega_bar, case.omega_bar);
         let at_omega = match case.aero.configuration_for(&case.planform) {
-            Some(c) if w > 0.0 => c.increment_at_with(case.mach, w, self.harmonic)?,
+            Some(c) if w > 0.0 => model.increment(&c, case.mach, w, self.harmonic, false)?,
             _ => configured.increment.clone(),
         };
         let d = at_omega
@@ -520,8 +332,8 @@ impl<'a> Point<'a> {
             case.h,
         )
         .map_err(ConfigurationError::from)?;
-        if case.mach >= faired::SUPERSONIC_FROM
-            && let Some(c) = case.aero.configuration_for(&case.planform)
+        if let Some(c) = case.aero.configuration_for(&case.planform)
+            && case.mach >= model.supersonic_increment_from(&c)
             && let Some(w) =
                 crate::aerodynamics::supersonic::configuration::downwash_warning(&c, case.mach)
         {

@@ -1,5 +1,5 @@
 //! Sizing a tailplane (or foreplane) to the note's §8 standard
-//! (`delta-stability size-tail`, issue 21).
+//! (`delta-stability size-tail`).
 //!
 //! The family: the config's surface with its sweep, taper, aspect ratio
 //! and apex fixed and its area S_T varied, every length scaled by
@@ -23,10 +23,10 @@
 //! missed. Where no area up to the limit meets, the answer says so.
 
 use crate::aerodynamics::lifting_surface::Harmonic;
-use crate::aerodynamics::models::faired::SUPERSONIC_FROM;
 use crate::criteria::Verdict;
 use crate::design::case::{Case, evaluate_point_with};
 use crate::geometry::Trapezoid;
+
 use crate::geometry::configuration::{Configuration, Surface, SurfaceKind};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -164,13 +164,14 @@ impl Family<'_> {
     /// area `area`. The first failure ends the trial, so the order is
     /// chosen to find one cheaply: the Mach number that failed last (an
     /// area that fails mostly fails where the previous one did), then those
-    /// from [`SUPERSONIC_FROM`] (the surfaces by the supersonic theory: no
-    /// lattice), then the rest.
+    /// where the damping model takes the surfaces by a supersonic method (no
+    /// lattice: [`crate::aerodynamics::models::damping_model::DampingModel::supersonic_increment_from`]), then the rest.
     fn meets(&self, area: f64) -> bool {
         let config = Arc::new(self.with_area(area));
         let hardest = self.hardest.load(Ordering::Relaxed);
         let n = self.machs.len();
-        let cheap = |i: &usize| self.machs[*i] >= SUPERSONIC_FROM;
+        let supersonic = self.case.damping.supersonic_increment_from(&config);
+        let cheap = |i: &usize| self.machs[*i] >= supersonic;
         let rest = |c: bool| (0..n).filter(move |i| cheap(i) == c && *i != hardest);
         let order = (hardest < n)
             .then_some(hardest)

@@ -35,7 +35,26 @@ pub enum ModeName {
     Aperiodic,
 }
 
+/// The axis of the rigid aircraft's motion a mode belongs to. The
+/// program solves the longitudinal (pitch-plane) equations, eqs (2)–(4);
+/// the lateral-directional axis (sideslip, roll and yaw: Dutch roll, roll
+/// and spiral modes) is to come beside it (`dynamics::lateral`), its modes
+/// named and judged on their own axis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Axis {
+    /// The pitch plane: the short period, the phugoid.
+    Longitudinal,
+}
+
 impl ModeName {
+    /// The axis of the mode.
+    pub fn axis(self) -> Axis {
+        match self {
+            ModeName::ShortPeriod | ModeName::Phugoid | ModeName::Aperiodic => Axis::Longitudinal,
+        }
+    }
+
     /// The name in a table: "short period", "phugoid", or for a root of a
     /// pair that split "aperiodic (sp)", "aperiodic (ph)", "aperiodic (?)".
     pub fn label(self, origin: Option<Origin>) -> String {

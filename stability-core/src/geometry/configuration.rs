@@ -1,7 +1,7 @@
 //! Configurations (§10): the wing with a tailplane, a foreplane (either or
 //! both) and a body — the note's ways to improve the damping: "the
 //! addition of a forebody, foreplane, or tailplane or by cropping the wing
-//! tips" (issue 21).
+//! tips".
 //!
 //! A configuration's aerodynamics come as the lattice's [`Solution`] (the
 //! response to incidence and to pitch rate, moments about the wing M.A.C.'s

@@ -1,4 +1,4 @@
-//! Uncertainty propagation (issue 23): distributions on a design point's
+//! Uncertainty propagation: distributions on a design point's
 //! inputs — i_B, μ₁, C_L·M², the c.g., the physical flight condition
 //! (altitude, mass, I_y), any of the twelve aerodynamic derivatives as a
 //! multiplicative or additive error — and on the damping theory itself

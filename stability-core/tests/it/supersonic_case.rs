@@ -47,10 +47,17 @@ fn the_case_takes_a_and_h0_from_the_supersonic_theory_with_exact_mach_derivative
             let c = r.coefficients;
             assert_eq!(c.lift_slope.value, t.lift_slope, "{deg}° M {mach}");
             assert_eq!(c.aerodynamic_centre.value, t.aerodynamic_centre);
-            assert_eq!(c.origin.lift_slope, Origin::DampingModel("supersonic"));
+            assert_eq!(
+                c.origin.lift_slope,
+                Origin::DampingModel(stability_core::aero::OwnTheory::Theory(
+                    stability_core::damping::Theory::Supersonic
+                ))
+            );
             assert_eq!(
                 c.origin.aerodynamic_centre,
-                Origin::DampingModel("supersonic")
+                Origin::DampingModel(stability_core::aero::OwnTheory::Theory(
+                    stability_core::damping::Theory::Supersonic
+                ))
             );
             assert_eq!(c.origin.zero_lift_drag, Origin::Method);
             // z_w, m_w from the same a and H₀ (eqs 12, 14)
@@ -133,7 +140,9 @@ fn tables_win_and_method_opts_out() {
     let f = eval(45.0, 0.0, 1.2, DampingModel::FairedTheories);
     assert_eq!(
         f.coefficients.origin.lift_slope,
-        Origin::DampingModel("supersonic")
+        Origin::DampingModel(stability_core::aero::OwnTheory::Theory(
+            stability_core::damping::Theory::Supersonic
+        ))
     );
     let json = serde_json::to_value(r.coefficients.origin).unwrap();
     assert_eq!(json["lift_slope"], "table");

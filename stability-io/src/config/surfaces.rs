@@ -1,5 +1,5 @@
 //! `[tailplane]`, `[foreplane]` and `[body]`: the configuration's parts
-//! beside the wing (issue 21; docs/configurations.md).
+//! beside the wing (docs/configurations.md).
 //!
 //! ```toml
 //! [tailplane]            # and/or [foreplane]: [planform]'s keys …

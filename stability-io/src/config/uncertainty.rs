@@ -1,4 +1,4 @@
-//! A config's `[uncertainty]` table (issue 23): a distribution on any
+//! A config's `[uncertainty]` table: a distribution on any
 //! input, correlations between them, and damping theories with weights —
 //! the [`stability_core::uncertainty::Study`] of `delta-stability
 //! uncertainty` and of Python's `uncertainty()`.

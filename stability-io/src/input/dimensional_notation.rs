@@ -1,6 +1,6 @@
 //! The reader for `notation = "dimensional"`: derivatives per unit mass
 //! and inertia as handbooks print them (NASA CR-2144, Etkin & Reid,
-//! Nelson), in body or stability axes, ft–slug–s or SI (issue 12).
+//! Nelson), in body or stability axes, ft–slug–s or SI.
 //!
 //! ```toml
 //! notation = "dimensional"

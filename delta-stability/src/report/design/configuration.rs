@@ -13,8 +13,9 @@ pub fn section(d: &Design) -> String {
     let Some(c) = &d.cfg.configuration else {
         return String::new();
     };
-    let mut s = String::from(
-        "<h2 id=\"configuration\">§10 The surfaces and body</h2><p>The note's §10: damping \"can be made by the addition of a forebody, foreplane, or tailplane\". Each part's increment over the wing is added to the wing's own model (docs/configurations.md): below M = 0.9 by the multi-surface doublet lattice, from M = 1.2 by linear supersonic theory with the tail in the wing's downwash, faired between.</p><ul>",
+    let mut s = format!(
+        "<h2 id=\"configuration\">§10 The surfaces and body</h2><p>The note's §10: damping \"can be made by the addition of a forebody, foreplane, or tailplane\". Each part's increment over the wing is added to the wing's own model at the wing's own frequency (docs/configurations.md): {}.</p><ul>",
+        d.cfg.case.damping.increment_methods(c)
     );
     for surface in c.surfaces() {
         s.push_str(&surface_item(c, surface, d.cfg.case.h));

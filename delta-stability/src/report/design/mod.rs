@@ -141,6 +141,7 @@ impl Design {
         let mut joins = stability_study::regimes::coefficient_joins(
             self.results().map(|(_, r)| &r.result),
             std::slice::from_ref(&planform),
+            true,
         );
         joins.extend(stability_study::regimes::model_damping_joins(
             self.cfg.case.damping,

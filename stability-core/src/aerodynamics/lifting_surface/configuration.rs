@@ -1,5 +1,5 @@
 //! The subsonic aerodynamics of a whole configuration from one doublet
-//! lattice over all its surfaces (issue 21 item 2): the wing, the
+//! lattice over all its surfaces: the wing, the
 //! tailplane and the foreplane each cut into boxes as the wing's own
 //! lattice is ([`crate::aerodynamics::lifting_surface`], each surface at
 //! [`LatticeSpec::for_wing`] of its planform), all solved together, so

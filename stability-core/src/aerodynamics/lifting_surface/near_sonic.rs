@@ -1,6 +1,6 @@
 //! The doublet lattice from M = 0.9 to the sonic point M = 1 at a frequency
 //! parameter ω̄ > 0: what the faired damping model can use to narrow its
-//! join around M = 1 (issue 22, items 2 and 4).
+//! join around M = 1.
 //!
 //! # Below M = 0.99: the lattice, refined
 //! [`near_sonic`] solves the lattice of [`LatticeSpec::for_mach`], whose

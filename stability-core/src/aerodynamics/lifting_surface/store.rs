@@ -58,14 +58,32 @@ static CONFIGURATIONS: Memo<Key<Vec<u64>>, Result<ConfigurationSolution, Configu
     Memo::new(CAPACITY);
 
 /// The wing of aspect ratio A, taper λ and leading-edge sweep Λ (rad) with
-/// root chord 1: the shape the store is keyed by.
+/// root chord 1: the shape the store is keyed by. A and λ within a few
+/// rounding errors of a number of twelve significant figures are taken as
+/// that number ([`snapped`]), so that one shape scaled (a tail sizing's
+/// trial surfaces) keeps one key.
 pub fn unit_wing(
     aspect_ratio: f64,
     taper: f64,
     sweep_le: f64,
 ) -> Result<Trapezoid, LiftingSurfaceError> {
-    Trapezoid::from_aspect_ratio(aspect_ratio, taper, sweep_le, 1.0)
+    Trapezoid::from_aspect_ratio(snapped(aspect_ratio), snapped(taper), sweep_le, 1.0)
         .map_err(|e| LiftingSurfaceError::Planform(e.to_string()))
+}
+
+/// `x` as the nearest number of twelve significant figures when that is
+/// within four units in the last place of it (the rounding a product and
+/// a quotient leave: 0.8000000000000002 is 0.8), else `x` itself.
+pub fn snapped(x: f64) -> f64 {
+    let Ok(decimal) = format!("{x:.11e}").parse::<f64>() else {
+        return x;
+    };
+    let ulp = f64::from_bits(x.abs().to_bits() + 1) - x.abs();
+    if (decimal - x).abs() <= 4.0 * ulp {
+        decimal
+    } else {
+        x
+    }
 }
 
 /// ω̄ below [`OMEGA_BAR_QUASI_STEADY`] as the quasi-steady 0.
@@ -427,4 +445,33 @@ pub fn clear() {
     SOLUTIONS.clear();
     STEADY.clear();
     CONFIGURATIONS.clear();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_shape_scaled_keeps_its_key_and_other_numbers_are_kept() {
+        assert_eq!(snapped(0.8000000000000002), 0.8);
+        assert_eq!(snapped(0.7999999999999999), 0.8);
+        assert_eq!(snapped(4.0), 4.0);
+        assert_eq!(snapped(0.0), 0.0);
+        // not near a short decimal: as it is
+        for x in [1.0 / 7.0, 4.0 / 3f64.sqrt(), std::f64::consts::PI] {
+            assert_eq!(snapped(x), x);
+        }
+        // a tail of taper 0.3 scaled by 1.37 and back keeps its unit shape
+        let t = Trapezoid::from_aspect_ratio(3.0, 0.3, 0.7, 3.0).unwrap();
+        let f = 1.37;
+        let s = Trapezoid {
+            root_chord: t.root_chord * f,
+            tip_chord: t.tip_chord * f,
+            semi_span: t.semi_span * f,
+            sweep_le: t.sweep_le,
+        };
+        let unit =
+            |w: &Trapezoid| shape(&unit_wing(w.aspect_ratio(), w.taper(), w.sweep_le).unwrap());
+        assert_eq!(unit(&s), unit(&t));
+    }
 }

@@ -9,10 +9,12 @@
 //! monotone cubic Hermite interpolation) or from a named, documented default
 //! method ([`defaults`]); `docs/models.md` sets out the choices.
 
+use super::damping_model::DampingModel;
 pub use super::defaults;
 pub use super::error::AeroError;
 pub use super::table::{Table, TableOrigin};
-pub use crate::aerodynamics::damping::TheoryCoefficients;
+pub use crate::aerodynamics::damping::{OwnTheory, TheoryCoefficients};
+use crate::aerodynamics::lifting_surface::Harmonic;
 pub use crate::numerics::interpolation::{Value, hermite, monotone_slopes};
 
 use crate::aerodynamics::lifting_surface::{Steady, mach_range, store};
@@ -172,8 +174,8 @@ pub enum Origin {
     /// The method of [`defaults`] (for K = ∂C_D/∂C_L²: 1/a of the lift
     /// slope used, whatever its origin).
     Method,
-    /// The damping model's own theory, by name.
-    DampingModel(&'static str),
+    /// The damping model's own theory.
+    DampingModel(OwnTheory),
     /// The doublet lattice's steady solution ([`Source::LiftingSurface`]).
     LiftingSurface,
 }
@@ -185,7 +187,7 @@ impl Origin {
             Origin::Table => "your table".to_string(),
             Origin::Datcom => "DATCOM's output (--datcom, [model] datcom)".to_string(),
             Origin::Method => "the default method (docs/models.md)".to_string(),
-            Origin::DampingModel(name) => format!("the damping model `{name}`'s own theory"),
+            Origin::DampingModel(own) => format!("the damping model `{}`'s own theory", own.name()),
             Origin::LiftingSurface => "the lifting surface (--aero lifting-surface)".to_string(),
         }
     }
@@ -197,7 +199,7 @@ impl Serialize for Origin {
             Origin::Table => "table",
             Origin::Datcom => "datcom",
             Origin::Method => "method",
-            Origin::DampingModel(name) => name,
+            Origin::DampingModel(own) => own.name(),
             Origin::LiftingSurface => "lifting-surface",
         })
     }
@@ -262,7 +264,7 @@ type SteadyValue = fn(&mach_range::SteadyCoefficients) -> (f64, f64);
 fn resolve(
     source: &Source,
     m: f64,
-    own: Option<(Value, &'static str)>,
+    own: Option<(Value, OwnTheory)>,
     lattice: Option<(&Planform, SteadyValue)>,
     method: impl FnOnce() -> Result<Value, AeroError>,
 ) -> Result<(Value, Origin), AeroError> {
@@ -301,26 +303,17 @@ impl AeroModel {
     }
 
     /// The coefficients of `p` at Mach `m` from tables, the lattice and the
-    /// methods of [`defaults`] (no damping model's own coefficients).
+    /// methods of [`defaults`] (no damping model's own coefficients; a
+    /// configuration's increment by the default damping model's methods).
     pub fn at(&self, p: &Planform, m: f64) -> Result<Coefficients, AeroError> {
-        self.at_with(p, m, None)
+        Ok(self.at_configured(p, m, None, DampingModel::default())?.0)
     }
 
     /// The coefficients of `p` at Mach `m`, with the damping model's own
     /// lift slope and aerodynamic centre `own` where it gives them
-    /// ([`Source`] states the precedence), and the configuration's
-    /// increment added ([`AeroModel::at_configured`]).
-    pub fn at_with(
-        &self,
-        p: &Planform,
-        m: f64,
-        own: Option<&TheoryCoefficients>,
-    ) -> Result<Coefficients, AeroError> {
-        Ok(self.at_configured(p, m, own)?.0)
-    }
-
-    /// As [`AeroModel::at_with`], with the wing's own coefficients and the
-    /// configuration's increment when there is one. The increment's
+    /// ([`Source`] states the precedence), and the wing's own coefficients
+    /// and the configuration's increment when there is one, by the damping
+    /// `model`'s methods ([`DampingModel::increment`]). The increment's
     /// in-phase lift ℓ_α and moment μ_α (about the M.A.C.'s leading edge,
     /// at ω̄ = 0) add to the wing's: a = a_w + Δℓ_α,
     /// H₀ = (H₀,w a_w − Δμ_α)/a, their Mach derivatives by the quotient
@@ -330,12 +323,15 @@ impl AeroModel {
         p: &Planform,
         m: f64,
         own: Option<&TheoryCoefficients>,
+        model: DampingModel,
     ) -> Result<(Coefficients, Option<Configured>), AeroError> {
         let wing = self.wing_coefficients(p, m, own)?;
         let Some(config) = self.configuration_for(p) else {
             return Ok((wing, None));
         };
-        let inc = config.increment(m, 0.0).map_err(AeroError::Configuration)?;
+        let inc = model
+            .increment(&config, m, 0.0, Harmonic::Direct, true)
+            .map_err(AeroError::Configuration)?;
         let (aw, hw) = (wing.lift_slope, wing.aerodynamic_centre);
         let a = Value::new(
             aw.value + inc.solution.lift_alpha,

@@ -1,4 +1,4 @@
-//! The user's own derivatives (`[model.tables]`, issue 21 item 4): a table
+//! The user's own derivatives (`[model.tables]`): a table
 //! against Mach number of any of the twelve derivatives of the report's
 //! notation (§3, eqs 9–20: x_u, x_w, x_ẇ, x_q, z_u, z_w, z_ẇ, z_q, m_u, m_w,
 //! m_ẇ, m_q), either the value itself or an increment added to the

@@ -1,30 +1,25 @@
 //! What a configuration adds to its wing: the increment
 //! ΔSolution = (configuration total − wing alone) by one method at one
 //! (M, ω̄), which the design-point pipeline adds to the wing's own model
-//! (`crate::design::case`, `crate::aerodynamics::models::aero`) so that every wing theory keeps its
-//! wing and gains the surfaces and the body.
+//! (`crate::design::case`, `super::aero`) so that every wing theory keeps
+//! its wing and gains the surfaces and the body.
 //!
-//! The method by Mach number, the bands of the faired model
-//! ([`crate::aerodynamics::models::faired`]):
-//!
-//! | Mach number | the increment |
-//! | --- | --- |
-//! | M ≤ 0.9 | the multi-surface doublet lattice ([`Configuration::solve_subsonic`]) |
-//! | 0.9 < M < 1.2 | faired: each number the monotone cubic (Fritsch–Carlson slopes, `aero::monotone_slopes`) through the lattice's value at 0.9 (slope: backward difference over 0.02) and the supersonic theory's at 1.2 (slope: central difference over 10⁻⁴) — the faired model's stated join |
-//! | M ≥ 1.2 | the supersonic theory ([`Configuration::solve_supersonic`]) |
-//!
-//! The Mach derivatives of the increment's lift slope and moment (for
-//! eqs 25–29) are the fairing's own in the band, else central differences
-//! over [`MACH_STEP`]: the surfaces' Mach derivatives are included.
+//! The methods ([`Method`]): the multi-surface lattice below M = 1
+//! (`Configuration::solve_subsonic`), and above it each surface by the Mach
+//! box or by linear supersonic theory with the wing's downwash at the
+//! tailplane (`Configuration::solve_supersonic_by`). Which method at which
+//! Mach number, and the joins between, is the damping model's
+//! ([`super::damping_model::DampingModel::increment`]: `faired`'s through
+//! M = 1, [`super::faired::increment`]; the note's bands,
+//! [`super::faired::theories::increment`]). The Mach derivatives of the
+//! increment's lift slope and moment (for eqs 25–29) are central
+//! differences over [`MACH_STEP`] within one method.
 
 use crate::aerodynamics::lifting_surface::configuration::ConfigurationError;
 use crate::aerodynamics::lifting_surface::{ConfigurationSolution, Contribution};
-use crate::aerodynamics::lifting_surface::{Harmonic, Solution, store};
-use crate::aerodynamics::models::faired::{
-    LATTICE_SLOPE_STEP, LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM, SUPERSONIC_SLOPE_STEP,
-};
+use crate::aerodynamics::lifting_surface::{Harmonic, Solution, mach_table, store};
+use crate::geometry::Trapezoid;
 use crate::geometry::configuration::{Configuration, Part};
-use crate::numerics::interpolation::{hermite, monotone_slopes};
 use serde::Serialize;
 
 /// The step of the increment's Mach derivatives outside the band.
@@ -46,7 +41,7 @@ pub struct Increment {
 }
 
 /// The six numbers of a [`Solution`].
-fn numbers(s: &Solution) -> [f64; 6] {
+pub(super) fn numbers(s: &Solution) -> [f64; 6] {
     [
         s.lift_alpha,
         s.moment_alpha,
@@ -57,7 +52,7 @@ fn numbers(s: &Solution) -> [f64; 6] {
     ]
 }
 
-fn from_numbers(n: [f64; 6], mach: f64, omega_bar: f64) -> Solution {
+pub(super) fn from_numbers(n: [f64; 6], mach: f64, omega_bar: f64) -> Solution {
     Solution {
         mach,
         omega_bar,
@@ -101,163 +96,146 @@ impl Configuration {
     pub fn has_additions(&self) -> bool {
         self.tailplane.is_some() || self.foreplane.is_some() || self.body.is_some()
     }
+}
 
-    /// The configuration and its wing alone by one method (no fairing):
-    /// the supersonic theory, or the lattice.
-    fn by_method(
-        &self,
-        mach: f64,
-        omega_bar: f64,
-        supersonic: bool,
-        harmonic: Harmonic,
-    ) -> Result<(Solution, Vec<Contribution>), ConfigurationError> {
-        let alone = Configuration::wing_alone(self.wing);
-        let (with, without) = if supersonic {
-            (
-                self.solve_supersonic(mach, omega_bar)?,
-                alone.solve_supersonic(mach, omega_bar)?,
-            )
-        } else {
-            (
-                self.solve_subsonic_with(mach, omega_bar, harmonic)?,
-                alone.solve_subsonic_with(mach, omega_bar, harmonic)?,
-            )
-        };
-        let parts = parts_less_wing(&with, &without.total);
-        Ok((minus(&with.total, &without.total), parts))
-    }
+/// A method of a configuration's aerodynamics at one Mach number.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Method {
+    /// The multi-surface doublet lattice (M < 1).
+    Lattice,
+    /// Each surface by the Mach box, with the wing's downwash at the
+    /// tailplane (M ≥ the surfaces' first Mach box Mach numbers).
+    MachBox,
+    /// Each surface by linear supersonic theory, with the wing's downwash
+    /// at the tailplane (M > 1).
+    Supersonic,
+}
 
-    /// The increment at (M, ω̄) by the table's methods, with its parts and
-    /// the Mach derivatives of its in-phase numbers.
-    pub fn increment(&self, mach: f64, omega_bar: f64) -> Result<Increment, ConfigurationError> {
-        self.increment_with(mach, omega_bar, true, Harmonic::Direct)
-    }
+/// The increment of `config` and its parts at (`mach`, `omega_bar`) by one
+/// `method`: the configuration less its wing alone by the same method.
+pub fn by_method(
+    config: &Configuration,
+    mach: f64,
+    omega_bar: f64,
+    method: Method,
+    harmonic: Harmonic,
+) -> Result<(Solution, Vec<Contribution>), ConfigurationError> {
+    let alone = Configuration::wing_alone(config.wing);
+    let solve = |c: &Configuration| match method {
+        Method::Lattice => c.solve_subsonic_with(mach, omega_bar, harmonic),
+        Method::Supersonic => c.solve_supersonic(mach, omega_bar),
+        Method::MachBox => c.solve_supersonic_by(mach, omega_bar, |t, what| {
+            mach_box_surface(t, what, &config.wing, mach, omega_bar)
+        }),
+    };
+    let (with, without) = (solve(config)?, solve(&alone)?);
+    let parts = parts_less_wing(&with, &without.total);
+    Ok((minus(&with.total, &without.total), parts))
+}
 
-    /// As [`Configuration::increment`] without the Mach derivatives outside
-    /// the faired band (a third of the solves): the damping's, at each ω̄ of
-    /// a frequency iteration.
-    pub fn increment_at(&self, mach: f64, omega_bar: f64) -> Result<Increment, ConfigurationError> {
-        self.increment_with(mach, omega_bar, false, Harmonic::Direct)
-    }
+/// A surface's Mach box solution in its own M.A.C. at its own reduced
+/// frequency ω̄c̄_s/c̄ (`omega_bar` is on the wing's M.A.C. `wing`),
+/// recorded at the wing's ω̄: the Mach box of its unit wing tabulated in
+/// Mach number and frequency ([`mach_table::solution`]: smooth in M, so
+/// that the increment's Mach derivatives are, and its nodes shared by every
+/// size of the surface). `harmonic` is the wing's: the table interpolates
+/// either way.
+fn mach_box_surface(
+    t: &Trapezoid,
+    what: &str,
+    wing: &Trapezoid,
+    mach: f64,
+    omega_bar: f64,
+) -> Result<Solution, ConfigurationError> {
+    let unit = store::unit_wing(t.aspect_ratio(), t.taper(), t.sweep_le)
+        .map_err(|e| ConfigurationError::Geometry(format!("{what}: {e}")))?;
+    let own = omega_bar * t.mac() / wing.mac();
+    let (s, _) = mach_table::solution(&unit, mach, own)
+        .map_err(|e| ConfigurationError::Geometry(format!("{what} at M = {mach}: {e}")))?;
+    Ok(Solution { omega_bar, ..s })
+}
 
-    /// As [`Configuration::increment_at`], the lattice's harmonic solutions
-    /// had as `harmonic` says ([`Harmonic::Interpolated`]: a sweep's or a
-    /// sizing's frequency iterations, which share the nodes).
-    pub fn increment_at_with(
-        &self,
-        mach: f64,
-        omega_bar: f64,
-        harmonic: Harmonic,
-    ) -> Result<Increment, ConfigurationError> {
-        self.increment_with(mach, omega_bar, false, harmonic)
-    }
-
-    fn increment_with(
-        &self,
-        mach: f64,
-        omega_bar: f64,
-        mach_derivatives: bool,
-        harmonic: Harmonic,
-    ) -> Result<Increment, ConfigurationError> {
-        if !mach.is_finite() || mach < 0.0 {
-            return Err(ConfigurationError::Geometry(format!(
-                "the Mach number must be finite and ≥ 0, not {mach}"
-            )));
-        }
-        if mach > LIFTING_SURFACE_LIMIT && mach < SUPERSONIC_FROM {
-            return self.faired(mach, omega_bar, harmonic);
-        }
-        let sup = mach >= SUPERSONIC_FROM;
-        let (solution, parts) = self.by_method(mach, omega_bar, sup, harmonic)?;
-        if !mach_derivatives {
-            return Ok(Increment {
-                solution,
-                parts,
-                d_lift_alpha: None,
-                d_moment_alpha: None,
-            });
-        }
-        let h = MACH_STEP.min(mach);
-        let lo = self.by_method(mach - h, omega_bar, sup, harmonic)?.0;
-        let hi = self
-            .by_method(mach + MACH_STEP, omega_bar, sup, harmonic)?
-            .0;
-        let w = h + MACH_STEP;
-        Ok(Increment {
-            d_lift_alpha: Some((hi.lift_alpha - lo.lift_alpha) / w),
-            d_moment_alpha: Some((hi.moment_alpha - lo.moment_alpha) / w),
+/// The increment by `method` at `mach`, with the Mach derivatives of its
+/// in-phase numbers when asked (central differences over [`MACH_STEP`],
+/// one-sided where the step would leave `[lo, ∞)`).
+pub fn with_derivatives(
+    config: &Configuration,
+    mach: f64,
+    omega_bar: f64,
+    method: Method,
+    harmonic: Harmonic,
+    mach_derivatives: bool,
+    lo: f64,
+) -> Result<Increment, ConfigurationError> {
+    let (solution, parts) = by_method(config, mach, omega_bar, method, harmonic)?;
+    if !mach_derivatives {
+        return Ok(Increment {
             solution,
             parts,
-        })
+            d_lift_alpha: None,
+            d_moment_alpha: None,
+        });
     }
+    let h = MACH_STEP.min(mach - lo).max(0.0);
+    let below = by_method(config, mach - h, omega_bar, method, harmonic)?.0;
+    let above = by_method(config, mach + MACH_STEP, omega_bar, method, harmonic)?.0;
+    let w = h + MACH_STEP;
+    Ok(Increment {
+        d_lift_alpha: Some((above.lift_alpha - below.lift_alpha) / w),
+        d_moment_alpha: Some((above.moment_alpha - below.moment_alpha) / w),
+        solution,
+        parts,
+    })
+}
 
-    /// The faired band: each part's every number the monotone cubic
-    /// between the lattice at 0.9 and the supersonic theory at 1.2, with
-    /// the ends' slopes; the increment is their sum (so the parts sum to
-    /// it, and its Mach derivative is theirs).
-    fn faired(
-        &self,
-        mach: f64,
-        omega_bar: f64,
-        harmonic: Harmonic,
-    ) -> Result<Increment, ConfigurationError> {
-        let (m0, m1, st) = (
-            LIFTING_SURFACE_LIMIT,
-            SUPERSONIC_FROM,
-            SUPERSONIC_SLOPE_STEP,
-        );
-        let ends = [
-            self.by_method(m0, omega_bar, false, harmonic)?.1,
-            self.by_method(m0 - LATTICE_SLOPE_STEP, omega_bar, false, harmonic)?
-                .1,
-            self.by_method(m1, omega_bar, true, harmonic)?.1,
-            self.by_method(m1 - st, omega_bar, true, harmonic)?.1,
-            self.by_method(m1 + st, omega_bar, true, harmonic)?.1,
-        ];
-        let of = |i: usize, part: Part| {
-            ends[i]
-                .iter()
-                .find(|c| c.part == part)
-                .map_or([0.0; 6], |c| numbers(&c.solution))
-        };
-        let mut order: Vec<Part> = Vec::new();
-        for c in ends[0].iter().chain(ends[2].iter()) {
-            if !order.contains(&c.part) {
-                order.push(c.part);
-            }
+/// The increment `a` + t(`b` − `a`), part by part (a part missing at one end
+/// counts zero there), at `mach`: a stated straight join in Mach number;
+/// its Mach derivative the line's slope `1/(mach_b − mach_a)` times the
+/// difference.
+pub fn line(
+    a: &Increment,
+    b: &Increment,
+    t: f64,
+    span: f64,
+    mach: f64,
+    omega_bar: f64,
+) -> Increment {
+    let of = |inc: &Increment, part: Part| {
+        inc.parts
+            .iter()
+            .find(|c| c.part == part)
+            .map_or([0.0; 6], |c| numbers(&c.solution))
+    };
+    let mut order: Vec<Part> = Vec::new();
+    for c in a.parts.iter().chain(b.parts.iter()) {
+        if !order.contains(&c.part) {
+            order.push(c.part);
         }
-        let mut parts = Vec::new();
-        let (mut total, mut d) = ([0.0; 6], [0.0; 2]);
-        for part in order {
-            let (y0, b0, y1, c1, a1) = (
-                of(0, part),
-                of(1, part),
-                of(2, part),
-                of(3, part),
-                of(4, part),
-            );
-            let v: [crate::numerics::interpolation::Value; 6] = std::array::from_fn(|i| {
-                let s0 = (y0[i] - b0[i]) / LATTICE_SLOPE_STEP;
-                let s1 = (a1[i] - c1[i]) / (2.0 * st);
-                let (e0, e1) = monotone_slopes((y1[i] - y0[i]) / (m1 - m0), s0, s1);
-                hermite((m0, y0[i], e0), (m1, y1[i], e1), mach)
-            });
-            for i in 0..6 {
-                total[i] += v[i].value;
-            }
-            d[0] += v[0].d_mach;
-            d[1] += v[1].d_mach;
-            parts.push(Contribution {
+    }
+    let parts: Vec<Contribution> = order
+        .into_iter()
+        .map(|part| {
+            let (x, y) = (of(a, part), of(b, part));
+            Contribution {
                 part,
-                solution: from_numbers(v.map(|x| x.value), mach, omega_bar),
-            });
-        }
-        Ok(Increment {
-            solution: from_numbers(total, mach, omega_bar),
-            parts,
-            d_lift_alpha: Some(d[0]),
-            d_moment_alpha: Some(d[1]),
+                solution: from_numbers(
+                    std::array::from_fn(|i| x[i] + t * (y[i] - x[i])),
+                    mach,
+                    omega_bar,
+                ),
+            }
         })
+        .collect();
+    let (x, y) = (numbers(&a.solution), numbers(&b.solution));
+    Increment {
+        solution: from_numbers(
+            std::array::from_fn(|i| x[i] + t * (y[i] - x[i])),
+            mach,
+            omega_bar,
+        ),
+        parts,
+        d_lift_alpha: Some((y[0] - x[0]) / span),
+        d_moment_alpha: Some((y[1] - x[1]) / span),
     }
 }
 

@@ -1,6 +1,6 @@
 //! The supersonic aerodynamics of a configuration: each surface by the
 //! program's theories, with the wing's downwash at the tailplane and its
-//! lag (issue 21 item 3).
+//! lag.
 //!
 //! - **Each surface** — the wing, a tailplane, a foreplane — by linear
 //!   supersonic theory ([`supersonic::edge_theory`]: eq (36) while its
@@ -41,24 +41,40 @@ use crate::geometry::{Planform, Size, Trapezoid};
 const UNSWEPT_TE: f64 = 1e-9;
 
 impl Configuration {
-    /// The configuration's response at M > 1 and ω̄ (0: quasi-steady).
+    /// The configuration's response at M > 1 and ω̄ (0: quasi-steady),
+    /// each surface by linear supersonic theory ([`own_solution`]).
     pub fn solve_supersonic(
         &self,
         mach: f64,
         omega_bar: f64,
+    ) -> Result<ConfigurationSolution, ConfigurationError> {
+        self.solve_supersonic_by(mach, omega_bar, |t, what| {
+            own_solution(t, what, mach, omega_bar)
+        })
+    }
+
+    /// As [`Configuration::solve_supersonic`], each surface's response in
+    /// its own M.A.C. (about its own M.A.C.'s leading edge) from `by`
+    /// (given the surface's planform and name): linear supersonic theory,
+    /// or the Mach box.
+    pub fn solve_supersonic_by(
+        &self,
+        mach: f64,
+        omega_bar: f64,
+        by: impl Fn(&Trapezoid, &str) -> Result<Solution, ConfigurationError>,
     ) -> Result<ConfigurationSolution, ConfigurationError> {
         if !(mach.is_finite() && mach > 1.0) {
             return Err(ConfigurationError::Geometry(format!(
                 "the supersonic configuration theory needs a finite M > 1, not {mach}"
             )));
         }
-        let wing = own_solution(&self.wing, "the wing", mach, omega_bar)?;
+        let wing = by(&self.wing, "the wing")?;
         let mut parts = vec![Contribution {
             part: Part::Wing,
             solution: wing,
         }];
         for surface in self.surfaces() {
-            let own = own_solution(&surface.shape, surface.kind.name(), mach, omega_bar)?;
+            let own = by(&surface.shape, surface.kind.name())?;
             let placement = Placement::of(&surface.shape, surface.x, &self.wing);
             let mut s = moved(&own, &placement);
             let part = match surface.kind {

@@ -1,4 +1,4 @@
-//! The wing's downwash at a tailplane, supersonic (issue 21 item 3).
+//! The wing's downwash at a tailplane, supersonic.
 //!
 //! The stated method: the downwash of the wing's trailing vortex sheet in
 //! the Trefftz plane (far downstream), the sheet flat and in the wing's

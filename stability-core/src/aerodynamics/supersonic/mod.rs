@@ -366,7 +366,7 @@ pub fn edge_theory(wing: &Wing, mach: f64, h: f64) -> Result<EdgeDerivatives, Su
 /// corners carried none (a slender-wing result), where linear theory loses
 /// lift only behind the tips' Mach lines — at the sonic edge, 45°, λ = 1/7,
 /// a = 3.00 against the cropped wing's 3.72 ([`subsonic_edge`], which
-/// [`edge_theory`] uses there; issue 19, item 3).
+/// [`edge_theory`] uses there).
 pub fn eq36_with_own_aero(wing: &Wing, mach: f64, h: f64) -> Derivatives {
     let f = Fig18::at(wing.beta_cot(mach));
     let a = wing.aspect_ratio();

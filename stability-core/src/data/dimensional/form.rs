@@ -1,6 +1,6 @@
 //! The forms in which handbooks print a longitudinal derivative table, and
 //! their conversion to the model's form (per unit mass and inertia), written
-//! once here (issue 20, item 3):
+//! once here:
 //!
 //! - per unit mass and inertia, the model's own: X_u = (∂X/∂u)/m, …,
 //!   M_q = (∂M/∂q)/I_y (NASA CR-2144's tables; Etkin & Reid's longitudinal

@@ -1,4 +1,4 @@
-//! Dimensional derivative sets as handbooks print them (issue 12): forces
+//! Dimensional derivative sets as handbooks print them: forces
 //! per unit mass and moments per unit pitching inertia, in body or
 //! stability axes, in ft–slug–s or SI, with a trim attitude θ₀ and trim
 //! velocities U₀, W₀. The equations (state u, w, q, θ), in descriptor form

@@ -1,4 +1,4 @@
-//! A handbook's `[derivatives]` table as printed (issue 20, item 3): its
+//! A handbook's `[derivatives]` table as printed: its
 //! form (`form = "per_unit_mass" | "per_force" | "alpha"`, or inferred: the
 //! α form where an α name is present, else per unit mass), the mass and
 //! inertia a table per force needs, and the values in the model's form by

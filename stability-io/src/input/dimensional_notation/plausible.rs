@@ -1,4 +1,4 @@
-//! Warnings for a set no aircraft has (issue 20, item 3): derivatives off
+//! Warnings for a set no aircraft has: derivatives off
 //! by orders from their class and roots faster than
 //! [`RATE_MAX`] s⁻¹ ([`stability_core::dimensional::form::implausible`]),
 //! with the likely unit mistake named.

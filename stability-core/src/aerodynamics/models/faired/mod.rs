@@ -26,28 +26,30 @@
 //!
 //! The note's own construction — the lattice to 0.9, Mangler's theory at
 //! M = 1, linear theory from 1.2 and cubics between — is
-//! `faired-theories` ([`theories`]), the default until stop 28.
+//! `faired-theories` ([`theories`]), the default before `faired`.
 //!
 //! A sweep's (or the report's) frequency iteration
 //! ([`Harmonic::Interpolated`]) interpolates the lattice in ω̄ and the Mach
 //! box in ω̄ and in Mach number ([`crate::aerodynamics::lifting_surface::mach_table`]);
 //! the note's study reads its near-sonic solutions from [`crate::aerodynamics::lifting_surface::precomputed`].
 
+pub mod slender;
 pub mod theories;
 
-pub use theories::{
-    JOINS, LATTICE_SLOPE_STEP, LIFTING_SURFACE_LIMIT, SLENDER_FAIRING_WIDTH, SONIC,
-    SUPERSONIC_FROM, SUPERSONIC_SLOPE_STEP, slender_fairing,
-};
-
-use crate::aerodynamics::damping::TheoryCoefficients;
+use super::increment::{self, Increment, Method, with_derivatives};
+use super::regime::{Regime, RegimeKind};
 use crate::aerodynamics::damping::{
     Damping, DampingError, Theory, WingInput, damping_derivatives_with, theory_coefficients,
 };
+use crate::aerodynamics::damping::{OwnTheory, TheoryCoefficients};
+use crate::aerodynamics::lifting_surface::configuration::ConfigurationError;
 use crate::aerodynamics::lifting_surface::mach_range::{self, first_mach_box_mach};
-use crate::aerodynamics::lifting_surface::near_sonic::{SONIC_ANCHORS, SONIC_OMEGA_BAR_MIN};
+use crate::aerodynamics::lifting_surface::near_sonic::{
+    NEAR_SONIC_FROM, SONIC_ANCHORS, SONIC_OMEGA_BAR_MIN,
+};
 use crate::aerodynamics::lifting_surface::{Harmonic, LiftingSurfaceError, Trapezoid, store};
 use crate::aerodynamics::warnings::Warning;
+use crate::geometry::configuration::Configuration;
 use crate::geometry::{Planform, sonic_leading_edge_mach};
 use crate::numerics::interpolation::Value;
 
@@ -57,37 +59,6 @@ pub use crate::aerodynamics::lifting_surface::mach_range::MACH_RANGE_MAX;
 /// join through the sonic point (the first of the sonic extrapolation's
 /// anchors, M = 0.99).
 pub const SONIC_JOIN: f64 = SONIC_ANCHORS[0];
-
-/// What the faired model is over a range of Mach numbers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum RegimeKind {
-    /// Subsonic: lifting-surface theory (the doublet lattice).
-    Subsonic,
-    /// Faired between two theories: a guess (`faired-theories`), or the
-    /// stated join through the sonic point (`faired`).
-    Faired,
-    /// Supersonic, the leading edge subsonic: (36).
-    SubsonicEdge,
-    /// Supersonic, the leading edge supersonic: the supersonic-edge theory.
-    SupersonicEdge,
-    /// The Mach box, the leading edge subsonic.
-    MachBoxSubsonicEdge,
-    /// The Mach box, the leading edge supersonic.
-    MachBoxSupersonicEdge,
-}
-
-/// A range of Mach numbers and what the faired model is there.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-pub struct Regime {
-    pub from: f64,
-    /// `f64::INFINITY` for the last.
-    pub to: f64,
-    pub kind: RegimeKind,
-    /// In words, for a legend: "lifting surface", "joined through the
-    /// sonic point", "Mach box, subsonic leading edge", ….
-    pub label: &'static str,
-}
 
 /// The unit wing (root chord 1) of a planform's shape.
 fn unit_wing(planform: &Planform) -> Result<Trapezoid, LiftingSurfaceError> {
@@ -117,7 +88,18 @@ pub fn regimes(planform: &Planform) -> Vec<Regime> {
         (RegimeKind::SupersonicEdge, "supersonic leading edge")
     };
     let all = [
-        (0.0, join_from, RegimeKind::Subsonic, "lifting surface"),
+        (
+            0.0,
+            NEAR_SONIC_FROM,
+            RegimeKind::Subsonic,
+            "lifting surface",
+        ),
+        (
+            NEAR_SONIC_FROM,
+            join_from,
+            RegimeKind::NearSonic,
+            "lifting surface refined near M = 1",
+        ),
         (
             join_from,
             mach_box_from,
@@ -202,10 +184,73 @@ pub fn coefficients(
     Ok(Some(TheoryCoefficients {
         // the lifting surface's, named as `--aero lifting-surface` and
         // `faired-theories` below M = 0.9 name them
-        model: Theory::LiftingSurface.name(),
+        model: OwnTheory::Theory(Theory::LiftingSurface),
         lift_slope: value(c.lift_slope),
         aerodynamic_centre: value(c.aerodynamic_centre),
     }))
+}
+
+/// The first Mach number at which every surface of `config` has its Mach
+/// box (each surface's [`first_mach_box_mach`], the latest): where
+/// [`increment`] leaves the bridge for the Mach box.
+pub fn increment_mach_box_from(config: &Configuration) -> f64 {
+    let unit = |t: &Trapezoid| store::unit_wing(t.aspect_ratio(), t.taper(), t.sweep_le).ok();
+    std::iter::once(&config.wing)
+        .chain(config.surfaces().map(|s| &s.shape))
+        .filter_map(unit)
+        .map(|w| first_mach_box_mach(&w))
+        .fold(1.0, f64::max)
+}
+
+/// A configuration's increment over its wing by the faired model, one
+/// lifting-surface theory through M = 1 as the wing's
+/// (docs/configurations.md):
+///
+/// | Mach number | the increment |
+/// | --- | --- |
+/// | M ≤ [`SONIC_JOIN`] (0.99) | the multi-surface doublet lattice at M (its default boxes) |
+/// | 0.99 < M < M_b | the bridge: the straight line in M from the lattice's increment at 0.99 to the Mach boxes' at M_b ([`increment_mach_box_from`]: 1.0055 for the 45° delta's own shape); the multi-surface lattice is not extrapolated to the sonic point |
+/// | M_b ≤ M ≤ 3 | each surface by the Mach box at its own ω̄, the wing's downwash at the tailplane |
+/// | M > 3 | each surface by linear supersonic theory, as beyond the wing's Mach box |
+///
+/// At the wing's ω̄ (`omega_bar`: the model's frequency policy); with
+/// `mach_derivatives`, the Mach derivatives of its in-phase numbers
+/// (central differences within one method, the line's slope in the
+/// bridge).
+pub fn increment(
+    config: &Configuration,
+    mach: f64,
+    omega_bar: f64,
+    harmonic: Harmonic,
+    mach_derivatives: bool,
+) -> Result<Increment, ConfigurationError> {
+    if !mach.is_finite() || mach < 0.0 {
+        return Err(ConfigurationError::Geometry(format!(
+            "the Mach number must be finite and ≥ 0, not {mach}"
+        )));
+    }
+    let from = increment_mach_box_from(config);
+    let at = |m: f64, method: Method, lo: f64, d: bool| {
+        with_derivatives(config, m, omega_bar, method, harmonic, d, lo)
+    };
+    if mach <= SONIC_JOIN {
+        return at(mach, Method::Lattice, 0.0, mach_derivatives);
+    }
+    if mach < from {
+        let a = at(SONIC_JOIN, Method::Lattice, 0.0, false)?;
+        let b = at(from, Method::MachBox, from, false)?;
+        let t = (mach - SONIC_JOIN) / (from - SONIC_JOIN);
+        let line = increment::line(&a, &b, t, from - SONIC_JOIN, mach, omega_bar);
+        return Ok(Increment {
+            d_lift_alpha: line.d_lift_alpha.filter(|_| mach_derivatives),
+            d_moment_alpha: line.d_moment_alpha.filter(|_| mach_derivatives),
+            ..line
+        });
+    }
+    if mach <= MACH_RANGE_MAX {
+        return at(mach, Method::MachBox, from, mach_derivatives);
+    }
+    at(mach, Method::Supersonic, MACH_RANGE_MAX, mach_derivatives)
 }
 
 #[cfg(test)]

@@ -12,19 +12,24 @@
 //! | 1 < M < 1.2 | faired: Mangler's at M = 1 joined to linear theory's at 1.2 | (faired, as above) |
 //! | M ≥ [`SUPERSONIC_FROM`] (1.2) | linear supersonic theory: (36) while the leading edge is subsonic (a cropped wing: its potentials less the tips' corrections, `supersonic::subsonic_edge`), the supersonic-edge theory past it (`supersonic::edge_theory`; continuous at the sonic edge) | the same theory's |
 //!
-//! The bands are where the curve is a guess. Until stop 28 this was the
-//! default `faired`; the default is now one lifting-surface theory through
+//! The bands are where the curve is a guess. Until the lifting surface through M = 1 became
+//! the default `faired`, this was it; the default is now one lifting-surface theory through
 //! M = 1 ([`super`]), and this model is kept for comparison and for the
 //! note's own construction.
 
-use super::{Regime, RegimeKind};
-use crate::aerodynamics::damping::TheoryCoefficients;
+use super::super::increment::{
+    Increment, Method, by_method, from_numbers, numbers, with_derivatives,
+};
+use super::super::regime::{Regime, RegimeKind};
 use crate::aerodynamics::damping::{
     Damping, DampingError, Theory, WingInput, damping_derivatives_with, theory_coefficients,
 };
-use crate::aerodynamics::lifting_surface::{Harmonic, store};
+use crate::aerodynamics::damping::{OwnTheory, TheoryCoefficients};
+use crate::aerodynamics::lifting_surface::configuration::ConfigurationError;
+use crate::aerodynamics::lifting_surface::{Contribution, Harmonic, store};
 use crate::aerodynamics::warnings::{Warning, Warnings};
 use crate::derivatives::DampingDerivatives;
+use crate::geometry::configuration::{Configuration, Part};
 use crate::geometry::{Planform, sonic_leading_edge_mach};
 use crate::numerics::interpolation::{Value, hermite, monotone_slopes};
 
@@ -262,7 +267,7 @@ pub fn coefficients(
         )
     };
     Ok(Some(TheoryCoefficients {
-        model: "faired",
+        model: OwnTheory::Joined,
         lift_slope: each(|c| c.lift_slope),
         aerodynamic_centre: each(|c| c.aerodynamic_centre),
     }))
@@ -277,55 +282,136 @@ fn lattice_coefficients(
     let steady = store::lattice_steady(&shape, mach)?;
     let ((a, da), (h0, dh0)) = (steady.lift_slope(), steady.aerodynamic_centre());
     Ok(TheoryCoefficients {
-        model: Theory::LiftingSurface.name(),
+        model: OwnTheory::Theory(Theory::LiftingSurface),
         lift_slope: Value::new(a, da),
         aerodynamic_centre: Value::new(h0, dh0),
     })
 }
 
-/// [`DampingModel::FairedSlender`](crate::design::case::DampingModel::FairedSlender),
-/// the previous fairing: slender-wing theory (37) to M = 1, blended into
-/// linear supersonic theory over 1 ≤ M ≤ 1 + [`SLENDER_FAIRING_WIDTH`] by the
-/// weight w = 3x² − 2x³, x = (M − 1)/width (w·(36)'s logarithmic
-/// singularity at M = 1 vanishes with w), that theory beyond — (36) held at
-/// its values at the sonic leading edge past it, with
-/// [`Warning::FairedHeldAtSonicEdge`]. Quasi-steady throughout.
-pub fn slender_fairing(wing: &WingInput, h: f64, m: f64) -> Result<Damping, DampingError> {
-    let at = |theory: Theory, m: f64| {
-        damping_derivatives_with(theory, wing, h, m, None, Harmonic::Direct)
-    };
-    let slender = at(Theory::Slender, m)?;
-    if m <= SONIC {
-        return Ok(slender);
-    }
-    let sonic = sonic_leading_edge_mach(wing.sweep_le);
-    let mut warnings = Warnings::default();
-    let m_sup = if m >= sonic {
-        warnings.push(Warning::FairedHeldAtSonicEdge { sonic });
-        sonic * (1.0 - 1e-9)
-    } else {
-        m
-    };
-    let sup = at(Theory::Supersonic, m_sup)?;
-    let x = ((m - SONIC) / SLENDER_FAIRING_WIDTH).clamp(0.0, 1.0);
-    let w = x * x * (3.0 - 2.0 * x);
-    let blend = |a: f64, b: f64| (1.0 - w) * a + w * b;
-    let (a, b) = (slender.derivatives, sup.derivatives);
-    Ok(Damping {
-        theory: Theory::Supersonic,
-        derivatives: DampingDerivatives {
-            z_q: blend(a.z_q, b.z_q),
-            z_wdot: blend(a.z_wdot, b.z_wdot),
-            m_q: blend(a.m_q, b.m_q),
-            m_wdot: blend(a.m_wdot, b.m_wdot),
-        },
-        fig18: sup.fig18,
-        warnings,
-    })
+/// From this Mach number the note's model's damping is quasi-steady
+/// (linear supersonic theory); below it the short period's ω̄ is iterated.
+pub fn iterates_frequency_at(mach: f64) -> bool {
+    mach < SUPERSONIC_FROM
 }
 
-/// The width in Mach number of the slender fairing's blend above M = 1.
-pub const SLENDER_FAIRING_WIDTH: f64 = 0.2;
+/// Where the note's model joins its own lift slope and aerodynamic centre:
+/// the lattice's at 0.9 to linear supersonic theory's at 1.2 (one cubic).
+pub const COEFFICIENT_JOIN: (f64, f64) = (LIFTING_SURFACE_LIMIT, SUPERSONIC_FROM);
+
+/// A configuration's increment over its wing in the note's bands (the
+/// increment of `faired-theories` and of the classical theories, which
+/// have no lifting surface of their own near M = 1):
+///
+/// | Mach number | the increment |
+/// | --- | --- |
+/// | M ≤ 0.9 | the multi-surface doublet lattice |
+/// | 0.9 < M < 1.2 | each part's every number the monotone cubic (Fritsch–Carlson slopes) through the lattice's value at 0.9 (slope: backward difference over [`LATTICE_SLOPE_STEP`]) and the supersonic theory's at 1.2 (slope: central difference over [`SUPERSONIC_SLOPE_STEP`]) |
+/// | M ≥ 1.2 | each surface by linear supersonic theory, the wing's downwash at the tailplane |
+pub fn increment(
+    config: &Configuration,
+    mach: f64,
+    omega_bar: f64,
+    harmonic: Harmonic,
+    mach_derivatives: bool,
+) -> Result<Increment, ConfigurationError> {
+    if !mach.is_finite() || mach < 0.0 {
+        return Err(ConfigurationError::Geometry(format!(
+            "the Mach number must be finite and ≥ 0, not {mach}"
+        )));
+    }
+    if mach > LIFTING_SURFACE_LIMIT && mach < SUPERSONIC_FROM {
+        return faired(config, mach, omega_bar, harmonic);
+    }
+    let (method, lo) = if mach >= SUPERSONIC_FROM {
+        (Method::Supersonic, SUPERSONIC_FROM)
+    } else {
+        (Method::Lattice, 0.0)
+    };
+    with_derivatives(
+        config,
+        mach,
+        omega_bar,
+        method,
+        harmonic,
+        mach_derivatives,
+        lo,
+    )
+}
+
+/// The faired band: each part's every number the monotone cubic
+/// between the lattice at 0.9 and the supersonic theory at 1.2, with
+/// the ends' slopes; the increment is their sum (so the parts sum to
+/// it, and its Mach derivative is theirs).
+fn faired(
+    config: &Configuration,
+    mach: f64,
+    omega_bar: f64,
+    harmonic: Harmonic,
+) -> Result<Increment, ConfigurationError> {
+    let (m0, m1, st) = (
+        LIFTING_SURFACE_LIMIT,
+        SUPERSONIC_FROM,
+        SUPERSONIC_SLOPE_STEP,
+    );
+    let ends = [
+        by_method(config, m0, omega_bar, Method::Lattice, harmonic)?.1,
+        by_method(
+            config,
+            m0 - LATTICE_SLOPE_STEP,
+            omega_bar,
+            Method::Lattice,
+            harmonic,
+        )?
+        .1,
+        by_method(config, m1, omega_bar, Method::Supersonic, harmonic)?.1,
+        by_method(config, m1 - st, omega_bar, Method::Supersonic, harmonic)?.1,
+        by_method(config, m1 + st, omega_bar, Method::Supersonic, harmonic)?.1,
+    ];
+    let of = |i: usize, part: Part| {
+        ends[i]
+            .iter()
+            .find(|c| c.part == part)
+            .map_or([0.0; 6], |c| numbers(&c.solution))
+    };
+    let mut order: Vec<Part> = Vec::new();
+    for c in ends[0].iter().chain(ends[2].iter()) {
+        if !order.contains(&c.part) {
+            order.push(c.part);
+        }
+    }
+    let mut parts = Vec::new();
+    let (mut total, mut d) = ([0.0; 6], [0.0; 2]);
+    for part in order {
+        let (y0, b0, y1, c1, a1) = (
+            of(0, part),
+            of(1, part),
+            of(2, part),
+            of(3, part),
+            of(4, part),
+        );
+        let v: [crate::numerics::interpolation::Value; 6] = std::array::from_fn(|i| {
+            let s0 = (y0[i] - b0[i]) / LATTICE_SLOPE_STEP;
+            let s1 = (a1[i] - c1[i]) / (2.0 * st);
+            let (e0, e1) = monotone_slopes((y1[i] - y0[i]) / (m1 - m0), s0, s1);
+            hermite((m0, y0[i], e0), (m1, y1[i], e1), mach)
+        });
+        for i in 0..6 {
+            total[i] += v[i].value;
+        }
+        d[0] += v[0].d_mach;
+        d[1] += v[1].d_mach;
+        parts.push(Contribution {
+            part,
+            solution: from_numbers(v.map(|x| x.value), mach, omega_bar),
+        });
+    }
+    Ok(Increment {
+        solution: from_numbers(total, mach, omega_bar),
+        parts,
+        d_lift_alpha: Some(d[0]),
+        d_moment_alpha: Some(d[1]),
+    })
+}
 
 #[cfg(test)]
 mod tests {
