@@ -23,6 +23,10 @@ use stability_core::study::intervals;
 /// `<!-- conclusions:begin … -->` and `<!-- conclusions:end -->`.
 pub const MARKER: &str = "conclusions";
 
+/// The name of README.md's markers around [`Readme::python`], under the
+/// Python example that sweeps the note's two wings.
+pub const PYTHON_MARKER: &str = "python-fig33";
+
 /// The μ₁ of Fig 33's third curve of the 60° delta, whose failures the
 /// text names.
 const HEAVY_MU1: f64 = 400.0;
@@ -38,6 +42,10 @@ pub struct Readme {
     /// The text between the markers: the figure's paragraph and the note's
     /// conclusions (Markdown, wrapped, ending with a newline).
     pub conclusions: String,
+    /// What the Python section's sweep of the two wings prints, in words:
+    /// each wing's short period against the standard at μ₁ = 50 (Fig 33's
+    /// curves).
+    pub python: String,
 }
 
 /// One conclusion judged at our values of the unstated inputs.
@@ -87,6 +95,7 @@ pub fn of(findings: &Findings) -> Result<Readme, String> {
     Ok(Readme {
         figures,
         conclusions,
+        python: wrap(&python_paragraph(findings), ""),
     })
 }
 
@@ -155,12 +164,42 @@ fn figure_paragraph(f: &Findings, heavy: &Inadequate) -> String {
             show_intervals(&w45.unstable)
         )
     };
+    // the join's widest reach from M = 1 on the two wings, rounded up to
+    // hundredths
+    let reach = super::regimes::damping_joins(&WINGS)
+        .iter()
+        .map(|&(a, b)| (1.0 - a).max(b - 1.0))
+        .fold(0.0, f64::max);
+    let within = (reach * 100.0).ceil() / 100.0;
     format!(
-        "Fig. 33 of the note, recomputed by one linear lifting-surface theory at the short period's own frequency (the default `faired` model: the doublet lattice below M = 1, its sonic extrapolation at M = 1, the Mach box above; joined only across the shaded band, within 0.03 of M = 1). At μ₁ = 50 the 45° tailless delta (blue) {}{least} — the note finds “serious instability in the range {lo} < M < {hi}” — and {diverges}. At μ₁ = 50 the 60° delta {}; at μ₁ = {HEAVY_MU1} it {}. {}",
+        "Fig. 33 of the note, recomputed by one linear lifting-surface theory at the short period's own frequency (the default `faired` model: the doublet lattice below M = 1, its sonic extrapolation at M = 1, the Mach box above; joined only across the shaded band, within {within} of M = 1). At μ₁ = 50 the 45° tailless delta (blue) {}{least} — the note finds “serious instability in the range {lo} < M < {hi}” — and {diverges}. At μ₁ = 50 the 60° delta {}; at μ₁ = {HEAVY_MU1} it {}. {}",
         against_standard(&inadequate(w45)),
         against_standard(&inadequate(w60)),
         against_standard(heavy),
         mu1_limit_sentence(f),
+    )
+}
+
+/// The paragraph under the Python section's sweep: each wing's short
+/// period at μ₁ = 50 against the standard, and its most cycles to half
+/// amplitude.
+fn python_paragraph(f: &Findings) -> String {
+    let (w45, w60) = (&f.wings[0], &f.wings[1]);
+    let (lo, hi) = TRANSONIC;
+    let worst = |w: &Wing| {
+        w.most_cycles.map_or(String::new(), |(m, c)| {
+            format!(
+                ", {} cycles to half amplitude at its worst (M = {m:.2})",
+                sig(c, 3)
+            )
+        })
+    };
+    format!(
+        "The 45° delta's short period {}{} — the note: “serious instability in the range {lo} < M < {hi}”; the 60° delta's {}{}.",
+        against_standard(&inadequate(w45)),
+        worst(w45),
+        against_standard(&inadequate(w60)),
+        worst(w60),
     )
 }
 

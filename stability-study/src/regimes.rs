@@ -58,6 +58,40 @@ fn regimes(deg: f64) -> Vec<Regime> {
     delta(deg).map_or_else(Vec::new, |p| DampingModel::default().regimes(&p))
 }
 
+/// The name of the markers in `docs/damping-theories.md` around
+/// [`regimes_table`].
+pub const REGIMES_MARKER: &str = "regimes";
+
+/// The deltas of the note's study whose regimes [`regimes_table`] lists
+/// (Figs 25–26 sweep 30° to 75°; the note's two wings are 45° and 60°).
+const TABLE_SWEEPS: [f64; 4] = [30.0, 45.0, 60.0, 75.0];
+
+/// The default model's regimes on the study's deltas, as a Markdown table
+/// (Mach number from and to, in the model's own words): what
+/// `docs/damping-theories.md` states of the model's bands, computed.
+pub fn regimes_table() -> String {
+    let mut s = String::from(
+        "| delta | Mach number | the default `faired` model there |\n| --- | --- | --- |\n",
+    );
+    for deg in TABLE_SWEEPS {
+        for r in regimes(deg).iter().filter(|r| r.to > r.from) {
+            let range = if r.to.is_finite() {
+                format!("{}–{}", mach(r.from), mach(r.to))
+            } else {
+                format!("above {}", mach(r.from))
+            };
+            s.push_str(&format!("| {deg}° | {range} | {} |\n", r.label));
+        }
+    }
+    s
+}
+
+/// A Mach number to four decimals, trailing zeros dropped.
+fn mach(m: f64) -> String {
+    let s = format!("{m:.4}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
 /// The bands' label, the default model's own words.
 pub(crate) fn faired_label() -> &'static str {
     regimes(45.0)
@@ -302,5 +336,29 @@ mod tests {
             merged(model_damping_joins(DampingModel::FairedTheories, &p)),
             vec![(0.9, 1.2)]
         );
+    }
+
+    /// The docs' table: on each delta the regimes tile M 0 to the last,
+    /// one row each, the join from 0.99 among them.
+    #[test]
+    fn the_regimes_table_lists_each_deltas_regimes_in_order() {
+        let table = regimes_table();
+        for deg in TABLE_SWEEPS {
+            let rows: Vec<&str> = table
+                .lines()
+                .filter(|l| l.starts_with(&format!("| {deg}° |")))
+                .collect();
+            assert!(rows[0].contains("| 0–0.9 |"), "{rows:?}");
+            assert!(rows.last().unwrap().contains("above "), "{rows:?}");
+            assert!(
+                rows.iter()
+                    .any(|r| r.contains("| 0.99–1.")
+                        && r.ends_with(&format!("{} |", faired_label()))),
+                "{rows:?}"
+            );
+        }
+        assert_eq!(mach(1.0055), "1.0055");
+        assert_eq!(mach(0.9), "0.9");
+        assert_eq!(mach(3.0), "3");
     }
 }

@@ -1,10 +1,14 @@
 //! `cargo xtask regen [--check]`: every generated artefact of the project,
 //! written (or, with `--check`, compared) through one
 //! [`ensure_file_contents`], each with the preamble this module owns: whole
-//! files, and README.md's text between its `conclusions` markers (the
-//! paragraph under Fig 33 and the note's conclusions as the report judges
-//! them, `stability_study::readme`), the preamble in the first
-//! marker.
+//! files, and the text between a document's markers: README.md's
+//! `conclusions` (the paragraph under Fig 33 and the note's conclusions as
+//! the report judges them, `stability_study::readme`) and `python-fig33`
+//! (what the Python example's sweep shows), docs/models.md's table of
+//! models, docs/damping-theories.md's `regimes` (the default model's bands,
+//! `stability_study::regimes`) — the preamble in the first marker. Every
+//! number the README and the docs state about results, bands or run times
+//! is written here, or is not stated.
 //!
 //! After rust-analyzer's `xtask codegen`: the list of artefacts is
 //! [`artefacts`]; the tests at the bottom run the regeneration in check
@@ -201,12 +205,28 @@ fn artefacts(root: &Path) -> Result<Vec<Artefact>, String> {
         contents: readme.conclusions,
     });
     out.push(Artefact {
+        path: README.into(),
+        part: Part::Between(stability_study::readme::PYTHON_MARKER),
+        contents: readme.python,
+    });
+    // The default model's regimes on the study's deltas: where it is which
+    // theory, and its one join.
+    out.push(Artefact {
+        path: DAMPING_THEORIES.into(),
+        part: Part::Between(stability_study::regimes::REGIMES_MARKER),
+        contents: stability_study::regimes::regimes_table(),
+    });
+    out.push(Artefact {
         path: MODELS.into(),
         part: Part::Between("models"),
         contents: models_table(),
     });
     Ok(out)
 }
+
+/// The document whose table of the default model's regimes the model
+/// writes.
+const DAMPING_THEORIES: &str = "docs/damping-theories.md";
 
 /// The document whose table of models the registry writes.
 const MODELS: &str = "docs/models.md";
@@ -420,7 +440,9 @@ mod tests {
         apply(tmp, computed(), false).unwrap();
         apply(tmp, computed(), true).unwrap();
         let fresh = files(tmp);
-        assert_eq!(fresh.len(), computed().len());
+        let paths: std::collections::BTreeSet<&str> =
+            computed().iter().map(|a| a.path.as_str()).collect();
+        assert_eq!(fresh.len(), paths.len());
         let part_of = |rel: &str| {
             computed().iter().find_map(|a| match a.part {
                 Part::Between(name) if a.path == rel => Some(name),

@@ -31,8 +31,8 @@ pub enum DampingModel {
     /// The default ([`crate::aerodynamics::models::faired`]): one frequency-dependent linear
     /// lifting-surface theory at the short period's own ω̄ from M = 0 to 3
     /// — the doublet lattice, its sonic extrapolation at M = 1, the Mach box
-    /// above — with one stated join narrower than ±0.03 about M = 1 through
-    /// the sonic point; linear supersonic theory beyond M = 3; the lift
+    /// above — with one stated join through the sonic point, from M = 0.99 to
+    /// the Mach box's first Mach number (which depends on the planform); linear supersonic theory beyond M = 3; the lift
     /// slope and aerodynamic centre from the same theory.
     #[default]
     Faired,
@@ -334,7 +334,7 @@ pub enum FrequencyPolicy {
 const FAIRED: Row = Row {
     name: "faired",
     equations: "Figs 19–24",
-    summary: "the default: one frequency-dependent linear lifting-surface theory at the short period's own ω̄ from M = 0 to 3 (the doublet lattice, its sonic extrapolation at M = 1, the Mach box), one stated join through the sonic point between M = 0.99 and the Mach box's first Mach number (within ±0.03 of M = 1), linear supersonic theory beyond M = 3; the lift slope and aerodynamic centre from the same theory",
+    summary: "the default: one frequency-dependent linear lifting-surface theory at the short period's own ω̄ from M = 0 to 3 (the doublet lattice, its sonic extrapolation at M = 1, the Mach box), one stated join through the sonic point between M = 0.99 and the Mach box's first Mach number (a little above M = 1; how far depends on the planform: docs/damping-theories.md tabulates it), linear supersonic theory beyond M = 3; the lift slope and aerodynamic centre from the same theory",
     validity: "any Mach number (the lifting surface 0 ≤ M ≤ 3); true and cropped deltas, trapezoids",
     supplies: "z_q, z_ẇ, m_q, m_ẇ, the lift slope and the aerodynamic centre",
     source: "Albano & Rodden (AIAA J. 7(2), 1969); Pines, Dugundji & Neuringer (J. Aero. Sci. 22(10), 1955); docs/damping-theories.md, \"The faired model\"",

@@ -14,8 +14,8 @@
 //! | M > 3 | linear supersonic theory ((36), the supersonic-edge theory), quasi-steady, as `faired-theories` | the same |
 //!
 //! The one join left, [`SONIC_JOIN`] to M_b (0.99 to 1.0055 on the 45°
-//! delta, to 1.0164 on the 60°), is narrower than ±0.03 about M = 1 and
-//! passes through the sonic point: the quasi-steady lift slope and
+//! delta, to 1.0164 on the 60°), reaches further above M = 1 the more slender the
+//! wing and passes through the sonic point: the quasi-steady lift slope and
 //! aerodynamic centre through linear theory's sonic values (πA/2, the
 //! centre at ⅔ of the tip's leading-edge station), the damping derivatives
 //! between the sonic solution at ω̄ and the Mach box's. There, below
