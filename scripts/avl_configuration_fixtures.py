@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Steady stability derivatives of wing + tailplane / foreplane layouts from
 AVL (M. Drela & H. Youngren; the `optvl` package's Python interface) for the
-configuration lattice's tests (stability-core/tests/configuration_lattice_avl.rs).
+configuration lattice's tests (stability-core/tests/it/configuration_lattice_avl.rs).
 
 Writes stability-core/tests/fixtures/avl_configuration.json: for the note's
 60 deg delta (root chord 1, pointed tip given a chord of 1e-4 as AVL needs

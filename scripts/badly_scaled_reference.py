@@ -16,7 +16,7 @@ quartic_reference.csv (set, name, A..E, four roots re/im), for:
 The roots are of the f64 coefficients as given, by mpmath.polyroots at
 high precision (each checked by its residual), printed to 25 digits.
 Cases whose coefficients overflow, or whose roots leave f64's range, are
-skipped (the solver reports those as errors; tests/badly_scaled.rs checks
+skipped (the solver reports those as errors; tests/it/badly_scaled.rs checks
 that separately).
 
 Run from the repository root:  python3 scripts/badly_scaled_reference.py

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Oscillatory solution of a wing + tailplane from panelaero (DLR's public
 doublet-lattice code, `pip install panelaero`) for the configuration
-lattice's test (stability-core/tests/configuration_lattice_panelaero.rs).
+lattice's test (stability-core/tests/it/configuration_lattice_panelaero.rs).
 
 Writes stability-core/tests/fixtures/panelaero_configuration.json. The
 note's 60 deg delta (root chord 1) with a tailplane (root 0.3, tip 0.15,

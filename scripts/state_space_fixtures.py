@@ -7,7 +7,7 @@ For each case below the script runs the program with `--state-space`, runs
 the python-control script it wrote (OUT.py) as it is, and records what
 python-control and numpy make of that system: damp()'s natural frequencies,
 damping ratios and poles, and numpy's eigenvectors of A scaled so that
-theta = 1. `delta-stability/tests/engineering.rs` compares the program's own
+theta = 1. `delta-stability/tests/it/engineering.rs` compares the program's own
 damp table and mode shapes (its quartic's roots, its cofactor eigenvectors)
 with these. CI does not run this script; run it after a change to the
 export, with a venv holding python-control:

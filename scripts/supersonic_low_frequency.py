@@ -17,7 +17,7 @@ values z_wdot = 2/beta^3 and 1/(3 beta^3), as functions of the kernel phase
 across the chord, kappa = omega c M^2 / beta^2.  The ratio depends on kappa
 alone to within about 1 %; at kappa = 0.5 the lift is within 5 % and the
 moment within 9 %.  The Rust test
-`the_low_frequency_limit_is_where_the_exact_plate_says` (tests/supersonic.rs)
+`the_low_frequency_limit_is_where_the_exact_plate_says` (tests/it/supersonic.rs)
 repeats the kappa = 0.5 row independently.
 
 Usage: python3 scripts/supersonic_low_frequency.py   (numpy, scipy)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Exact oscillatory supersonic loads for the Mach box tests
-(stability_core::lifting_surface::mach_box, tests/supersonic_oscillatory.rs).
+(stability_core::lifting_surface::mach_box, tests/it/supersonic_oscillatory.rs).
 
 Two-dimensional flat plate (I.E. Garrick and S.I. Rubinow, NACA Rep. 846,
 1946), normalwash wbar(s) (positive down, per unit V), s from the leading

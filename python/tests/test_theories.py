@@ -131,5 +131,5 @@ def test_a_tailed_config_goes_through_and_size_tail_finds_a_tail():
     s = ds.size_tail(cfg, mach=[1.2, 1.3, 1.4, 1.5], damping="faired-theories")
     assert 0.0 < s["area"] < 16.0
     assert all(o["verdict"] == "meets" for o in s["outcomes"])
-    # the CLI's brute-force-checked answer (stability-core/tests/configuration_sizing.rs)
+    # the CLI's brute-force-checked answer (stability-core/tests/it/configuration_sizing.rs)
     assert abs(s["area"] - 3.8915) < 0.01

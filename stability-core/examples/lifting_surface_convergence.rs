@@ -11,7 +11,7 @@
 //! prints the table (docs/damping-theories.md); with `--write` it also
 //! writes the dense lattice's values to
 //! `stability-core/tests/data/lifting_surface/convergence.json`, which
-//! `tests/lifting_surface_convergence.rs` holds the default lattice to;
+//! `tests/it/lifting_surface_convergence.rs` holds the default lattice to;
 //! with `--check` it compares the dense values it computed with the
 //! committed fixture instead (to 1e-9, relative) and fails if they differ.
 

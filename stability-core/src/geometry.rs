@@ -17,7 +17,7 @@
 //! - h = (x₀ − x̄)/c̄ = x₀/c̄ − (1 + λ − 2λ²)/(2(1 + λ + λ²)).
 //!
 //! All the printed forms of §2.2 check against each other and against a
-//! numerical integration over the planform (tests/geometry.rs); the OCR
+//! numerical integration over the planform (tests/it/geometry.rs); the OCR
 //! garbles their symbols (c̄ for the S.M.C. and the M.A.C. alike, x̄ for the
 //! M.A.C.) but not their content.
 //!
@@ -290,7 +290,7 @@ pub enum TrapezoidError {
 /// c̄ = (2/S)∫₀ˢ c² dy = (2/3)c_r(1 + λ + λ²)/(1 + λ) at
 /// ȳ = (2/S)∫₀ˢ yc dy = (s/3)(1 + 2λ)/(1 + λ), its leading edge at
 /// x̄ = ȳ tan Λ — the integrals of §2.2 for a general trapezoid; for a
-/// `Planform` they are §2.2's printed forms (`tests/geometry.rs` checks that
+/// `Planform` they are §2.2's printed forms (`tests/it/geometry.rs` checks that
 /// the two agree and that both match a numerical integration).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Trapezoid {

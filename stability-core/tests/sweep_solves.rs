@@ -1,7 +1,9 @@
 //! A sweep solves the lifting surface once per (planform, Mach, ω̄), not
 //! per c.g., μ₁ or i_B: counted by the cache (`lifting_surface::store::
-//! solves`). One test, alone in its binary, so that no other test's solves
-//! are counted with it.
+//! solves`). One test, alone in its binary (not a module of `tests/it/`):
+//! the count is the process's, so no other test's solves may be counted
+//! with it, and its `store::clear()` would empty the store under the other
+//! tests (the allocation tests' warmed store among them).
 
 use stability_core::aero::{AeroModel, AeroModelName};
 use stability_core::case::{Case, DampingModel};

@@ -10,7 +10,7 @@
 //! and margins. Non-finite numbers serialize as `null` (serde_json's rule
 //! for f64), as do absent quantities.
 //!
-//! The key names are an interface (scripts depend on them): `tests/json.rs`
+//! The key names are an interface (scripts depend on them): `tests/it/json.rs`
 //! pins them, and the values, against the command line's output as it was
 //! assembled by hand.
 

@@ -8,7 +8,7 @@
 //! [`tailless_delta_60`] with [`tailless_delta_60_flight`] is
 //! `examples/tailless-delta-60-dimensional.toml`: a 60° delta at M = 0.8,
 //! 11 000 m, with its dimensional flight condition (times in seconds).
-//! `tests/examples.rs` checks both against the files.
+//! `tests/it/examples.rs` checks both against the files.
 
 use crate::Derivatives;
 use crate::analysis::Dimensional;

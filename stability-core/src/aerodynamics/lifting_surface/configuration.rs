@@ -57,10 +57,10 @@
 //! 0.0072c̄ (neutral point) from the converged answer, which this lattice's
 //! own extrapolation at the observed orders and AVL's (with its surfaces
 //! one component: no finite vortex cores between them) share to 0.31 % and
-//! 0.0022c̄ (`tests/configuration_lattice_avl.rs`).
+//! 0.0022c̄ (`tests/it/configuration_lattice_avl.rs`).
 //!
 //! # Checks
-//! `tests/configuration_lattice*.rs` and `tests/configuration_tail_volume.rs`:
+//! `tests/it/configuration_lattice*.rs` and `tests/it/configuration_tail_volume.rs`:
 //! the wing alone is the wing's lattice to rounding; a tail far above is
 //! the two isolated surfaces; the non-planar kernel tends to the planar one
 //! as z → 0; panelaero's non-planar doublet lattice on the same boxes to

@@ -26,7 +26,7 @@
 //! Its slope gives the quasi-steady Mach derivatives of eqs (27)–(29):
 //! d/dM = (M/β) d/dβ.
 //!
-//! # Accuracy (measured, `tests/mach_table.rs`)
+//! # Accuracy (measured, `tests/it/mach_table.rs`)
 //! Against direct Mach box solves at Mach numbers between the nodes on
 //! the note's deltas and a cropped delta, ω̄ = 0 … 0.8: within 2·10⁻³ of
 //! C_Lα in every number, most of it the frequency interpolation below

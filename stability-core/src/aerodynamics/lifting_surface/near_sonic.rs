@@ -36,7 +36,7 @@
 //! 0.998), interpolated for M < 0.998 and extrapolated beyond, to M = 1.
 //!
 //! # Accuracy
-//! Measured (`tests/lifting_surface_near_sonic.rs`,
+//! Measured (`tests/it/lifting_surface_near_sonic.rs`,
 //! `docs/lattice-near-sonic.md`): on the note's 45° and 60° deltas at
 //! ω̄ = 0.3 and 0.6 the quadratic at M = 0.999 is within 0.9 % of C_Lα (each
 //! number of the [`Solution`]) of a direct solve there, which it does not

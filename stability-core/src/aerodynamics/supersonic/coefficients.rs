@@ -25,7 +25,7 @@
 //!   the derivative is the supersonic side's), backward near its upper end
 //!   (the sonic edge seen from below). The integrals' quadrature is a fixed
 //!   tanh-sinh rule, a smooth function of M accurate to about 1e-11, so the
-//!   difference is accurate to about 1e-8 (tests/supersonic.rs: against
+//!   difference is accurate to about 1e-8 (tests/it/supersonic.rs: against
 //!   the derivative of the closed-form lift slope
 //!   `evvard::lift_slope_closed`, a central difference of the independent
 //!   direct source integral, and Richardson-extrapolated differences of

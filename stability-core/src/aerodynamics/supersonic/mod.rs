@@ -55,7 +55,7 @@ use std::f64::consts::PI;
 /// |β cot Λ − 1| at or below which the leading edge counts as sonic.
 ///
 /// Both theories are continuous at β cot Λ = 1 for every taper
-/// (`tests/supersonic.rs`), so the choice decides only which formula is
+/// (`tests/it/supersonic.rs`), so the choice decides only which formula is
 /// evaluated there; 1e-9 covers the rounding of β cot Λ (the 60° delta at
 /// M = 2 computes 1.0000000000000002) with a margin of seven decades, and
 /// the subsonic-edge theory differs from its sonic-edge limit by
@@ -332,7 +332,7 @@ pub struct EdgeDerivatives {
 /// theory's potentials corrected behind the tips for a cropped one
 /// ([`subsonic_edge`]); where it is supersonic (or sonic), the
 /// supersonic-edge theory ([`supersonic_edge`]). Continuous in M across
-/// the sonic edge for every taper (`tests/supersonic.rs`).
+/// the sonic edge for every taper (`tests/it/supersonic.rs`).
 pub fn edge_theory(wing: &Wing, mach: f64, h: f64) -> Result<EdgeDerivatives, SupersonicError> {
     let beta = check_mach(mach)?;
     if !h.is_finite() {

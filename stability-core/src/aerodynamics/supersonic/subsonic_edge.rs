@@ -13,7 +13,7 @@
 //! exactly (`docs/damping-theories.md`), and at the sonic edge (k = 0,
 //! E = π/2, G = 4/(3π)) they are the source integral itself, in closed form.
 //! That each satisfies its boundary condition on the wing is tested
-//! independently (`tests/supersonic.rs`: the downwash of the doublet sheet,
+//! independently (`tests/it/supersonic.rs`: the downwash of the doublet sheet,
 //! by the source solution of density Φ). To first order in frequency the
 //! unsteady problem is the steady one with the downwash w(1 + iκξ) and
 //! Φ = (1 − iκx)Ψ (κ = ωM²/(Vβ²)), so the kernel term of [`PotentialIntegrals`]
@@ -46,7 +46,7 @@
 //! the correction is −Φ_Δ(P): the potential vanishes there, as it must on a
 //! subsonic side edge.) No property of the leading edge enters, so this is
 //! the route of [`super::evvard`] in another order; at the sonic edge both
-//! apply, and they agree to rounding (tests/supersonic.rs) — the cropped
+//! apply, and they agree to rounding (tests/it/supersonic.rs) — the cropped
 //! wing's theory is continuous in M across it. The same configuration
 //! (streamwise tips, subsonic leading edges, supersonic trailing edge) is
 //! the one of Malvestuto, Margolis & Ribner's lift and roll-damping theory,

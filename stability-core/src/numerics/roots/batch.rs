@@ -20,7 +20,7 @@
 //! second resolvent root or the polish needed, a quartic outside the
 //! scaled range, an error) is [`solve_quartic`]'s answer itself:
 //! [`solve_quartics`] returns exactly what [`solve_quartic`] returns, at a
-//! lower cost per quartic (`tests/roots_batch.rs` holds it to that).
+//! lower cost per quartic (`tests/it/roots_batch.rs` holds it to that).
 
 use super::binary::{exponent, pow2};
 use super::{Complex64, RootsError, scale_back, scale_exponent, solve_quartic, sort_roots};

@@ -58,7 +58,7 @@
 //! at the root's own scale; otherwise the answer is an error
 //! ([`RootsError::Inaccurate`]), as it is for roots beyond f64's range
 //! ([`RootsError::Overflow`], [`RootsError::Underflow`]): a root that
-//! fails the check is never returned as an answer. (`tests/roots_fuzz.rs`
+//! fails the check is never returned as an answer. (`tests/it/roots_fuzz.rs`
 //! holds the solver to this over f64's whole range.)
 //!
 //! Modules: `binary` (exact scaling), `factor` (steps 2–4), `aberth`

@@ -90,7 +90,7 @@ pub fn wing_potential(w: &Trapezoid, f: &Flow, x: f64, y: f64) -> Pair {
 /// Near M = 1 the phases grow as 1/β² (σ = κM²/β², ν = κM/β²): at
 /// M = 1.03, ω̄ = 1 they turn through some 26 radians along a delta's root
 /// chord, and one rule per piece put the 10° delta's z_θ̇ 21 % off the exact
-/// reverse-flow value (0.14 % now; `tests/supersonic_oscillatory.rs`) and
+/// reverse-flow value (0.14 % now; `tests/it/supersonic_oscillatory.rs`) and
 /// made the 45° delta's derivatives at M = 1.03 jump by ±5 % from one ω̄ to
 /// the next (`docs/supersonic-oscillatory.md`, "Near M = 1").
 pub const PHASE_PER_PIECE: f64 = 3.0;

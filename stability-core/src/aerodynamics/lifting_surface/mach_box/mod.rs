@@ -133,7 +133,7 @@ pub struct MachBoxSpec {
 impl Default for MachBoxSpec {
     /// 128 strips, extrapolated (with 64): within 0.5 % of the exact
     /// reverse-flow values of supersonic-edged deltas at ω̄ ≤ 1
-    /// (`tests/supersonic_oscillatory.rs`).
+    /// (`tests/it/supersonic_oscillatory.rs`).
     fn default() -> Self {
         MachBoxSpec {
             strips: 128,
