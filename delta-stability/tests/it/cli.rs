@@ -2,7 +2,7 @@
 
 use crate::common;
 
-use common::{Scratch, bin, json, path, root, run_err, run_ok, stderr};
+use common::{Scratch, bin, json, path, root, run_err, run_ok, stderr, wait_while_running};
 use stability_core::quartic::reference::eq6_by_hand;
 
 #[test]
@@ -651,7 +651,7 @@ fn a_killed_report_leaves_the_previous_report_whole() {
             .stderr(std::process::Stdio::null())
             .spawn()
             .expect("run");
-        let started = wait_for(|| {
+        let started = wait_while_running(&mut child, || {
             entries_named(dir.path(), ".delta-stability-")
                 .iter()
                 .any(|d| std::fs::read_dir(d).is_ok_and(|mut e| e.next().is_some()))
@@ -913,18 +913,6 @@ fn entries_named(dir: &std::path::Path, prefix: &str) -> Vec<std::path::PathBuf>
         .collect()
 }
 
-/// Polls `ready` every 2 ms for up to 60 s.
-fn wait_for(mut ready: impl FnMut() -> bool) -> bool {
-    let start = std::time::Instant::now();
-    while start.elapsed() < std::time::Duration::from_secs(60) {
-        if ready() {
-            return true;
-        }
-        std::thread::sleep(std::time::Duration::from_millis(2));
-    }
-    false
-}
-
 /// Makes `path` look `secs` seconds old.
 fn age(path: &std::path::Path, secs: u64) {
     let then = std::time::SystemTime::now() - std::time::Duration::from_secs(secs);
@@ -951,7 +939,7 @@ fn a_killed_sweep_leaves_no_half_written_file() {
     // wait until the sweep has written rows (not only the header) into its
     // temporary file, then kill it
     let header = 200;
-    let writing = wait_for(|| {
+    let writing = wait_while_running(&mut child, || {
         entries_named(dir.path(), ".delta-stability-")
             .iter()
             .any(|p| std::fs::metadata(p).is_ok_and(|m| m.len() > header))

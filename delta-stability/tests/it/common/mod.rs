@@ -143,3 +143,22 @@ pub fn copy_dir(from: &Path, to: &Path) {
         }
     }
 }
+
+/// Polls `ready` (what the program has written) until it holds — true —
+/// or `child` has ended without it — false. No time limit: the test waits
+/// on the program, however loaded the machine (a program that hangs is
+/// caught by the run's own limit).
+pub fn wait_while_running(
+    child: &mut std::process::Child,
+    mut ready: impl FnMut() -> bool,
+) -> bool {
+    loop {
+        if ready() {
+            return true;
+        }
+        if child.try_wait().expect("wait").is_some() {
+            return ready();
+        }
+        std::thread::sleep(std::time::Duration::from_millis(2));
+    }
+}
