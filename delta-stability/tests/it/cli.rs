@@ -927,7 +927,10 @@ fn a_killed_sweep_leaves_no_half_written_file() {
     let dir = Scratch::new();
     let out_path = dir.path().join("big.csv");
     let mut child = bin()
-        .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.00001"])
+        // 1.5 million points: seconds of writing to be killed in, and
+        // about 0.7 GB if it ran to the end (a sweep the disk cannot
+        // hold is refused before it starts)
+        .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.0001"])
         // the quasi-steady fairing: the default iterates every point through
         // the lattice, and this is about the file, not the model
         .args(["--damping", "faired-slender"])
@@ -949,7 +952,7 @@ fn a_killed_sweep_leaves_no_half_written_file() {
     assert!(writing, "the sweep never wrote into a temporary file");
     assert!(
         !status.success(),
-        "a 15-million-point sweep finished early?"
+        "a 1.5-million-point sweep finished early?"
     );
     assert!(!out_path.exists(), "a half-written file at the target");
     let stale = entries_named(dir.path(), ".delta-stability-");

@@ -997,7 +997,10 @@ fn sigint_and_sigterm_remove_the_runs_temporaries() {
         let dir = Scratch::new();
         let out = dir.path().join("big.csv");
         let mut child = bin()
-            .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.00001"])
+            // 1.5 million points: seconds of writing to be killed in, and
+            // about 0.7 GB if it ran to the end (a sweep the disk cannot
+            // hold is refused before it starts)
+            .args(["sweep", "examples/delta-60.toml", "--mach", "0.5:2:0.0001"])
             .args(["--damping", "faired-slender", "--cg", "0.2:0.3:0.001", "-o"])
             .arg(&out)
             .stderr(std::process::Stdio::null())
