@@ -4,7 +4,7 @@ found wrong roots with exit 0 for inputs beyond about 1e54 or below 1e-150).
 
 Writes stability-core/tests/data/badly_scaled.csv in the format of
 quartic_reference.csv (set, name, A..E, four roots re/im), for:
-  inputs   the README's tailless delta (stability_core::examples::
+  inputs   the README's tailless delta (stability_core::design::examples::
            tailless_delta_45) with one input set to an extreme value
            (±1e60, ±1e250, ±1e-160, ±1e-300); the f64 coefficients come
            from the generated code, through

@@ -2,7 +2,7 @@
 """The reason for supersonic::transonic::LOW_FREQUENCY_LIMIT.
 
 Linear supersonic theory to first order in frequency (the report's eq 36,
-and stability_core::supersonic) replaces the oscillatory kernel by its
+and stability_core::aerodynamics::supersonic) replaces the oscillatory kernel by its
 low-frequency expansion.  For a two-dimensional flat plate the exact
 oscillatory theory is known in closed form (I.E. Garrick and S.I. Rubinow,
 NACA Rep. 846, 1946):

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Exact oscillatory supersonic loads for the Mach box tests
-(stability_core::lifting_surface::mach_box, tests/it/supersonic_oscillatory.rs).
+(stability_core::aerodynamics::lifting_surface::mach_box, tests/it/supersonic_oscillatory.rs).
 
 Two-dimensional flat plate (I.E. Garrick and S.I. Rubinow, NACA Rep. 846,
 1946), normalwash wbar(s) (positive down, per unit V), s from the leading
@@ -25,7 +25,7 @@ everything is a 1-D integral, independent of the sweep:
 
 cbar = 2/3, xbar = 1/3 (the M.A.C. and its leading edge), w_F = 1
 (incidence) and (x - xbar)/cbar (unit rate); moments nose up about the
-M.A.C.'s leading edge, as stability_core::lifting_surface::Solution.
+M.A.C.'s leading edge, as stability_core::aerodynamics::lifting_surface::Solution.
 
 The plate (chord 1, cbar = 1, xbar = 0) directly, and its reverse-flow value
 as a check of the theorem's use (asserted below).

@@ -1,16 +1,16 @@
 //! The closed choices of the command line as clap value enums, each value
 //! with its one-line meaning in `--help`; the lists and their meanings come
 //! from the library (the registry of its damping theories and aerodynamic
-//! models, [`stability_core::theory::Row`], and its notations), not
+//! models, [`stability_core::aerodynamics::theory::Row`], and its notations), not
 //! restated here.
 
 use clap::ValueEnum;
 use clap::builder::PossibleValue;
-use stability_core::aero::AeroModelName;
-use stability_core::cap::AirplaneClass;
-use stability_core::case::DampingModel;
-use stability_core::display::Num;
-use stability_core::notation::Notation;
+use stability_core::aerodynamics::models::aero::AeroModelName;
+use stability_core::criteria::cap::AirplaneClass;
+use stability_core::data::notation::Notation;
+use stability_core::design::case::DampingModel;
+use stability_core::numerics::display::Num;
 use stability_io::input::dimensional_notation::DIMENSIONAL;
 use std::sync::OnceLock;
 
@@ -210,7 +210,7 @@ pub fn positive(s: &str) -> Result<f64, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use stability_core::damping::Theory;
+    use stability_core::aerodynamics::damping::Theory;
 
     #[test]
     fn every_theory_of_the_library_is_a_choice() {

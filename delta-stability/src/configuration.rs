@@ -2,8 +2,8 @@
 //! each part's share of the lift slope, aerodynamic centre and damping
 //! derivatives ([`Shares`], docs/configurations.md).
 
-use stability_core::configuration::shares::Shares;
-use stability_core::display::sig;
+use stability_core::design::shares::Shares;
+use stability_core::numerics::display::sig;
 
 /// The parts' shares as lines of a table, the header first and the totals
 /// last.

@@ -3,13 +3,13 @@
 //! the mode shapes, from the library's [`Engineering`].
 
 use crate::page::{aligned, half_or_double, root};
-use stability_core::cap::ShortPeriodFrequency;
-use stability_core::damp::Damp;
-use stability_core::display::sig;
-use stability_core::engineering::Engineering;
-use stability_core::linear::TimeUnit;
-use stability_core::mode_shape::ModeShape;
-use stability_core::modes::Mode;
+use stability_core::analysis::engineering::Engineering;
+use stability_core::criteria::cap::ShortPeriodFrequency;
+use stability_core::dynamics::damp::Damp;
+use stability_core::dynamics::linear::TimeUnit;
+use stability_core::dynamics::mode_shape::ModeShape;
+use stability_core::dynamics::modes::Mode;
+use stability_core::numerics::display::sig;
 use std::fmt::Write;
 
 fn cell(v: Option<f64>, digits: usize) -> String {

@@ -6,13 +6,13 @@
 //! approximation and eq (41), or a dimensional set's trim, its stability
 //! axes and its report-notation equivalent. One set of helpers serves both.
 
+use stability_core::analysis::verdict::Overall;
 use stability_core::analysis::{Analysis, Characteristic, Timebase};
 use stability_core::criteria::{DampingStandard, FlyingQualities, Verdict};
-use stability_core::dimensional::analysis::InReportNotation;
-use stability_core::dimensional::{Axes, DimensionalAnalysis, DimensionalModel, Units};
-use stability_core::display::sig;
-use stability_core::modes::Mode;
-use stability_core::verdict::Overall;
+use stability_core::data::dimensional::analysis::InReportNotation;
+use stability_core::data::dimensional::{Axes, DimensionalAnalysis, DimensionalModel, Units};
+use stability_core::dynamics::modes::Mode;
+use stability_core::numerics::display::sig;
 use std::fmt::Write;
 
 /// A value to 4 significant digits, or "—" where it does not exist.
@@ -233,7 +233,7 @@ fn classical(s: &mut String, a: &Analysis) {
 pub fn verdict_text(c: &Characteristic) -> String {
     let sp = c.modes.short_period();
     let cycles = sp.and_then(|m| m.cycles_to_half);
-    let overall = stability_core::verdict::overall(c);
+    let overall = stability_core::analysis::verdict::overall(c);
     match (c.verdict, sp, cycles) {
         (Verdict::Meets, _, Some(n)) if overall == Verdict::Divergent => format!(
             "NOT MET: the aircraft diverges (the verdict above), though the short period alone halves in {} cycles",
@@ -359,7 +359,7 @@ fn trim(s: &mut String, m: &DimensionalModel) {
 
 /// A body-axis set turned into stability axes (by α₀), u̇ terms included.
 fn stability_axes(s: &mut String, st: &DimensionalModel) {
-    let names = stability_core::dimensional::DimensionalDerivatives::NAMES;
+    let names = stability_core::data::dimensional::DimensionalDerivatives::NAMES;
     let values = st.derivatives.values();
     let cells: Vec<String> = names
         .iter()

@@ -145,7 +145,7 @@ def sweep(
     """Design points over a Cartesian grid of Mach number, leading-edge sweep
     (degrees), c.g. position h, relative density μ₁ and pitching inertia i_B:
     what ``delta-stability sweep`` computes — the same library grid
-    (``stability_core::sweep``), evaluated in Rust in parallel with the GIL
+    (``stability_core::design::sweep``), evaluated in Rust in parallel with the GIL
     released — returned as columns of numpy arrays (:class:`SweepResult`,
     with ``to_pandas()``), no CSV in between.
 

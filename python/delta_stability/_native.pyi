@@ -222,7 +222,7 @@ def sweep_columns(
     datcom: Optional[str] = None,
 ) -> dict[str, Any]:
     """The raw columns of ``delta_stability.sweep`` (the library's grid,
-    ``stability_core::sweep``): ``columns`` (the CSV's names, in order), each
+    ``stability_core::design::sweep``): ``columns`` (the CSV's names, in order), each
     column (a word column such as ``verdict`` as codes into its list in
     ``words`` — ``verdict``'s also as ``verdicts``, the older key —
     ``error`` as codes into ``messages``, −1 for none) and ``shape``."""

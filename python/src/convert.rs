@@ -7,7 +7,7 @@ use crate::inputs::derivative_file;
 use crate::json::view_to_py;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use stability_core::notation::Notation;
+use stability_core::data::notation::Notation;
 use stability_io::convert::{ConvertJson, converted};
 use stability_io::input::suggest::did_you_mean;
 

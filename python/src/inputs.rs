@@ -10,7 +10,7 @@ use crate::json::{table, toml_text};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use stability_core::notation::{Notation, tables};
+use stability_core::data::notation::{Notation, tables};
 use stability_io::config::{self, Config};
 use stability_io::input::{self, DerivativeFile, rows};
 

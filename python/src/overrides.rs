@@ -8,8 +8,8 @@
 use crate::errors::{argument, failure};
 use crate::inputs;
 use pyo3::prelude::*;
-use stability_core::aero::AeroModelName;
-use stability_core::case::DampingModel;
+use stability_core::aerodynamics::models::aero::AeroModelName;
+use stability_core::design::case::DampingModel;
 use stability_io::config::{Config, Overrides, apply};
 use stability_io::input::suggest::did_you_mean;
 

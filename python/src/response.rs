@@ -7,8 +7,8 @@ use crate::inputs::derivative_file;
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use stability_core::display::Num;
-use stability_core::response::MAX_STEPS;
+use stability_core::numerics::display::Num;
+use stability_core::dynamics::response::MAX_STEPS;
 use stability_io::input::suggest::did_you_mean;
 use stability_io::response::{Disturbance, Given, Spec, respond};
 
@@ -94,7 +94,7 @@ pub fn response<'py>(
             .detach(|| respond(&file, &spec))
             .map_err(|e| input_error(&e))?;
         let out = PyDict::new(py);
-        let column = |f: fn(&stability_core::response::Sample) -> f64| -> Vec<f64> {
+        let column = |f: fn(&stability_core::dynamics::response::Sample) -> f64| -> Vec<f64> {
             r.samples.iter().map(f).collect()
         };
         out.set_item("t_hat", column(|s| s.t).into_pyarray(py))?;

@@ -1,4 +1,4 @@
-//! `batch_roots`: the quartic solver of `stability_core::roots` on arrays,
+//! `batch_roots`: the quartic solver of `stability_core::numerics::roots` on arrays,
 //! in parallel with the GIL released.
 
 use crate::errors::argument;
@@ -7,7 +7,7 @@ use numpy::ndarray::Array2;
 use numpy::{Complex64, IntoPyArray, PyArray2, PyReadonlyArray2};
 use pyo3::prelude::*;
 use rayon::prelude::*;
-use stability_core::roots::{RootsError, solve_quartic};
+use stability_core::numerics::roots::{RootsError, solve_quartic};
 
 /// Below this many quartics one thread solves them all.
 const PARALLEL_FROM: usize = 4096;

@@ -6,8 +6,8 @@ use crate::inputs::derivative_file;
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use stability_core::modes::ModeName;
-use stability_core::sensitivity::mode_sensitivities;
+use stability_core::dynamics::modes::ModeName;
+use stability_core::dynamics::sensitivity::mode_sensitivities;
 use stability_io::input::suggest::did_you_mean;
 
 /// The sensitivity of a mode's root λ = r + is to each of the fifteen
@@ -61,7 +61,7 @@ pub fn sensitivity<'py>(
             )
         })?;
         let out = PyDict::new(py);
-        let col = |f: fn(&stability_core::sensitivity::ModeSensitivity) -> f64| -> Vec<f64> {
+        let col = |f: fn(&stability_core::dynamics::sensitivity::ModeSensitivity) -> f64| -> Vec<f64> {
             s.iter().map(f).collect()
         };
         out.set_item("input", s.iter().map(|x| x.input).collect::<Vec<_>>())?;

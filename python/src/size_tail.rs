@@ -1,14 +1,14 @@
 //! `size_tail(config, …)`: `delta-stability size-tail` — the smallest
 //! tailplane (or foreplane) of the config's shape meeting the §8 standard
-//! at every Mach number ([`stability_core::configuration::sizing`]).
+//! at every Mach number ([`stability_core::design::sizing`]).
 
 use crate::errors::{argument, failure};
 use crate::guard;
 use crate::overrides::{Model, overridden};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use stability_core::configuration::SurfaceKind;
-use stability_core::configuration::sizing::size_surface;
+use stability_core::geometry::configuration::SurfaceKind;
+use stability_core::design::sizing::size_surface;
 use stability_io::diag::InputError;
 
 /// The smallest area of the config's `[tailplane]` (or, with

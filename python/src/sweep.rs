@@ -1,4 +1,4 @@
-//! `sweep()`: the library's sweep ([`stability_core::sweep::Sweep`], the
+//! `sweep()`: the library's sweep ([`stability_core::design::sweep::Sweep`], the
 //! grid `delta-stability sweep` evaluates) with the GIL released, into
 //! columns — one numpy array each, named, ordered and computed as the
 //! command line's CSV (from one table, [`columns::COLUMNS`]), with no text
@@ -19,7 +19,7 @@ use crate::overrides::{Model, overridden};
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use stability_core::sweep::{Points, Sweep, SweepError};
+use stability_core::design::sweep::{Points, Sweep, SweepError};
 use stability_io::config::Config;
 use stability_io::diag;
 use stability_io::sweep::columns::{self, Point, Value};
@@ -103,7 +103,7 @@ pub fn sweep_of(a: &AxisArgs<'_, '_>, cfg: &Config) -> PyResult<Sweep> {
         .try_fold(1usize, |n, v| n.checked_mul(v.len()));
     if n.is_none_or(|n| n > MAX_POINTS) {
         // the count bounded in length, however large the grid
-        let points = stability_core::sweep::count(n, "points");
+        let points = stability_core::design::sweep::count(n, "points");
         let m = format!("the grid has {points}; the limit of one call is {MAX_POINTS:e}");
         return Err(argument("grid", m));
     }

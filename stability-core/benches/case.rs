@@ -8,8 +8,8 @@
 
 use divan::{AllocProfiler, black_box};
 use stability_core::analysis::Analysis;
-use stability_core::case::{Case, DampingModel, evaluate, evaluate_point};
-use stability_core::study::report_wing;
+use stability_core::design::case::{Case, DampingModel, evaluate, evaluate_point};
+use stability_core::design::study::report_wing;
 
 #[global_allocator]
 static ALLOC: AllocProfiler = AllocProfiler::system();
@@ -87,7 +87,7 @@ fn analysis_without_classical(b: divan::Bencher) {
 
 #[divan::bench]
 fn damping_faired(b: divan::Bencher) {
-    use stability_core::damping::{Theory, WingInput, damping_derivatives};
+    use stability_core::aerodynamics::damping::{Theory, WingInput, damping_derivatives};
     let cs = cases();
     let wing = WingInput::from(&cs[0].planform);
     b.bench_local(|| {
@@ -116,8 +116,8 @@ fn damping_faired(b: divan::Bencher) {
 /// slope and aerodynamic centre with their numerical Mach derivatives, and
 /// once more for the damping derivatives).
 fn supersonic_cases(taper: f64) -> Vec<Case> {
-    use stability_core::case::DampingModel;
-    use stability_core::damping::Theory;
+    use stability_core::aerodynamics::damping::Theory;
+    use stability_core::design::case::DampingModel;
     use stability_core::geometry::{Planform, Size};
     (0..64)
         .map(|i| {

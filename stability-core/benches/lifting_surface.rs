@@ -17,10 +17,14 @@
 //! `cargo bench -p stability-core --bench lifting_surface`
 
 use divan::{AllocProfiler, Bencher, black_box};
-use stability_core::configuration::lattice::ConfigurationLattice;
-use stability_core::configuration::{Configuration, Surface, SurfaceKind};
+use stability_core::aerodynamics::lifting_surface::configuration::ConfigurationLattice;
+use stability_core::aerodynamics::lifting_surface::{
+    FrequencyTable, Lattice, LatticeSpec, Solution,
+};
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::Surface;
+use stability_core::geometry::configuration::SurfaceKind;
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::{FrequencyTable, Lattice, LatticeSpec, Solution};
 
 #[global_allocator]
 static ALLOC: AllocProfiler = AllocProfiler::system();
@@ -121,7 +125,8 @@ fn sonic_point(bencher: Bencher) {
     let wing = Trapezoid::from(&p);
     bencher.bench_local(|| {
         all_derivatives(
-            &stability_core::lifting_surface::sonic_limit(&wing, black_box(0.5)).unwrap(),
+            &stability_core::aerodynamics::lifting_surface::sonic_limit(&wing, black_box(0.5))
+                .unwrap(),
         )
     });
 }

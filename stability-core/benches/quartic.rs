@@ -13,7 +13,7 @@
 
 use divan::{AllocProfiler, Bencher, black_box};
 use stability_core::Derivatives;
-use stability_core::quartic::reference::{
+use stability_core::dynamics::quartic::reference::{
     coefficients_by_interpolation, eq6_by_hand, gradient_by_dual_numbers, natural_radius,
 };
 

@@ -16,8 +16,8 @@
 
 use divan::{AllocProfiler, Bencher, black_box};
 use nalgebra::Matrix4;
-use stability_core::classical::{first_approximation, refine};
-use stability_core::roots::{Complex64, RootsError, solve_quartic, solve_quartics};
+use stability_core::dynamics::classical::{first_approximation, refine};
+use stability_core::numerics::roots::{Complex64, RootsError, solve_quartic, solve_quartics};
 
 #[global_allocator]
 static ALLOC: AllocProfiler = AllocProfiler::system();

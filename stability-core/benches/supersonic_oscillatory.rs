@@ -9,9 +9,9 @@
 //! `cargo bench -p stability-core --bench supersonic_oscillatory`
 
 use divan::{Bencher, black_box};
+use stability_core::aerodynamics::lifting_surface::mach_box::{MachBoxSpec, solve};
+use stability_core::aerodynamics::lifting_surface::{Extrapolation, Lattice, LatticeSpec};
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::mach_box::{MachBoxSpec, solve};
-use stability_core::lifting_surface::{Extrapolation, Lattice, LatticeSpec};
 
 fn main() {
     divan::main();

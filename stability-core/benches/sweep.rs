@@ -1,4 +1,4 @@
-//! The library sweep (`stability_core::sweep`) over 10 Mach numbers ×
+//! The library sweep (`stability_core::design::sweep`) over 10 Mach numbers ×
 //! 10⁵ c.g. × μ₁ × i_B points (10⁶ design points; the 60° delta), evaluated
 //! as `delta-stability sweep` evaluates it — the lattice's solves first,
 //! in parallel (`Sweep::prepare`), then blocks of 1024 points in parallel —
@@ -12,12 +12,12 @@
 
 use divan::Bencher;
 use rayon::prelude::*;
-use stability_core::aero::{AeroModel, AeroModelName};
-use stability_core::case::{Case, DampingModel};
-use stability_core::damping::Theory;
-use stability_core::lifting_surface::store;
-use stability_core::study::{grid, report_wing};
-use stability_core::sweep::{Axes, Sweep};
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::lifting_surface::store;
+use stability_core::aerodynamics::models::aero::{AeroModel, AeroModelName};
+use stability_core::design::case::{Case, DampingModel};
+use stability_core::design::study::{grid, report_wing};
+use stability_core::design::sweep::{Axes, Sweep};
 
 fn main() {
     divan::main();

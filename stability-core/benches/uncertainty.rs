@@ -24,8 +24,8 @@
 
 use divan::counter::ItemsCount;
 use divan::{Bencher, black_box};
-use stability_core::case::{Case, DampingModel, evaluate_point};
-use stability_core::study::report_wing;
+use stability_core::design::case::{Case, DampingModel, evaluate_point};
+use stability_core::design::study::report_wing;
 use stability_core::uncertainty::{Dist, ErrorKind, Input, Options, Quantity, Sampling, Study};
 
 fn main() {

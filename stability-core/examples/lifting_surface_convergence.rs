@@ -15,8 +15,8 @@
 //! with `--check` it compares the dense values it computed with the
 //! committed fixture instead (to 1e-9, relative) and fails if they differ.
 
+use stability_core::aerodynamics::lifting_surface::{Lattice, LatticeSpec};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{Lattice, LatticeSpec};
 
 /// The wings: (name, wing).
 pub fn wings() -> Vec<(&'static str, Trapezoid)> {

@@ -7,8 +7,10 @@
 //!
 //! `cargo run --release -p stability-core --example lifting_surface_frequency`
 
+use stability_core::aerodynamics::lifting_surface::{
+    I1Approximation, Lattice, LatticeSpec, Spacing,
+};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{I1Approximation, Lattice, LatticeSpec, Spacing};
 
 fn main() {
     println!(

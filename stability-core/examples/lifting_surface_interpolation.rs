@@ -10,8 +10,10 @@
 //! `cargo run --release -p stability-core --example lifting_surface_interpolation`
 //! prints the table of `docs/damping-theories.md`.
 
+use stability_core::aerodynamics::lifting_surface::{
+    FrequencyTable, Lattice, LatticeSpec, Solution,
+};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{FrequencyTable, Lattice, LatticeSpec, Solution};
 
 const NAMES: [&str; 10] = [
     "ℓ_α",

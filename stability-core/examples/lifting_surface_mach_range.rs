@@ -5,8 +5,8 @@
 //!
 //! `cargo run --release -p stability-core --example lifting_surface_mach_range`
 
-use stability_core::lifting_surface::mach_range::{first_mach_box_mach, solution};
-use stability_core::lifting_surface::{Harmonic, Trapezoid, store};
+use stability_core::aerodynamics::lifting_surface::mach_range::{first_mach_box_mach, solution};
+use stability_core::aerodynamics::lifting_surface::{Harmonic, Trapezoid, store};
 
 fn main() {
     let wings = [

@@ -12,8 +12,10 @@
 //!
 //! `cargo run --release -p stability-core --example lifting_surface_near_sonic [convergence|approach|spanwise|crossover]`
 
+use stability_core::aerodynamics::lifting_surface::{
+    Lattice, LatticeSpec, Solution, Spacing, near_sonic,
+};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{Lattice, LatticeSpec, Solution, Spacing, near_sonic};
 
 fn note(deg: f64) -> Trapezoid {
     let t = deg.to_radians().tan();
@@ -117,7 +119,7 @@ fn approach() {
 /// The sonic point with the anchors on 16 strips (the default) and on 32:
 /// the spanwise uncertainty of `sonic_limit`.
 fn spanwise() {
-    let anchors = stability_core::lifting_surface::near_sonic::SONIC_ANCHORS;
+    let anchors = stability_core::aerodynamics::lifting_surface::near_sonic::SONIC_ANCHORS;
     let b2 = anchors.map(|m| 1.0 - m * m);
     // Lagrange's weights at β² = 0
     let w: [f64; 3] = std::array::from_fn(|m| {

@@ -9,9 +9,9 @@
 //!
 //! `cargo run --release -p stability-core --example supersonic_near_sonic_convergence`
 
+use stability_core::aerodynamics::lifting_surface::Solution;
+use stability_core::aerodynamics::lifting_surface::mach_box::{MachBoxSpec, solve};
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::Solution;
-use stability_core::lifting_surface::mach_box::{MachBoxSpec, solve};
 
 fn main() {
     let text = std::fs::read_to_string(concat!(

@@ -7,9 +7,9 @@
 //! with Evvard's tip corrections).
 //! `cargo run --release -p stability-core --example supersonic_subsonic_edge_convergence [sweep mach]...`
 
+use stability_core::aerodynamics::lifting_surface::mach_box::{MachBoxError, MachBoxSpec, solve};
+use stability_core::aerodynamics::supersonic::{Wing, edge_theory};
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::mach_box::{MachBoxError, MachBoxSpec, solve};
-use stability_core::supersonic::{Wing, edge_theory};
 
 fn main() {
     let args: Vec<f64> = std::env::args()
@@ -60,8 +60,8 @@ fn main() {
 /// One table row's cells: the errors of C_Lα, H₀ (absolute), z_θ̇, m_θ̇ and
 /// m_θ̇ on m_q against eq (36)'s `e`.
 fn row(
-    s: &stability_core::lifting_surface::Solution,
-    e: &stability_core::supersonic::Derivatives,
+    s: &stability_core::aerodynamics::lifting_surface::Solution,
+    e: &stability_core::aerodynamics::supersonic::Derivatives,
     sweep: f64,
     mach: f64,
     strips: usize,

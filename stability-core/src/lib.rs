@@ -36,39 +36,6 @@ pub mod units;
 pub use derivatives::Derivatives;
 pub use dynamics::quartic::{Quartic, QuarticGradient};
 
-// The module paths before the crate was put in layers, for the crates
-// that use them (to be removed once they name the layers).
-#[doc(hidden)]
-pub use aerodynamics::{
-    damping, figures, lifting_surface, models::aero, models::derivative_tables, models::faired,
-    models::stiffness, supersonic, theory, warnings,
-};
-#[doc(hidden)]
-pub use analysis::engineering;
-#[doc(hidden)]
-pub use analysis::verdict;
-#[doc(hidden)]
-pub use criteria::cap;
-#[doc(hidden)]
-pub use data::{datcom, dimensional, json, notation};
-#[doc(hidden)]
-pub use design::{atmosphere, case, examples, flight, study, sweep};
-#[doc(hidden)]
-pub use dynamics::{classical, damp, linear, mode_shape, modes, quartic, response, sensitivity};
-#[doc(hidden)]
-pub use numerics::{display, grid, invalid, memo, roots};
-#[doc(hidden)]
-pub mod configuration {
-    pub use crate::aerodynamics::body;
-    pub use crate::aerodynamics::lifting_surface::configuration as lattice;
-    pub use crate::aerodynamics::lifting_surface::configuration::ConfigurationError;
-    pub use crate::aerodynamics::lifting_surface::{ConfigurationSolution, Contribution};
-    pub use crate::aerodynamics::models::increment;
-    pub use crate::aerodynamics::supersonic::{configuration as supersonic, downwash};
-    pub use crate::design::{shares, sizing};
-    pub use crate::geometry::configuration::*;
-}
-
 /// The README's example, compiled and run as a doctest.
 #[cfg(doctest)]
 #[doc = include_str!("../../README.md")]

@@ -5,12 +5,12 @@
 //! with it, and its `store::clear()` would empty the store under the other
 //! tests (the allocation tests' warmed store among them).
 
-use stability_core::aero::{AeroModel, AeroModelName};
-use stability_core::case::{Case, DampingModel};
-use stability_core::damping::Theory;
-use stability_core::lifting_surface::store;
-use stability_core::study::report_wing;
-use stability_core::sweep::{Axes, Sweep};
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::lifting_surface::store;
+use stability_core::aerodynamics::models::aero::{AeroModel, AeroModelName};
+use stability_core::design::case::{Case, DampingModel};
+use stability_core::design::study::report_wing;
+use stability_core::design::sweep::{Axes, Sweep};
 
 #[test]
 fn the_lattice_is_solved_once_per_planform_and_mach_number() {

@@ -4,7 +4,7 @@
 //! The class matters to one requirement only: the Category C floors on
 //! ω_sp and n/α of the short-period frequency requirement (§3.2.2.1.1,
 //! Fig 3: Classes I, II-C and IV against II-L and III;
-//! [`stability_core::cap`]). The damping-ratio limits (§3.2.2.1.2) and the
+//! [`stability_core::criteria::cap`]). The damping-ratio limits (§3.2.2.1.2) and the
 //! phugoid's (§3.2.1.2) depend on the flight-phase category, not the
 //! class, and Categories A and B of the frequency requirement do not
 //! either. So the rule is: the class given on the command line (or as an
@@ -12,7 +12,7 @@
 //! none — every class-independent level is still assessed, and Category C
 //! of the frequency requirement is not, with the reason printed.
 
-use stability_core::cap::AirplaneClass;
+use stability_core::criteria::cap::AirplaneClass;
 
 /// Where the class came from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -1,6 +1,6 @@
 //! The `[control]` table of a derivative file or config: the control
 //! derivatives of the state space's input matrix B
-//! ([`stability_core::linear::Control`]).
+//! ([`stability_core::dynamics::linear::Control`]).
 //!
 //! ```toml
 //! [control]
@@ -15,8 +15,8 @@
 use crate::diag::InputError;
 use crate::input::toml_error;
 use serde::Deserialize;
-use stability_core::display::Num;
-use stability_core::linear::Control;
+use stability_core::dynamics::linear::Control;
+use stability_core::numerics::display::Num;
 use toml::Spanned;
 
 #[derive(Deserialize)]

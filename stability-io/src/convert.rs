@@ -10,11 +10,11 @@ use crate::input::rows::{C_L, DERIVATIVES, FLIGHT, QUARTIC};
 use crate::input::tabled::{needed_rows, uses_parameter};
 use crate::input::{AnyFile, DerivativeFile};
 use serde::Serialize;
-use stability_core::dimensional::{
+use stability_core::data::dimensional::{
     DimensionalDerivatives, DimensionalModel, Reference, THETA0_MAX,
 };
-use stability_core::display::{Num, sig};
-use stability_core::notation::{Notation, NotationError, Values, tables};
+use stability_core::data::notation::{Notation, NotationError, Values, tables};
+use stability_core::numerics::display::{Num, sig};
 use std::collections::BTreeMap;
 use std::fmt::Write;
 

@@ -1,7 +1,7 @@
 //! Numbers and fields in the CSV files the program writes (the figures'
 //! data, a response's time history): one rule for every number.
 
-use stability_core::display::round_to;
+use stability_core::numerics::display::round_to;
 
 /// The significant digits of a CSV number.
 pub const CSV_DIGITS: usize = 12;

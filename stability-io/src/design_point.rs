@@ -18,13 +18,13 @@ use crate::csv::exact as lit;
 use crate::input::analysis::OVERFLOW;
 use crate::input::rows::{C_L, DERIVATIVE_ROWS, I_B, MU};
 use crate::input::{DerivativeFile, parse};
-use stability_core::cap::AirplaneClass;
-use stability_core::case::{CaseResult, evaluate};
-use stability_core::display::sig;
-use stability_core::engineering::Engineering;
-use stability_core::flight::{FlightPoint, PhysicalFlight};
-use stability_core::linear::Control;
-use stability_core::notation::Notation;
+use stability_core::analysis::engineering::Engineering;
+use stability_core::criteria::cap::AirplaneClass;
+use stability_core::data::notation::Notation;
+use stability_core::design::case::{CaseResult, evaluate};
+use stability_core::design::flight::{FlightPoint, PhysicalFlight};
+use stability_core::dynamics::linear::Control;
+use stability_core::numerics::display::sig;
 use std::fmt::Write;
 
 /// A design point's results: the library's, and the engineer's.

@@ -3,7 +3,7 @@
 //!
 //! Every message quotes at most a short excerpt of what the user wrote
 //! ([`quote`], [`excerpt_line`]) and prints numbers in their shortest form
-//! ([`stability_core::display::Num`]: `1e308`, not 309 digits), however
+//! ([`stability_core::numerics::display::Num`]: `1e308`, not 309 digits), however
 //! large the input.
 
 use std::fmt;

@@ -3,7 +3,7 @@
 //! every aircraft and keep every derived quantity far from overflow (a c.g.
 //! at h = 1e308 is finite, but its derivatives are not).
 
-use stability_core::display::Num;
+use stability_core::numerics::display::Num;
 
 /// A closed range [lo, hi] (or (0, hi] when `lo` is 0 and zero is excluded).
 #[derive(Debug, Clone, Copy)]

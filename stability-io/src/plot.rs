@@ -316,7 +316,10 @@ pub use crate::csv::number as num;
 /// A number written on a figure or its caption: [`LABEL_DIGITS`]
 /// significant digits, shortest form (12.3, 1.2, 100).
 pub fn short(v: f64) -> String {
-    format!("{}", stability_core::display::round_to(v, LABEL_DIGITS))
+    format!(
+        "{}",
+        stability_core::numerics::display::round_to(v, LABEL_DIGITS)
+    )
 }
 
 pub use crate::csv::field as csv_field;

@@ -7,11 +7,11 @@
 use crate::csv::number;
 use crate::diag::InputError;
 use crate::input::{DerivativeFile, rows};
-use stability_core::display::Num;
-use stability_core::linear::Control;
-use stability_core::response::{
+use stability_core::dynamics::linear::Control;
+use stability_core::dynamics::response::{
     Computed, ComputedError, Input, Request, ResponseError, Simplifications, computed,
 };
+use stability_core::numerics::display::Num;
 use std::fmt::Write;
 
 /// What disturbs the aircraft.
@@ -174,7 +174,7 @@ fn disturbance(quantity: &str) -> &'static str {
 /// The CSV's columns: t̂, t in seconds when τ is known, the states,
 /// eq (45)'s ŵ (empty but for a step of m₀ alone), the flight-path angle
 /// γ = θ − ŵ (rad) and the normal load factor at the c.g. n_z (empty where
-/// C_L ≤ 0; [`stability_core::response::load_factor`]).
+/// C_L ≤ 0; [`stability_core::dynamics::response::load_factor`]).
 pub fn columns(tau: Option<f64>) -> Vec<&'static str> {
     let mut c = vec!["t_hat"];
     if tau.is_some() {

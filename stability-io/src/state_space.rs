@@ -1,5 +1,5 @@
 //! The state-space export (`--state-space FILE.json` of `quartic` and
-//! `analyze`): the linear model ẋ = A x + B δ of [`stability_core::linear`]
+//! `analyze`): the linear model ẋ = A x + B δ of [`stability_core::dynamics::linear`]
 //! as JSON, with a python-control script (`FILE.py`) and a MATLAB script
 //! (`FILE.m`) beside it that build the same system, print its `damp()`
 //! table and its step response (`STEP_DEG` degrees of the control over
@@ -8,7 +8,7 @@
 //!
 //! The outputs y = C x + D δ are the states, the flight-path angle
 //! γ = θ − α and the normal load factor at the c.g. n_z = (V/g)(q − α̇)
-//! ([`stability_core::linear::LinearModel::outputs`], derived there, after
+//! ([`stability_core::dynamics::linear::LinearModel::outputs`], derived there, after
 //! Etkin & Reid §4.2–4.3): `outputs`, `C` and `D` in the JSON.
 //!
 //! x = (u/V, α, q, θ). Time is in seconds when the flight condition is
@@ -33,7 +33,7 @@ use crate::csv::exact as lit;
 use crate::diag::InputError;
 use num_complex::Complex64;
 use serde::Serialize;
-use stability_core::linear::{LinearModel, Outputs, STATES, TimeUnit};
+use stability_core::dynamics::linear::{LinearModel, Outputs, STATES, TimeUnit};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 

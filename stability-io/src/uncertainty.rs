@@ -206,14 +206,14 @@ impl<'a> UncertaintyJson<'a> {
             let machs: Vec<String> = self
                 .results
                 .iter()
-                .map(|r| stability_core::display::Num(r.mach).to_string())
+                .map(|r| stability_core::numerics::display::Num(r.mach).to_string())
                 .collect();
             return Err(crate::diag::InputError::file(
                 self.file,
                 format!(
                     "no sample has a result at any Mach number asked for (M = {}), so there is nothing to report; the first error, at M = {}: {}",
                     machs.join(", "),
-                    stability_core::display::Num(r.mach),
+                    stability_core::numerics::display::Num(r.mach),
                     r.first_error.unwrap_or("none given")
                 ),
             ));

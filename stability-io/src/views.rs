@@ -9,18 +9,18 @@ use crate::input::DerivativeFile;
 use crate::input::dimensional_notation::{DIMENSIONAL, DimensionalFile};
 use serde::Serialize;
 use stability_core::Derivatives;
-use stability_core::aero::Coefficients;
+use stability_core::aerodynamics::models::aero::Coefficients;
+use stability_core::analysis::engineering::Engineering;
+use stability_core::analysis::verdict::Overall;
 use stability_core::analysis::{Analysis, Timebase};
-use stability_core::cap::ShortPeriodFrequency;
+use stability_core::criteria::cap::ShortPeriodFrequency;
 use stability_core::criteria::{DampingStandard, FlyingQualities, Margins};
-use stability_core::dimensional::DimensionalAnalysis;
-use stability_core::engineering::Engineering;
-use stability_core::flight::FlightJson;
-use stability_core::json::TimedMode;
-use stability_core::json::{CaseView, Timed};
-use stability_core::modes::{ModeName, Origin};
-use stability_core::sensitivity::{ModeSensitivity, mode_sensitivities};
-use stability_core::verdict::Overall;
+use stability_core::data::dimensional::DimensionalAnalysis;
+use stability_core::data::json::TimedMode;
+use stability_core::data::json::{CaseView, Timed};
+use stability_core::design::flight::FlightJson;
+use stability_core::dynamics::modes::{ModeName, Origin};
+use stability_core::dynamics::sensitivity::{ModeSensitivity, mode_sensitivities};
 
 /// The `quartic --json` object of a report-notation file: the file and
 /// its notation, the analysis as the library serializes it (with times in
@@ -375,7 +375,7 @@ impl<'a> DesignReportJson<'a> {
     /// results or its error), with the CAP levels of `class`.
     pub fn new(
         cfg: &'a Config,
-        class: Option<stability_core::cap::AirplaneClass>,
+        class: Option<stability_core::criteria::cap::AirplaneClass>,
         points: &'a [(f64, Result<Results, String>)],
     ) -> Self {
         use stability_core::criteria::Verdict;
@@ -384,7 +384,7 @@ impl<'a> DesignReportJson<'a> {
             .map(|(_, r)| {
                 r.as_ref()
                     .ok()
-                    .map(|r| stability_core::verdict::overall(&r.result.analysis))
+                    .map(|r| stability_core::analysis::verdict::overall(&r.result.analysis))
             })
             .collect();
         let machs: Vec<f64> = points.iter().map(|p| p.0).collect();

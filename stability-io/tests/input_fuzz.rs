@@ -8,7 +8,7 @@
 //! the same way.
 
 use proptest::prelude::*;
-use stability_core::notation::{Notation, report_values};
+use stability_core::data::notation::{Notation, report_values};
 use stability_io::Failure;
 use std::path::{Path, PathBuf};
 
@@ -27,7 +27,7 @@ fn fuzz_path() -> String {
 
 /// The 45° example's derivative set in the report's notation.
 fn report_set() -> stability_core::Derivatives {
-    stability_core::examples::tailless_delta_45()
+    stability_core::design::examples::tailless_delta_45()
 }
 
 /// A valid derivative file in `notation`, written from the library's
@@ -446,7 +446,7 @@ proptest! {
                 let wing = stability_core::geometry::Planform::new(
                     60f64.to_radians(), 0.0, stability_core::geometry::Size::RootChord(10.0),
                 ).unwrap();
-                let _ = stability_core::datcom::tables(&o.points, &wing, o.apex_x);
+                let _ = stability_core::data::datcom::tables(&o.points, &wing, o.apex_x);
             }
             Err(e) => {
                 let m = e.to_string();

@@ -24,7 +24,7 @@
 use super::Plate;
 use super::conclusions::{ABOUT, MU1_LIMIT};
 use serde::Serialize;
-use stability_core::display::sig;
+use stability_core::numerics::display::sig;
 use stability_core::uncertainty::stats::{Proportion, Z95};
 use stability_core::uncertainty::{Options, Sampling, Study, Summary};
 use stability_io::plot::{Band, Figure, Series};

@@ -8,11 +8,11 @@ use super::regimes::{self, Basis};
 use super::study::{WINGS, machs};
 use super::{Plate, Study};
 use rayon::prelude::*;
-use stability_core::aero::defaults;
-use stability_core::case::CaseResult;
+use stability_core::aerodynamics::models::aero::defaults;
+use stability_core::aerodynamics::supersonic::wave_drag::{NOTE_RIDGE, fig1_series};
+use stability_core::design::case::CaseResult;
+use stability_core::design::study::grid;
 use stability_core::geometry::{Planform, Size};
-use stability_core::study::grid;
-use stability_core::supersonic::wave_drag::{NOTE_RIDGE, fig1_series};
 use stability_io::plot::{Figure, Series, VerticalLine, short};
 
 type Of = fn(&CaseResult) -> f64;
@@ -207,7 +207,7 @@ mod tests {
     fn at(s: &Series, m: f64) -> f64 {
         s.points
             .iter()
-            .find(|p| stability_core::grid::on(p.0, m))
+            .find(|p| stability_core::numerics::grid::on(p.0, m))
             .map_or(f64::NAN, |p| p.1)
     }
 

@@ -29,8 +29,8 @@ use super::study::{Assumed, Assumption, Study, WINGS};
 use super::summary::{CROPPED_TAPER, Findings, SWEEPS_ABOUT_60, Worst, show_intervals};
 use crate::study::{NOTE_SUPERSONIC, SUBCRITICAL};
 use serde::Serialize;
-use stability_core::display::sig;
-use stability_core::study::intervals;
+use stability_core::design::study::intervals;
+use stability_core::numerics::display::sig;
 use std::cell::RefCell;
 use std::rc::Rc;
 
@@ -112,7 +112,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
         claim: "Inadequately damped at transonic speeds (μ₁ = 50): a tailplane is needed “to correct the serious instability in the range 0.97 < M < 1.5”.",
         assess: transonic_45,
         depends_on: BOTH,
-        when_they_part: "The transonic short period rests on the damping derivatives between M = 0.9 and 1.2, where the note's Figs 19–24 were “plausible guides” faired through data we do not have. Ours come from one linear lifting-surface theory at the short period's own frequency through M = 1 (the lattice, its sonic point, the Mach box; stability_core::faired), which the note could not afford; the note's own fairing of its theories (`faired-theories`) reproduces its verdict. The note's edges 0.97 and 1.5 are read off its lost Fig 33.",
+        when_they_part: "The transonic short period rests on the damping derivatives between M = 0.9 and 1.2, where the note's Figs 19–24 were “plausible guides” faired through data we do not have. Ours come from one linear lifting-surface theory at the short period's own frequency through M = 1 (the lattice, its sonic point, the Mach box; stability_core::aerodynamics::models::faired), which the note could not afford; the note's own fairing of its theories (`faired-theories`) reproduces its verdict. The note's edges 0.97 and 1.5 are read off its lost Fig 33.",
     },
     Conclusion {
         id: "60-mu1-limit",
@@ -142,7 +142,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
         claim: "“The moment-acceleration derivative m_ẇ can be safely neglected at sub-critical speeds.”",
         assess: mwdot_negligible,
         depends_on: BOTH,
-        when_they_part: "The note judged m_ẇ on its faired Fig 23; we judge its share of the short period's damping, with the subsonic derivatives of our default model (the doublet lattice below M = 1; stability_core::faired).",
+        when_they_part: "The note judged m_ẇ on its faired Fig 23; we judge its share of the short period's damping, with the subsonic derivatives of our default model (the doublet lattice below M = 1; stability_core::aerodynamics::models::faired).",
     },
     Conclusion {
         id: "45-m-thetadot-positive",
@@ -254,7 +254,7 @@ fn transonic_45(f: &Findings) -> Assessment {
         .inadequate
         .iter()
         .copied()
-        .filter(|(m, _)| stability_core::grid::within(*m, a, b))
+        .filter(|(m, _)| stability_core::numerics::grid::within(*m, a, b))
         .collect();
     let covered = share(&within);
     let most = w.most_cycles.map_or("—".into(), |(m, c)| {

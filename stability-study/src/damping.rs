@@ -6,9 +6,11 @@
 use super::regimes::{self, Basis};
 use super::study::{WINGS, curve, label, mach_fig};
 use super::{Plate, Study};
-use stability_core::case::CaseResult;
-use stability_core::damping::{DampingDerivatives, Fig18, Theory, WingInput, damping_derivatives};
-use stability_core::study::{grid, intervals};
+use stability_core::aerodynamics::damping::{
+    DampingDerivatives, Fig18, Theory, WingInput, damping_derivatives,
+};
+use stability_core::design::case::CaseResult;
+use stability_core::design::study::{grid, intervals};
 use stability_io::plot::{Figure, Series};
 
 pub fn plates(study: &Study) -> Vec<Plate> {

@@ -1,4 +1,4 @@
-//! The note's lifting-surface figures, from `stability_core::figures`:
+//! The note's lifting-surface figures, from `stability_core::aerodynamics::figures`:
 //! Fig 4 (§6, the lift slope against aspect ratio for several sweeps,
 //! incompressible) and Figs 14–15 (§7, incompressible −z_θ̇ and −m_θ̇ of the
 //! delta planform against aspect ratio: Garrick's low-aspect-ratio theory,
@@ -11,7 +11,7 @@
 
 use super::Plate;
 use rayon::prelude::*;
-use stability_core::figures::{
+use stability_core::aerodynamics::figures::{
     DampingInPitchPoint, damping_in_pitch_against_aspect_ratio, lift_slope_against_aspect_ratio,
 };
 use stability_io::plot::{Figure, Series};

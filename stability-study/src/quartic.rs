@@ -5,8 +5,8 @@
 use super::regimes::{self, Basis};
 use super::study::{WINGS, across, curve};
 use super::{Plate, Study};
-use stability_core::case::{Case, CaseResult};
 use stability_core::criteria::Margins;
+use stability_core::design::case::{Case, CaseResult};
 
 pub fn plates(study: &Study) -> Vec<Plate> {
     let mut out: Vec<Plate> = [

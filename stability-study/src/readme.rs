@@ -14,10 +14,10 @@ use super::conclusions::{
 use super::quartic;
 use super::study::{Study, WINGS};
 use super::summary::{Findings, Wing, Worst, show_intervals};
-use stability_core::case::Case;
 use stability_core::criteria::Verdict;
-use stability_core::display::sig;
-use stability_core::study::intervals;
+use stability_core::design::case::Case;
+use stability_core::design::study::intervals;
+use stability_core::numerics::display::sig;
 
 /// The name of README.md's markers around [`Readme::conclusions`]:
 /// `<!-- conclusions:begin … -->` and `<!-- conclusions:end -->`.

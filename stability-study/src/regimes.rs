@@ -29,10 +29,10 @@
 //! parameter (1) or time (37–38).
 
 use super::Study;
-use stability_core::aero::{Origin, OwnTheory, defaults};
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::models::aero::{Origin, OwnTheory, defaults};
 use stability_core::aerodynamics::models::regime::{Regime, RegimeKind};
-use stability_core::case::{CaseResult, DampingModel};
-use stability_core::damping::Theory;
+use stability_core::design::case::{CaseResult, DampingModel};
 use stability_core::geometry::{Planform, Size, sonic_leading_edge_mach};
 use stability_io::plot::{Band, Figure, VerticalLine};
 
@@ -268,8 +268,8 @@ mod tests {
     /// methods', 0.8 to 1.2, which holds the join.)
     #[test]
     fn the_coefficients_band_is_where_the_lift_slope_is_neither_method() {
-        use stability_core::case::{Case, DampingModel, evaluate};
-        use stability_core::study::{grid, report_wing};
+        use stability_core::design::case::{Case, DampingModel, evaluate};
+        use stability_core::design::study::{grid, report_wing};
         let ms = grid(0.5, 2.0, 0.02);
         let at = |m: f64, damping| {
             evaluate(&Case {
@@ -328,7 +328,10 @@ mod tests {
         let [(from, to)] = merged(damping_joins(&[45.0, 60.0]))[..] else {
             panic!()
         };
-        assert_eq!(from, stability_core::faired::SONIC_JOIN);
+        assert_eq!(
+            from,
+            stability_core::aerodynamics::models::faired::SONIC_JOIN
+        );
         assert!((to - 1.0164).abs() < 1e-3 && to < 1.03, "{to}");
         // the note's fairing's two joins touch at M = 1: 0.9 to 1.2
         let p = delta(45.0).unwrap();

@@ -15,7 +15,7 @@ use crate::conclusions::{self, Judged};
 use crate::summary::{self, Findings};
 use crate::tail::TailNeeded;
 use crate::{Figures, Plate, SECTIONS, Study};
-use stability_core::lifting_surface::precomputed::PrecomputedError;
+use stability_core::aerodynamics::lifting_surface::precomputed::PrecomputedError;
 use stability_io::diag::InputError;
 
 /// The title of §10 (ours), in the progress and on the page.

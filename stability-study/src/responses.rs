@@ -3,8 +3,8 @@
 //! without z_q, z_ẇ (Fig 38).
 
 use super::{Plate, Study};
-use stability_core::response::{Input, Simplifications, StateSpace, TwoDof};
-use stability_core::study::{grid, report_wing};
+use stability_core::design::study::{grid, report_wing};
+use stability_core::dynamics::response::{Input, Simplifications, StateSpace, TwoDof};
 use stability_io::plot::{Figure, Series};
 
 pub fn plates(_study: &Study) -> Vec<Plate> {

@@ -4,7 +4,7 @@
 use super::regimes::{self, Basis};
 use super::study::{across, curve, label, mach_fig};
 use super::{Plate, Study};
-use stability_core::case::{Case, CaseResult};
+use stability_core::design::case::{Case, CaseResult};
 
 /// Eq (41)'s margin Δm_θ̇ = m_θ̇max − m_θ̇.
 pub fn margin(r: &CaseResult) -> Option<f64> {

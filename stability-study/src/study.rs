@@ -5,11 +5,11 @@
 //! the conclusions are swept over.
 
 use rayon::prelude::*;
-use stability_core::case::{Case, CaseResult, DampingModel, evaluate_harmonic};
-use stability_core::damping::Theory;
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::lifting_surface::Harmonic;
+use stability_core::design::case::{Case, CaseResult, DampingModel, evaluate_harmonic};
+use stability_core::design::study::{grid, report_wing};
 use stability_core::geometry::{Planform, Size};
-use stability_core::lifting_surface::Harmonic;
-use stability_core::study::{grid, report_wing};
 use stability_io::plot::{Figure, Series};
 
 /// The note's two wings, by leading-edge sweep (degrees).
@@ -152,7 +152,7 @@ pub struct Assumed {
 }
 
 impl Assumed {
-    /// Ours: those of `stability_core::study::report_wing` (i_B = 0.08,
+    /// Ours: those of `stability_core::design::study::report_wing` (i_B = 0.08,
     /// C_L·M² = 0.05; docs/models.md).
     pub fn ours() -> Assumed {
         let c = report_wing(WINGS[0], 1.0);
@@ -273,14 +273,15 @@ pub const PRECOMPUTED: &str = include_str!("../data/lifting-surface-solutions.cs
 /// Puts [`PRECOMPUTED`] into the store of solutions (once per process), so
 /// that the study need not solve them: how many. A stale file (made by
 /// another solver) is refused whole, and the study solves afresh.
-pub fn preload() -> Result<usize, stability_core::lifting_surface::precomputed::PrecomputedError> {
-    use stability_core::lifting_surface::precomputed::Precomputed;
+pub fn preload()
+-> Result<usize, stability_core::aerodynamics::lifting_surface::precomputed::PrecomputedError> {
+    use stability_core::aerodynamics::lifting_surface::precomputed::Precomputed;
     static DONE: std::sync::OnceLock<
-        Result<usize, stability_core::lifting_surface::precomputed::PrecomputedError>,
+        Result<usize, stability_core::aerodynamics::lifting_surface::precomputed::PrecomputedError>,
     > = std::sync::OnceLock::new();
     DONE.get_or_init(|| {
         Precomputed::parse(PRECOMPUTED)
-            .map(|file| stability_core::lifting_surface::store::preload(&file))
+            .map(|file| stability_core::aerodynamics::lifting_surface::store::preload(&file))
     })
     .clone()
 }

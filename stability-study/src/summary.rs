@@ -20,12 +20,12 @@ use crate::study::{NOTE_SUPERSONIC, SUBCRITICAL};
 use crate::tail::{TailJson, TailNeeded};
 use rayon::prelude::*;
 use serde::Serialize;
-use stability_core::case::{Case, CaseResult};
+use stability_core::aerodynamics::damping::{Theory, WingInput, damping_derivatives};
 use stability_core::criteria::Verdict;
-use stability_core::damping::{Theory, WingInput, damping_derivatives};
+use stability_core::design::case::{Case, CaseResult};
+use stability_core::design::study::{grid, intervals, max_mu1_one_cycle, report_wing};
+use stability_core::dynamics::response::TwoDof;
 use stability_core::geometry::{Planform, Size, cropped_h};
-use stability_core::response::TwoDof;
-use stability_core::study::{grid, intervals, max_mu1_one_cycle, report_wing};
 use stability_io::diag::InputError;
 use std::sync::OnceLock;
 
@@ -100,7 +100,10 @@ impl Worst {
         match self {
             Worst::NoneMeets(at) => format!("no μ₁ meets it at M {}", show_intervals(at)),
             Worst::Least { mach, mu1 } => {
-                format!("{} at M = {mach:.2}", stability_core::display::sig(*mu1, 3))
+                format!(
+                    "{} at M = {mach:.2}",
+                    stability_core::numerics::display::sig(*mu1, 3)
+                )
             }
         }
     }
@@ -232,7 +235,9 @@ fn subcritical_results(study: &Study, k: usize) -> impl Iterator<Item = (f64, &C
         .ms
         .iter()
         .zip(&study.results[k])
-        .filter(|(m, _)| stability_core::grid::within(**m, f64::NEG_INFINITY, SUBCRITICAL))
+        .filter(|(m, _)| {
+            stability_core::numerics::grid::within(**m, f64::NEG_INFINITY, SUBCRITICAL)
+        })
         .filter_map(|(&m, r)| Some((m, r.as_ref()?)))
 }
 
@@ -295,7 +300,7 @@ impl Findings {
     }
 
     /// The largest μ₁ meeting the standard for wing `k`, at
-    /// [`mu1_machs`] (bisection, `stability_core::study`).
+    /// [`mu1_machs`] (bisection, `stability_core::design::study`).
     pub fn max_mu1(&self, k: usize) -> &MaxMu1 {
         self.max_mu1[k].get_or_init(|| MaxMu1 {
             by_mach: mu1_machs()
@@ -508,7 +513,7 @@ pub fn show_intervals(v: &[[f64; 2]]) -> String {
     }
     v.iter()
         .map(|[a, b]| {
-            if stability_core::grid::on(*a, *b) {
+            if stability_core::numerics::grid::on(*a, *b) {
                 format!("{a:.2}")
             } else {
                 format!("{a:.2}–{b:.2}")

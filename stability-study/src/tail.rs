@@ -7,7 +7,7 @@
 //! h = 0.25 and the report's i_B and C_L·M² ([`Assumed`]). Two
 //! families, each with its shape (sweep, taper, aspect ratio) and apex
 //! fixed and its area varied
-//! ([`stability_core::configuration::sizing`], unchanged):
+//! ([`stability_core::design::sizing`], unchanged):
 //! - the tailplane of examples/delta-45-tailed.toml (a cropped 45° delta,
 //!   λ = 0.2, apex 12 aft of the wing's, in its plane);
 //! - the foreplane of examples/delta-60-canard.toml (a 60° delta, apex 5
@@ -22,11 +22,12 @@ use super::Plate;
 use super::study::{Assumed, mach_fig};
 use rayon::prelude::*;
 use serde::Serialize;
-use stability_core::case::Case;
-use stability_core::configuration::sizing::{Sizing, outcomes_at, size_surface};
-use stability_core::configuration::{Configuration, SurfaceKind};
-use stability_core::display::sig;
-use stability_core::study::report_wing;
+use stability_core::design::case::Case;
+use stability_core::design::sizing::{Sizing, outcomes_at, size_surface};
+use stability_core::design::study::report_wing;
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::SurfaceKind;
+use stability_core::numerics::display::sig;
 use stability_io::plot::Series;
 use std::sync::Arc;
 
@@ -207,9 +208,9 @@ impl TailNeeded {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use stability_core::case::evaluate;
+    use stability_core::analysis::verdict::overall;
     use stability_core::criteria::Verdict;
-    use stability_core::verdict::overall;
+    use stability_core::design::case::evaluate;
 
     /// The transonic band where the tailless wing fails (the report's
     /// full range is [`machs`]; this keeps the test short).

@@ -4,9 +4,9 @@
 use super::regimes::{self, Basis};
 use super::study::{across, curve, mach_fig};
 use super::{Plate, Study};
-use stability_core::case::Case;
-use stability_core::display::sig;
+use stability_core::design::case::Case;
 use stability_core::geometry::{Planform, Size, cropped_h};
+use stability_core::numerics::display::sig;
 
 /// The cropped wing's taper ratio.
 const TAPER: f64 = 1.0 / 7.0;
@@ -25,7 +25,7 @@ pub fn plates(study: &Study) -> Vec<Plate> {
         ..c
     });
     let m_thetadot =
-        |r: &stability_core::case::CaseResult| Some(-r.damping.derivatives.m_thetadot());
+        |r: &stability_core::design::case::CaseResult| Some(-r.damping.derivatives.m_thetadot());
     let fig = mach_fig(
         "36",
         "Effect of taper on the damping in pitch derivative m_θ̇",

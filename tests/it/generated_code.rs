@@ -6,7 +6,7 @@
 //! `generated_artefacts_are_up_to_date`.)
 
 use stability_core::Derivatives;
-use stability_core::notation::tables;
+use stability_core::data::notation::tables;
 use workspace_tests::{SplitMix64, random_derivatives};
 
 /// What `#[derive(Quartic)]` emits, on a struct with the spec's inputs.
@@ -101,7 +101,7 @@ fn the_reviewed_quartic_code_is_the_compiled_code() {
 #[test]
 fn the_reviewed_dimensional_code_is_the_compiled_code() {
     use reviewed_dimensional::DescriptorSystem as Reviewed;
-    use stability_core::dimensional::DescriptorSystem;
+    use stability_core::data::dimensional::DescriptorSystem;
     assert_eq!(Reviewed::QUARTIC_INPUTS, DescriptorSystem::QUARTIC_INPUTS);
     assert_eq!(
         Reviewed::QUARTIC_COEFFICIENTS,

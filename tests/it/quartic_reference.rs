@@ -1,7 +1,7 @@
 //! The generated quartic coefficients and gradient against routes that do
 //! not use the symbolic engine:
 //!
-//! 1. eq (6) typed by hand (corrected), `stability_core::quartic::reference::eq6_by_hand`;
+//! 1. eq (6) typed by hand (corrected), `stability_core::dynamics::quartic::reference::eq6_by_hand`;
 //! 2. the determinant of eq (4) evaluated numerically at five points on a
 //!    circle and interpolated (inverse DFT);
 //! 3. the *dimensional* equations of motion, eq (1): the 4×4 state matrix
@@ -12,7 +12,7 @@
 //!
 //! On 200 random derivative sets plus edge cases.
 
-use stability_core::quartic::reference::{
+use stability_core::dynamics::quartic::reference::{
     coefficients_by_interpolation, eq6_by_hand, gradient_by_dual_numbers, natural_radius,
 };
 use stability_core::{Derivatives, Quartic};

@@ -6,12 +6,12 @@
 use nalgebra::{DMatrix, DVector};
 use num_complex::Complex64;
 use stability_core::Derivatives;
-use stability_core::case::evaluate;
-use stability_core::examples::tailless_delta_45_coupled;
-use stability_core::response::{
+use stability_core::design::case::evaluate;
+use stability_core::design::examples::tailless_delta_45_coupled;
+use stability_core::design::study::report_wing;
+use stability_core::dynamics::response::{
     Input, MAX_STEPS, ResponseError, Sample, Simplifications, State, StateSpace, Stop, TwoDof,
 };
-use stability_core::study::report_wing;
 
 fn delta() -> Derivatives {
     tailless_delta_45_coupled()
@@ -156,8 +156,8 @@ fn neglecting_zq_and_zwdot_overstates_the_damping_as_eq45_predicts() {
     // the note's fairing: at M = 1.2 its supersonic theory, (36), whose
     // numbers the note's Fig 38 takes (the default model's Mach box at the
     // short period's ω̄ damps this short period far more)
-    let case = stability_core::case::Case {
-        damping: stability_core::case::DampingModel::FairedTheories,
+    let case = stability_core::design::case::Case {
+        damping: stability_core::design::case::DampingModel::FairedTheories,
         ..report_wing(45.0, 1.2)
     };
     let d = evaluate(&case).unwrap().derivatives;

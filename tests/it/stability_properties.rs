@@ -7,10 +7,10 @@ use nalgebra::DMatrix;
 use num_complex::Complex64;
 use proptest::prelude::*;
 use stability_core::analysis::Analysis;
-use stability_core::examples::tailless_delta_45;
-use stability_core::modes::ModeName;
-use stability_core::response::{Simplifications, StateSpace};
-use stability_core::sensitivity::{mode_sensitivities, root_sensitivities};
+use stability_core::design::examples::tailless_delta_45;
+use stability_core::dynamics::modes::ModeName;
+use stability_core::dynamics::response::{Simplifications, StateSpace};
+use stability_core::dynamics::sensitivity::{mode_sensitivities, root_sensitivities};
 use stability_core::{Derivatives, Quartic, QuarticGradient};
 use workspace_tests::{SplitMix64, random_derivatives};
 

@@ -40,7 +40,7 @@ cargo xtask tables [--add | --check]
 Solves again every Mach box and near-sonic lattice solution the note's study
 needs and writes them to stability-study/data/lifting-surface-solutions.csv,
 with each solver's fingerprint (a hash of its source; the report preloads
-the file into the store of solutions: stability_core::lifting_surface::
+the file into the store of solutions: stability_core::aerodynamics::lifting_surface::
 precomputed): computes the study in this process, every solution solved.
 About a quarter of an hour on 2 cores.
 Run it after a change to either solver (the report then refuses the stale
@@ -107,8 +107,8 @@ const TABLES: &str = "stability-study/data/lifting-surface-solutions.csv";
 /// computed in this process, its Mach box and near-sonic lattice solutions
 /// taken from the store.
 fn tables(root: &Path, mode: Tables) -> Result<(), String> {
-    use stability_core::lifting_surface::precomputed::{Precomputed, SOLVERS};
-    use stability_core::lifting_surface::store;
+    use stability_core::aerodynamics::lifting_surface::precomputed::{Precomputed, SOLVERS};
+    use stability_core::aerodynamics::lifting_surface::store;
     use stability_study::report::Report;
     let path = root.join(TABLES);
     let old = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;

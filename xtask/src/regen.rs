@@ -231,12 +231,12 @@ const DAMPING_THEORIES: &str = "docs/damping-theories.md";
 /// The document whose table of models the registry writes.
 const MODELS: &str = "docs/models.md";
 
-/// The registry's rows (`stability_core::theory::Row`) as Markdown: the
+/// The registry's rows (`stability_core::aerodynamics::theory::Row`) as Markdown: the
 /// damping models, then the aerodynamic models.
 fn models_table() -> String {
-    use stability_core::aero::AeroModelName;
-    use stability_core::case::DampingModel;
-    use stability_core::theory::Row;
+    use stability_core::aerodynamics::models::aero::AeroModelName;
+    use stability_core::aerodynamics::theory::Row;
+    use stability_core::design::case::DampingModel;
     let cell = |s: &str| s.replace('|', "\\|");
     let rows = |title: &str, flag: &str, rows: Vec<&Row>| {
         let mut t = format!(

@@ -9,13 +9,13 @@ use crate::Failure;
 use crate::output::print_as;
 use crate::page::analysis_page;
 use stability_core::Derivatives;
-use stability_core::aero::{Coefficients, Origin};
-use stability_core::case::{CaseResult, DampingModel, FrequencyIteration};
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::models::aero::{Coefficients, Origin};
+use stability_core::aerodynamics::models::derivative_tables::Mode;
 use stability_core::criteria::Margins;
-use stability_core::damping::Theory;
-use stability_core::derivative_tables::Mode;
-use stability_core::display::sig;
-use stability_core::flight::{FlightPoint, PhysicalFlight};
+use stability_core::design::case::{CaseResult, DampingModel, FrequencyIteration};
+use stability_core::design::flight::{FlightPoint, PhysicalFlight};
+use stability_core::numerics::display::sig;
 use stability_io::config::{self, Overrides, overridden};
 use stability_io::design_point::{Results, results};
 use stability_io::format::Format;
@@ -158,7 +158,7 @@ fn margins(s: &mut String, m: &Margins, h: f64) {
 
 /// The physical flight condition and what it gives (§3, eq 24).
 fn physical(s: &mut String, f: &PhysicalFlight, p: &FlightPoint) {
-    use stability_core::flight::Altitude;
+    use stability_core::design::flight::Altitude;
     let u = f.units;
     let (len, mass, force) = u.symbols();
     let l = u.length();

@@ -12,8 +12,8 @@ use crate::args::ClassArg;
 use crate::output::print_as;
 use crate::page::analysis_page;
 use stability_core::analysis::Analysis;
-use stability_core::engineering::Engineering;
-use stability_core::linear::Control;
+use stability_core::analysis::engineering::Engineering;
+use stability_core::dynamics::linear::Control;
 use stability_io::class::ClassChoice;
 use stability_io::format::Format;
 use stability_io::input::dimensional_notation::{self, DimensionalFile, is_dimensional};
@@ -46,7 +46,7 @@ pub struct EngineeringArgs {
 
 impl EngineeringArgs {
     /// The class given with `--class`, if one was.
-    pub fn class(&self) -> Option<stability_core::cap::AirplaneClass> {
+    pub fn class(&self) -> Option<stability_core::criteria::cap::AirplaneClass> {
         self.class.map(|c| c.0)
     }
 }

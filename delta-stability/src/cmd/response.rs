@@ -11,9 +11,9 @@ use crate::Failure;
 use crate::args::ResponseInput;
 use crate::output::{print, write_set};
 use crate::overwrite::Named;
-use stability_core::display::{Num, sig};
-use stability_core::linear::Control;
-use stability_core::response::{Computed, Sample};
+use stability_core::dynamics::linear::Control;
+use stability_core::dynamics::response::{Computed, Sample};
+use stability_core::numerics::display::{Num, sig};
 use stability_io::design_point::read_set;
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
@@ -41,7 +41,7 @@ pub struct Args {
     #[arg(long = "elevator-deg", visible_alias = "elevon-deg", value_name = "DEG", value_parser = crate::args::finite, allow_negative_numbers = true, conflicts_with = "m0")]
     pub elevator_deg: Option<f64>,
     /// Number of intervals (1 to 10⁶).
-    #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=stability_core::response::MAX_STEPS as i64))]
+    #[arg(long, default_value_t = 400, value_parser = clap::value_parser!(u32).range(1..=stability_core::dynamics::response::MAX_STEPS as i64))]
     pub steps: u32,
     /// Size of the moment step m₀ of `--input step` (eqs 2 units; finite; default 1).
     #[arg(long, value_parser = crate::args::finite, allow_negative_numbers = true)]

@@ -1,7 +1,7 @@
 //! `delta-stability sensitivity FILE [--json]`: how each mode's root moves
 //! with each of the fifteen quartic inputs — the question of the report's
 //! §7 conclusions, §8 and §10 (which derivative drives the short period's
-//! damping), answered exactly by [`stability_core::sensitivity`].
+//! damping), answered exactly by [`stability_core::dynamics::sensitivity`].
 //!
 //! For a simple root λ = r + is of the quartic P(λ) and an input p,
 //! dλ/dp = −(∂P/∂p)(λ)/P′(λ), with ∂P/∂p from the generated exact
@@ -11,7 +11,7 @@
 use crate::Failure;
 use crate::output::print_as;
 use crate::page::{aligned, root};
-use stability_core::display::sig;
+use stability_core::numerics::display::sig;
 use stability_io::format::Format;
 use stability_io::views::SensitivityJson;
 use std::fmt::Write;

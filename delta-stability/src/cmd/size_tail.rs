@@ -1,13 +1,13 @@
 //! `delta-stability size-tail CONFIG [--mach LO:HI:STEP] [--surface
 //! tailplane|foreplane] [--max-area A] [--json]`: the smallest surface of
 //! the config's shape that meets the §8 standard at every Mach number
-//! ([`stability_core::configuration::sizing`]).
+//! ([`stability_core::design::sizing`]).
 
 use crate::Failure;
 use crate::args::ModelArgs;
-use stability_core::configuration::SurfaceKind;
-use stability_core::configuration::sizing::{SCAN, Sizing, TOLERANCE, size_surface};
-use stability_core::display::sig;
+use stability_core::design::sizing::{SCAN, Sizing, TOLERANCE, size_surface};
+use stability_core::geometry::configuration::SurfaceKind;
+use stability_core::numerics::display::sig;
 use stability_io::config::overridden;
 use stability_io::diag::InputError;
 use stability_io::format::Format;

@@ -3,7 +3,7 @@
 //! written atomically with a progress bar.
 //!
 //! The grid and its rows are [`stability_io::sweep`]'s, the computation
-//! [`stability_core::sweep`]'s; this command parses the options and writes
+//! [`stability_core::design::sweep`]'s; this command parses the options and writes
 //! the rows: the grid is evaluated in chunks, within a chunk blocks of
 //! points are evaluated and formatted in parallel into their own buffers,
 //! and a chunk is written while the next is computed.
@@ -13,8 +13,8 @@ use crate::args::ModelArgs;
 use crate::output::AtomicFile;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
-use stability_core::display::sig;
-use stability_core::sweep::{Axes, SweepError};
+use stability_core::design::sweep::{Axes, SweepError};
+use stability_core::numerics::display::sig;
 use stability_io::config::{Config, overridden};
 use stability_io::diag::{InputError, IoError};
 use stability_io::files::write_error;

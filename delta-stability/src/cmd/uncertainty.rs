@@ -7,7 +7,7 @@ use crate::Failure;
 use crate::args::ModelArgs;
 use crate::output::AtomicFile;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use stability_core::display::sig;
+use stability_core::numerics::display::sig;
 use stability_core::uncertainty::{Options, Sampling, Study};
 use stability_io::config::overridden;
 use stability_io::diag::InputError;

@@ -4,8 +4,8 @@
 //! written beside it ([`DOCS`]), so the page works wherever `--out` puts
 //! it.
 
-use stability_core::display::sig;
-use stability_core::study::report_wing;
+use stability_core::design::study::report_wing;
+use stability_core::numerics::display::sig;
 use stability_io::plot::Plate;
 use stability_study::certainty::Certainty;
 use stability_study::conclusions::{Agreement, Judged};

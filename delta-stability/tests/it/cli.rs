@@ -3,7 +3,7 @@
 use crate::common;
 
 use common::{Scratch, bin, json, path, root, run_err, run_ok, stderr, wait_while_running};
-use stability_core::quartic::reference::eq6_by_hand;
+use stability_core::dynamics::quartic::reference::eq6_by_hand;
 
 #[test]
 fn quartic_json_has_the_coefficients_of_eq6() {
@@ -15,7 +15,7 @@ fn quartic_json_has_the_coefficients_of_eq6() {
     // The example's values (the file is the library's example aircraft,
     // tested in stability-core/tests/it/examples.rs), through eq (6) typed by
     // hand (corrected).
-    let inputs = stability_core::examples::tailless_delta_45().quartic_input_values();
+    let inputs = stability_core::design::examples::tailless_delta_45().quartic_input_values();
     let expect = eq6_by_hand(&inputs);
     for (k, name) in ["A", "B", "C", "D", "E"].iter().enumerate() {
         let got = v["coefficients"][name].as_f64().expect("a number");
@@ -1042,7 +1042,7 @@ fn sweep_points_are_those_analyze_computes_alone() {
 #[test]
 fn closed_choices_are_listed_in_help_from_the_library() {
     let help = common::stdout(&run_ok(&["analyze", "--help"]));
-    for t in stability_core::damping::Theory::ALL {
+    for t in stability_core::aerodynamics::damping::Theory::ALL {
         assert!(
             help.contains(&format!("- {}:", t.name())),
             "{}\n{help}",
@@ -1052,7 +1052,7 @@ fn closed_choices_are_listed_in_help_from_the_library() {
     }
     assert!(help.contains("- faired:"), "{help}");
     let help = common::stdout(&run_ok(&["convert", "--help"]));
-    for n in stability_core::notation::Notation::all() {
+    for n in stability_core::data::notation::Notation::all() {
         assert!(help.contains(&format!("- {}:", n.name())), "{}", n.name());
     }
     assert!(
@@ -1160,11 +1160,13 @@ fn uncertain_config(extra: &str) -> String {
 /// on the library's analysis of the config's design point.
 fn m_q_flip() -> f64 {
     use stability_core::analysis::Analysis;
-    let case = stability_core::case::Case {
-        damping: stability_core::case::DampingModel::FairedSlender,
-        ..stability_core::study::report_wing(60.0, 0.9)
+    let case = stability_core::design::case::Case {
+        damping: stability_core::design::case::DampingModel::FairedSlender,
+        ..stability_core::design::study::report_wing(60.0, 0.9)
     };
-    let d = stability_core::case::evaluate(&case).unwrap().derivatives;
+    let d = stability_core::design::case::evaluate(&case)
+        .unwrap()
+        .derivatives;
     let met = |e: f64| {
         let d = stability_core::Derivatives {
             m_q: d.m_q + e,

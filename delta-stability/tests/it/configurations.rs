@@ -192,7 +192,7 @@ fn the_design_report_has_a_section_10_with_each_parts_damping() {
     let v = json(&run_ok(&["analyze", TAILED, "--mach", "1.2", "--json"]));
     let tail = &v["configuration"]["parts"][1];
     let m = num(&tail["m_q"]) + num(&tail["m_wdot"]);
-    let cell = format!("<td>{}</td>", stability_core::display::sig(m, 4));
+    let cell = format!("<td>{}</td>", stability_core::numerics::display::sig(m, 4));
     let row = page
         .lines()
         .find(|l| l.contains("<td>tailplane</td>"))

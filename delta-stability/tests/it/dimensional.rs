@@ -8,10 +8,10 @@ use crate::common;
 
 use common::{Scratch, json, path, root, run_err, run_ok, stderr};
 use serde_json::Value;
-use stability_core::dimensional::{
+use stability_core::data::dimensional::{
     Axes, DimensionalAnalysis, DimensionalDerivatives, DimensionalModel, Trim, Units,
 };
-use stability_core::notation::{N_ROWS, Notation, row};
+use stability_core::data::notation::{N_ROWS, Notation, row};
 
 fn published(name: &str) -> Value {
     let p = root().join(format!("stability-core/tests/data/aircraft/{name}.json"));
@@ -666,7 +666,7 @@ fn the_lift_drag_form_relations_derivative_by_derivative() {
     ] {
         set(&mut v, american, name, x);
     }
-    let p = [1.0; stability_core::notation::tables::PARAMETERS.len()];
+    let p = [1.0; stability_core::data::notation::tables::PARAMETERS.len()];
     let mut report = american.to_report(&v, &p).unwrap();
     let c_d = 0.043;
     report[row("c_d").unwrap()] = Some(c_d);

@@ -14,8 +14,8 @@ use num_complex::Complex64;
 use serde_json::Value;
 use stability_core::Derivatives;
 use stability_core::analysis::Analysis;
-use stability_core::mode_shape::eigenvector;
-use stability_core::response::{Simplifications, StateSpace};
+use stability_core::dynamics::mode_shape::eigenvector;
+use stability_core::dynamics::response::{Simplifications, StateSpace};
 
 fn f(v: &Value) -> f64 {
     v.as_f64().unwrap_or_else(|| panic!("a number, not {v}"))
@@ -469,7 +469,7 @@ fn the_state_space_file_is_the_librarys_state_matrix() {
     let ss: Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
     let d = derivatives("tailless-delta-60-dimensional.toml");
     let lib = StateSpace::new(&d, Simplifications::default()).unwrap();
-    let tau = stability_core::examples::tailless_delta_60_flight().tau();
+    let tau = stability_core::design::examples::tailless_delta_60_flight().tau();
     // by hand: dû/dt = Dû/τ; q = q̂/τ, so A_s[i][j] = A_τ[i][j]·(row i is q ? 1/τ : 1)·(col j is q ? τ : 1)/τ
     for i in 0..4 {
         for j in 0..4 {

@@ -9,7 +9,7 @@ use crate::common;
 use common::{Scratch, json, path, root, run_err, run_ok, stderr};
 use num_complex::Complex64;
 use serde_json::Value;
-use stability_core::dimensional::{
+use stability_core::data::dimensional::{
     Axes, DimensionalAnalysis, DimensionalDerivatives, DimensionalModel, Trim, Units,
 };
 use stability_io::input::dimensional_notation;

@@ -12,10 +12,10 @@ use common::{json, run_ok};
 use rand::rngs::ChaCha12Rng;
 use rand::{RngExt, SeedableRng};
 use rand_distr::{Distribution, Triangular};
-use stability_core::case::{Case, DampingModel, evaluate_harmonic};
+use stability_core::aerodynamics::lifting_surface::Harmonic;
 use stability_core::criteria::Verdict;
-use stability_core::lifting_surface::Harmonic;
-use stability_core::study::report_wing;
+use stability_core::design::case::{Case, DampingModel, evaluate_harmonic};
+use stability_core::design::study::report_wing;
 use stability_study::certainty::{Answer, Claim, HEADLINES, SAMPLES, SEED};
 
 #[test]

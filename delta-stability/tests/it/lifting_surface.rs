@@ -6,10 +6,10 @@
 use crate::common;
 
 use common::{Scratch, json, path, run_err, run_ok, stderr, stdout};
-use stability_core::aero::{AeroModel, AeroModelName};
-use stability_core::case::{Case, DampingModel, evaluate};
-use stability_core::damping::Theory;
-use stability_core::study::report_wing;
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::models::aero::{AeroModel, AeroModelName};
+use stability_core::design::case::{Case, DampingModel, evaluate};
+use stability_core::design::study::report_wing;
 
 /// examples/delta-45.toml's design point at `mach`, as the library sees it.
 fn delta_45(mach: f64, damping: Theory, aero: AeroModelName) -> Case {

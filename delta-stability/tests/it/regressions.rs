@@ -666,7 +666,7 @@ fn convert_writes_files_its_own_reader_accepts_or_says_what_is_missing() {
         .filter(|p| p.extension().is_some_and(|e| e == "toml"))
         .collect();
     examples.sort();
-    let targets: Vec<&str> = stability_core::notation::Notation::all()
+    let targets: Vec<&str> = stability_core::data::notation::Notation::all()
         .map(|n| n.name())
         .chain(["dimensional"])
         .collect();

@@ -9,7 +9,7 @@ use crate::common;
 
 use delta_stability::cmd::report::terminal_summary;
 use delta_stability::report::html::{DOCS, index_html};
-use stability_core::study::intervals;
+use stability_core::design::study::intervals;
 use stability_study::Study;
 use stability_study::conclusions::{Agreement, CONCLUSIONS, Judged};
 use stability_study::study::Assumption;

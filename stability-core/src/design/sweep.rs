@@ -6,8 +6,8 @@
 //! stability-io's table, `stability_io::sweep::columns`).
 //!
 //! ```
-//! use stability_core::study::report_wing;
-//! use stability_core::sweep::{Axes, Sweep};
+//! use stability_core::design::study::report_wing;
+//! use stability_core::design::sweep::{Axes, Sweep};
 //! let base = report_wing(60.0, 0.9);
 //! let axes = Axes {
 //!     mach: vec![0.6, 0.9, 1.5],

@@ -27,7 +27,7 @@
 //! a geometric/geopotential mix-up or a wrong Earth radius moves these
 //! values by a part in 10² or more, far beyond this bound.
 
-use stability_core::atmosphere::{
+use stability_core::design::atmosphere::{
     Atmosphere, AtmosphereError, FOOT, geometric_from_geopotential, geopotential_from_geometric,
 };
 

@@ -3,7 +3,7 @@
 //! input.
 
 use proptest::prelude::*;
-use stability_core::notation::avl::{AvlError, parse_st, to_report};
+use stability_core::data::notation::avl::{AvlError, parse_st, to_report};
 
 const ST: &str = include_str!("../data/avl/tailless-delta.st");
 

@@ -16,8 +16,8 @@ use crate::support;
 
 use stability_core::analysis::Analysis;
 use stability_core::criteria::Routh;
-use stability_core::examples::tailless_delta_45;
-use stability_core::roots::{RootsError, solve_quartic};
+use stability_core::design::examples::tailless_delta_45;
+use stability_core::numerics::roots::{RootsError, solve_quartic};
 use stability_core::{Derivatives, Quartic};
 use support::{Case, case_error, cases};
 

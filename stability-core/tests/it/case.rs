@@ -4,13 +4,17 @@
 //! joins between them), the frequency iteration's consistency, and the
 //! report's headline conclusions under both.
 
-use stability_core::aero::{AeroModel, lifting_surface_steady, monotone_slopes};
-use stability_core::case::{Case, DampingModel, evaluate, evaluate_harmonic};
-use stability_core::damping::{DampingDerivatives, Theory, WingInput, damping_derivatives};
-use stability_core::faired;
+use stability_core::aerodynamics::damping::{
+    DampingDerivatives, Theory, WingInput, damping_derivatives,
+};
+use stability_core::aerodynamics::lifting_surface::Harmonic;
+use stability_core::aerodynamics::models::aero::{
+    AeroModel, lifting_surface_steady, monotone_slopes,
+};
+use stability_core::aerodynamics::models::faired;
+use stability_core::aerodynamics::supersonic;
+use stability_core::design::case::{Case, DampingModel, evaluate, evaluate_harmonic};
 use stability_core::geometry::{Planform, Size};
-use stability_core::lifting_surface::Harmonic;
-use stability_core::supersonic;
 
 fn case(deg: f64, mach: f64, mu1: f64, damping: DampingModel) -> Case {
     Case {
@@ -292,7 +296,7 @@ fn the_default_model_is_the_lifting_surface_at_every_mach_number_to_3() {
             .derivatives
     };
     for m in [0.6, 0.95, 1.0, 1.1, 1.6, 2.5] {
-        let ls = stability_core::damping::damping_derivatives_with(
+        let ls = stability_core::aerodynamics::damping::damping_derivatives_with(
             Theory::LiftingSurfaceFrequency,
             &wing,
             0.25,
@@ -320,14 +324,14 @@ fn in_the_sonic_join_a_low_frequency_is_raised_to_the_verified_one_and_warned() 
     assert!(
         low.warnings.iter().any(|w| matches!(
             w,
-            stability_core::warnings::Warning::SonicFrequencyRaised { .. }
+            stability_core::aerodynamics::warnings::Warning::SonicFrequencyRaised { .. }
         )),
         "{:?}",
         low.warnings
     );
     assert!(at.warnings.iter().all(|w| !matches!(
         w,
-        stability_core::warnings::Warning::SonicFrequencyRaised { .. }
+        stability_core::aerodynamics::warnings::Warning::SonicFrequencyRaised { .. }
     )));
 }
 

@@ -3,12 +3,16 @@
 //! neutral point and the `configuration` shares, checked against hand
 //! formulas, subsonic (the multi-surface lattice) and supersonic.
 
-use stability_core::case::{Case, DampingModel, evaluate};
-use stability_core::configuration::{Body, Configuration, Part, Surface, SurfaceKind};
+use stability_core::aerodynamics::lifting_surface::Harmonic;
+use stability_core::aerodynamics::lifting_surface::{Lattice, LatticeSpec};
+use stability_core::design::case::{Case, DampingModel, evaluate};
+use stability_core::design::study::report_wing;
+use stability_core::geometry::configuration::Body;
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::Part;
+use stability_core::geometry::configuration::Surface;
+use stability_core::geometry::configuration::SurfaceKind;
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::Harmonic;
-use stability_core::lifting_surface::{Lattice, LatticeSpec};
-use stability_core::study::report_wing;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -124,7 +128,8 @@ fn a_body_adds_eq_43_through_the_pipeline() {
     let (r0, r) = (evaluate(&alone).unwrap(), evaluate(&with).unwrap());
     let p = &alone.planform;
     let x = 4.0 + p.x_mac() + alone.h * p.mac();
-    let eq43 = stability_core::damping::fuselage_increment(2.0, 4.0, x, p.area(), p.mac());
+    let eq43 =
+        stability_core::aerodynamics::damping::fuselage_increment(2.0, 4.0, x, p.area(), p.mac());
     let got = r.damping.derivatives.m_thetadot() - r0.damping.derivatives.m_thetadot();
     assert!((got - eq43).abs() < 1e-12, "{got} vs eq (43) {eq43}");
 }
@@ -140,7 +145,8 @@ fn a_small_distant_tail_at_m_0_5_follows_the_tail_volume_formulas() {
     // with no (1 − dε/dα) factor (that factor belongs to m_w; the lag to
     // m_ẇ), l_T from the c.g. to the tail's quarter-M.A.C. point.
     let (mut alone, _) = tailed(0.5);
-    alone.damping = DampingModel::Theory(stability_core::damping::Theory::LiftingSurface);
+    alone.damping =
+        DampingModel::Theory(stability_core::aerodynamics::damping::Theory::LiftingSurface);
     let tail = Planform::new(45f64.to_radians(), 0.0, Size::RootChord(2.5)).unwrap();
     let config = Configuration {
         tailplane: Some(Surface {
@@ -210,7 +216,7 @@ fn the_transonic_fairing_meets_the_lattice_and_the_supersonic_theory() {
 
 #[test]
 fn a_tail_inside_the_tips_mach_lines_is_warned_of() {
-    use stability_core::warnings::Warning;
+    use stability_core::aerodynamics::warnings::Warning;
     // the tail's centre at 15 + ⅔·2.5 = 16.7 (2.5 c̄); the tips' Mach lines
     // (tip trailing edge at x = 10, s = 10) meet the centre line at
     // 10 + β·10 = 27.3 at M = 2 (4.10 c̄): warned; 400 aft: not

@@ -6,12 +6,16 @@
 //! (`configuration_lattice_avl.rs`) and the classical tail-volume formulas
 //! (`configuration_tail_volume.rs`).
 
-use stability_core::configuration::lattice::ConfigurationLattice;
-use stability_core::configuration::{
-    Configuration, ConfigurationError, Part, Surface, SurfaceKind,
+use stability_core::aerodynamics::lifting_surface::configuration::ConfigurationError;
+use stability_core::aerodynamics::lifting_surface::configuration::ConfigurationLattice;
+use stability_core::aerodynamics::lifting_surface::{
+    Lattice, LatticeSpec, LiftingSurfaceError, Solution,
 };
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{Lattice, LatticeSpec, LiftingSurfaceError, Solution};
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::Part;
+use stability_core::geometry::configuration::Surface;
+use stability_core::geometry::configuration::SurfaceKind;
 
 fn delta(sweep_deg: f64) -> Trapezoid {
     let t = sweep_deg.to_radians().tan();
@@ -281,7 +285,7 @@ fn bad_input_is_an_error() {
 /// ω̄ → 0, the difference O(ω̄ ln ω̄).
 #[test]
 fn the_harmonic_solution_tends_to_the_quasi_steady_one() {
-    use stability_core::lifting_surface::{I1Approximation, Spacing};
+    use stability_core::aerodynamics::lifting_surface::{I1Approximation, Spacing};
     let wing = delta(60.0);
     let cfg = Configuration {
         tailplane: Some(tail(1.3, 0.3)),
@@ -317,7 +321,7 @@ fn the_harmonic_solution_tends_to_the_quasi_steady_one() {
 
 #[test]
 fn a_configuration_is_solved_once() {
-    use stability_core::lifting_surface::store;
+    use stability_core::aerodynamics::lifting_surface::store;
     let cfg = Configuration {
         tailplane: Some(tail(1.31, 0.21)),
         ..Configuration::wing_alone(delta(55.0))
@@ -347,8 +351,8 @@ fn a_configuration_is_solved_once() {
 /// the node's own solution.
 #[test]
 fn interpolated_configuration_solutions_are_the_direct_ones() {
-    use stability_core::lifting_surface::Harmonic;
-    use stability_core::lifting_surface::store;
+    use stability_core::aerodynamics::lifting_surface::Harmonic;
+    use stability_core::aerodynamics::lifting_surface::store;
     let cfg = Configuration {
         tailplane: Some(tail(1.3, 0.1)),
         ..Configuration::wing_alone(delta(60.0))

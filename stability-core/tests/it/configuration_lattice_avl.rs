@@ -45,14 +45,16 @@
 //! with i_B or μ₁.
 
 use serde_json::Value;
-use stability_core::aero::AeroModelName;
-use stability_core::case::{DampingModel, evaluate};
-use stability_core::configuration::lattice::ConfigurationLattice;
-use stability_core::configuration::{Configuration, Surface, SurfaceKind};
-use stability_core::damping::Theory;
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::lifting_surface::configuration::ConfigurationLattice;
+use stability_core::aerodynamics::lifting_surface::{LatticeSpec, Solution, Spacing};
+use stability_core::aerodynamics::models::aero::AeroModelName;
+use stability_core::design::case::{DampingModel, evaluate};
+use stability_core::design::study::report_wing;
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::Surface;
+use stability_core::geometry::configuration::SurfaceKind;
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::{LatticeSpec, Solution, Spacing};
-use stability_core::study::report_wing;
 use std::sync::Arc;
 
 fn g(v: &Value, k: &str) -> f64 {

@@ -11,10 +11,12 @@
 //! K₂ and the downwash lag show).
 
 use serde_json::Value;
-use stability_core::configuration::lattice::ConfigurationLattice;
-use stability_core::configuration::{Configuration, Surface, SurfaceKind};
+use stability_core::aerodynamics::lifting_surface::configuration::ConfigurationLattice;
+use stability_core::aerodynamics::lifting_surface::{LatticeSpec, LineRule, Solution, Spacing};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{LatticeSpec, LineRule, Solution, Spacing};
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::Surface;
+use stability_core::geometry::configuration::SurfaceKind;
 
 const KEYS: [&str; 6] = [
     "lift_alpha",

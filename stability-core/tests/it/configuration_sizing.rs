@@ -2,12 +2,14 @@
 //! of areas: the tailless 45° delta fails the §8 standard at M = 1.2–1.5
 //! (the note's Fig 33), and a tailplane of some area mends it.
 
-use stability_core::case::{Case, DampingModel, evaluate_point};
-use stability_core::configuration::sizing::{TOLERANCE, size_surface};
-use stability_core::configuration::{Configuration, Surface, SurfaceKind};
 use stability_core::criteria::Verdict;
+use stability_core::design::case::{Case, DampingModel, evaluate_point};
+use stability_core::design::sizing::{TOLERANCE, size_surface};
+use stability_core::design::study::report_wing;
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::Surface;
+use stability_core::geometry::configuration::SurfaceKind;
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::study::report_wing;
 use std::sync::Arc;
 
 const MACHS: [f64; 4] = [1.2, 1.3, 1.4, 1.5];
@@ -45,7 +47,7 @@ fn meets(case: &Case, area: f64) -> bool {
         c.mach = m;
         c.aero.configuration = Some(Arc::new(config.clone()));
         let r = evaluate_point(&c).unwrap();
-        stability_core::verdict::overall(&r.analysis) == Verdict::Meets
+        stability_core::analysis::verdict::overall(&r.analysis) == Verdict::Meets
     })
 }
 

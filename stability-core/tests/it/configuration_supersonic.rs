@@ -3,10 +3,13 @@
 //! tail-volume formulas for a small distant tail, and the theories' own
 //! axis transfer for a surface moved against the wing.
 
-use stability_core::configuration::supersonic::{Placement, moved, own_solution};
-use stability_core::configuration::{Configuration, Part, Surface, SurfaceKind};
+use stability_core::aerodynamics::supersonic::configuration::{Placement, moved, own_solution};
+use stability_core::aerodynamics::supersonic::{Wing, edge_theory};
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::Part;
+use stability_core::geometry::configuration::Surface;
+use stability_core::geometry::configuration::SurfaceKind;
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::supersonic::{Wing, edge_theory};
 use std::f64::consts::PI;
 
 fn delta(deg: f64, taper: f64, root: f64) -> Trapezoid {
@@ -164,13 +167,13 @@ fn a_swept_trailing_edge_is_refused_with_advice() {
 fn note_bands(
     config: &Configuration,
     mach: f64,
-) -> stability_core::configuration::increment::Increment {
-    stability_core::case::DampingModel::FairedTheories
+) -> stability_core::aerodynamics::models::increment::Increment {
+    stability_core::design::case::DampingModel::FairedTheories
         .increment(
             config,
             mach,
             0.0,
-            stability_core::lifting_surface::Harmonic::Direct,
+            stability_core::aerodynamics::lifting_surface::Harmonic::Direct,
             true,
         )
         .unwrap()

@@ -23,9 +23,15 @@
 //! m_ẇ,T within 0.4 % in the wing's plane (dε/dα = 0.73 at M = 0, 0.76 at
 //! M = 0.6) and 5 % at z = 0.3c_r (dε/dα = 0.35).
 
-use stability_core::configuration::{Configuration, Part, Surface, SurfaceKind};
+use stability_core::geometry::configuration::Configuration;
+
+use stability_core::geometry::configuration::Part;
+
+use stability_core::geometry::configuration::Surface;
+
+use stability_core::aerodynamics::lifting_surface::{Lattice, LatticeSpec};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{Lattice, LatticeSpec};
+use stability_core::geometry::configuration::SurfaceKind;
 
 #[test]
 fn a_distant_tail_follows_the_tail_volume_formulas() {

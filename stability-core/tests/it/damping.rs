@@ -4,7 +4,7 @@
 //! mpmath (30 digits, quoted to f64 precision).
 #![allow(clippy::excessive_precision)]
 
-use stability_core::damping::{
+use stability_core::aerodynamics::damping::{
     DampingDerivatives, DampingError, Fig18, Theory, WingInput, damping_derivatives, eq36,
     mangler_k,
 };

@@ -1,14 +1,14 @@
-//! The general dimensional model (issue 12, `stability_core::dimensional`):
+//! The general dimensional model (issue 12, `stability_core::data::dimensional`):
 //! its generated quartic (specs/dimensional.toml) against independent
 //! routes, eq (4) as its special case, the axis rotation and the
 //! conversions to and from the report's notation.
 
 use nalgebra::{Complex, Matrix4};
 use stability_core::Derivatives;
-use stability_core::dimensional::{
+use stability_core::data::dimensional::{
     Axes, DimensionalAnalysis, DimensionalDerivatives, DimensionalModel, Reference, Trim, Units,
 };
-use stability_core::roots::solve_quartic;
+use stability_core::numerics::roots::solve_quartic;
 
 /// SplitMix64 (Steele, Lea & Flood 2014): a reproducible stream of u64.
 struct Rng(u64);
@@ -247,7 +247,7 @@ fn rotating_into_stability_axes_keeps_the_motion_and_brings_in_udot_terms() {
 /// eq (41) the same.
 #[test]
 fn the_dimensional_analysis_of_a_report_set_is_its_analysis_in_seconds() {
-    let d = stability_core::examples::tailless_delta_45();
+    let d = stability_core::design::examples::tailless_delta_45();
     let (v, tau) = (250.0, 2.3);
     let (model, reference) = DimensionalModel::from_report(&d, v, tau, Units::Si);
     let dim = DimensionalAnalysis::of(&model, Some(&reference)).unwrap();

@@ -5,20 +5,20 @@
 
 use nalgebra::{Complex, Matrix4};
 use num_complex::Complex64;
+use stability_core::analysis::engineering::Engineering;
 use stability_core::analysis::{Analysis, STANDARD_GRAVITY};
-use stability_core::atmosphere::{FOOT, KG_PER_SLUG, NEWTON_PER_LBF};
-use stability_core::cap::{
+use stability_core::criteria::cap::{
     AirplaneClass, ShortPeriodFrequency, frequency_level, n_alpha, n_alpha_dimensional, regions,
 };
 use stability_core::criteria::{Category, Level};
-use stability_core::engineering::Engineering;
-use stability_core::examples::{
+use stability_core::design::atmosphere::{FOOT, KG_PER_SLUG, NEWTON_PER_LBF};
+use stability_core::design::examples::{
     tailless_delta_45_coupled, tailless_delta_60, tailless_delta_60_flight,
 };
-use stability_core::flight::{Air, Altitude, FlightCondition, Mass, Units};
+use stability_core::design::flight::{Air, Altitude, FlightCondition, Mass, Units};
+use stability_core::dynamics::linear::{Control, LinearModel, TimeUnit};
+use stability_core::dynamics::mode_shape::{ModeShape, eigenvector};
 use stability_core::geometry::{Planform, Size};
-use stability_core::linear::{Control, LinearModel, TimeUnit};
-use stability_core::mode_shape::{ModeShape, eigenvector};
 
 fn delta_60() -> Planform {
     Planform::new(60f64.to_radians(), 0.0, Size::RootChord(12.0)).unwrap()
@@ -272,7 +272,7 @@ fn the_damp_table_is_the_roots_over_tau() {
 
 #[test]
 fn an_undefined_cap_is_not_assessed() {
-    use stability_core::cap::not_assessed;
+    use stability_core::criteria::cap::not_assessed;
     for n in [
         f64::INFINITY,
         f64::NEG_INFINITY,

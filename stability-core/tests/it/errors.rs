@@ -3,14 +3,14 @@
 //! number goes through `display::Num`.
 
 use stability_core::Derivatives;
-use stability_core::aero::{AeroError, Table};
+use stability_core::aerodynamics::damping::{DampingError, Theory, WingInput, damping_derivatives};
+use stability_core::aerodynamics::models::aero::{AeroError, Table};
 use stability_core::analysis::{Analysis, AnalysisError};
-use stability_core::case::{CaseError, CaseInput, DampingModel, evaluate};
-use stability_core::damping::{DampingError, Theory, WingInput, damping_derivatives};
-use stability_core::examples::tailless_delta_45;
+use stability_core::design::case::{CaseError, CaseInput, DampingModel, evaluate};
+use stability_core::design::examples::tailless_delta_45;
+use stability_core::design::study::report_wing;
 use stability_core::geometry::{GeometryError, Planform, Size};
-use stability_core::invalid::Invalid;
-use stability_core::study::report_wing;
+use stability_core::numerics::invalid::Invalid;
 
 /// No run of more than 20 digits: a number written in full.
 fn assert_short(m: &str) {
@@ -21,7 +21,7 @@ fn assert_short(m: &str) {
     }
 }
 
-type Edit = fn(&mut stability_core::case::Case);
+type Edit = fn(&mut stability_core::design::case::Case);
 
 #[test]
 fn case_errors_name_the_input() {

@@ -1,10 +1,12 @@
-//! `stability_core::examples` against the files it stands for,
+//! `stability_core::design::examples` against the files it stands for,
 //! `examples/tailless-delta-45.toml` and
 //! `examples/tailless-delta-60-dimensional.toml` (one definition in code,
 //! checked against the one a user runs).
 
 use stability_core::Derivatives;
-use stability_core::examples::{tailless_delta_45, tailless_delta_60, tailless_delta_60_flight};
+use stability_core::design::examples::{
+    tailless_delta_45, tailless_delta_60, tailless_delta_60_flight,
+};
 
 fn example(name: &str) -> toml::Table {
     let path = format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"));

@@ -8,11 +8,15 @@
 //! another machine's libm). And a file made by another solver is refused
 //! whole: the store then solves, and never returns its stale values.
 
+use stability_core::aerodynamics::lifting_surface::mach_box::{MachBoxSpec, solve};
+use stability_core::aerodynamics::lifting_surface::precomputed::{
+    Precomputed, PrecomputedError, fingerprint,
+};
+use stability_core::aerodynamics::lifting_surface::solution::{
+    Key, ReducedFrequency, Solver, shape,
+};
+use stability_core::aerodynamics::lifting_surface::{Lattice, LatticeSpec, Solution, store};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::mach_box::{MachBoxSpec, solve};
-use stability_core::lifting_surface::precomputed::{Precomputed, PrecomputedError, fingerprint};
-use stability_core::lifting_surface::solution::{Key, ReducedFrequency, Solver, shape};
-use stability_core::lifting_surface::{Lattice, LatticeSpec, Solution, store};
 
 const FILE: &str = include_str!("../../../stability-study/data/lifting-surface-solutions.csv");
 

@@ -30,11 +30,13 @@
 //! the hand-assembled ones are listed here.
 
 use serde_json::Value;
+use stability_core::aerodynamics::damping::Theory;
 use stability_core::analysis::Analysis;
-use stability_core::case::{DampingModel, evaluate};
-use stability_core::damping::Theory;
-use stability_core::examples::{tailless_delta_45, tailless_delta_60, tailless_delta_60_flight};
-use stability_core::study::report_wing;
+use stability_core::design::case::{DampingModel, evaluate};
+use stability_core::design::examples::{
+    tailless_delta_45, tailless_delta_60, tailless_delta_60_flight,
+};
+use stability_core::design::study::report_wing;
 
 /// Keys the types add (a path with `[]` for every array element).
 /// Keys added since the fixtures were recorded (the overall verdict of

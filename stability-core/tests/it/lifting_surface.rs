@@ -1,4 +1,4 @@
-//! The doublet lattice (`stability_core::lifting_surface`) against routes
+//! The doublet lattice (`stability_core::aerodynamics::lifting_surface`) against routes
 //! independent of it: slender-wing theory (eq 37) as A → 0, the
 //! two-dimensional flat plate (thin-aerofoil theory, Theodorsen's function
 //! by mpmath) as A → ∞, the Prandtl–Glauert rule, the exact kernel by
@@ -6,10 +6,10 @@
 //! errors. AVL, panelaero and the convergence table have their own files.
 
 use serde_json::Value;
-use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::{
+use stability_core::aerodynamics::lifting_surface::{
     Extrapolation, I1Approximation, Lattice, LatticeSpec, LiftingSurfaceError, Spacing,
 };
+use stability_core::geometry::{Planform, Size, Trapezoid};
 use std::f64::consts::PI;
 
 fn delta(aspect_ratio: f64) -> Trapezoid {
@@ -96,9 +96,10 @@ fn a_rectangle_of_large_aspect_ratio_tends_to_the_flat_plate() {
                     .unwrap(),
             );
         }
-        let lim = |f: fn(&stability_core::lifting_surface::LiftingSurfaceDerivatives) -> f64| {
-            extrapolate(aspect, [f(&rows[0]), f(&rows[1]), f(&rows[2])])
-        };
+        let lim =
+            |f: fn(
+                &stability_core::aerodynamics::lifting_surface::LiftingSurfaceDerivatives,
+            ) -> f64| { extrapolate(aspect, [f(&rows[0]), f(&rows[1]), f(&rows[2])]) };
         let a = lim(|d| d.lift_slope);
         assert!(
             (a * beta / (2.0 * PI) - 1.0).abs() < 0.012,

@@ -13,8 +13,8 @@
 //! 0.004c̄ on the neutral point, 0.01 on m_w (C_Lα × the margin's 0.004).
 
 use serde_json::Value;
+use stability_core::aerodynamics::lifting_surface::{Lattice, LatticeSpec};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{Lattice, LatticeSpec};
 
 #[test]
 fn steady_derivatives_agree_with_avl() {

@@ -5,13 +5,13 @@
 //! where ω̄ = s/μ₁, the subsonic limit is an error naming it; and the issue's
 //! headline — the 45° delta's short period at M = 0.5.
 
-use stability_core::aero::{AeroModel, AeroModelName};
-use stability_core::case::{Case, CaseError, DampingModel, evaluate, evaluate_point_with};
-use stability_core::damping::{DampingError, Theory, WingInput, damping_derivatives};
+use stability_core::aerodynamics::damping::{DampingError, Theory, WingInput, damping_derivatives};
+use stability_core::aerodynamics::lifting_surface::{Harmonic, LiftingSurfaceError, store};
+use stability_core::aerodynamics::models::aero::{AeroModel, AeroModelName};
+use stability_core::design::case::{Case, CaseError, DampingModel, evaluate, evaluate_point_with};
+use stability_core::design::study::report_wing;
+use stability_core::dynamics::modes::ModeName;
 use stability_core::geometry::{Planform, Size};
-use stability_core::lifting_surface::{Harmonic, LiftingSurfaceError, store};
-use stability_core::modes::ModeName;
-use stability_core::study::report_wing;
 
 fn case(deg: f64, mach: f64, damping: Theory, aero: AeroModelName) -> Case {
     Case {
@@ -78,8 +78,9 @@ fn the_aerodynamic_model_takes_the_steady_solve_with_its_mach_derivatives() {
     assert!((d.m_w - (0.25 - h0.value) * (a.value + c_d)).abs() < 1e-12);
     // a table still wins for its coefficient
     let mut tabled = c.clone();
-    tabled.aero.lift_slope = stability_core::aero::Source::Table(
-        stability_core::aero::Table::new(vec![0.5, 0.7], vec![3.0, 3.2]).unwrap(),
+    tabled.aero.lift_slope = stability_core::aerodynamics::models::aero::Source::Table(
+        stability_core::aerodynamics::models::aero::Table::new(vec![0.5, 0.7], vec![3.0, 3.2])
+            .unwrap(),
     );
     let t = evaluate(&tabled).unwrap().coefficients;
     assert!((t.lift_slope.value - 3.1).abs() < 1e-12);

@@ -13,8 +13,8 @@
 mod convergence;
 
 use serde_json::Value;
+use stability_core::aerodynamics::lifting_surface::LatticeSpec;
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::LatticeSpec;
 
 fn cases() -> Vec<(String, Trapezoid, f64, f64, Vec<f64>)> {
     let f: Value =

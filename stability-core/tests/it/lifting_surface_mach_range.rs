@@ -9,16 +9,18 @@
 //! subsonic-leading-edge warning; and the approach to M = 1 from both
 //! sides (`docs/lattice-near-sonic.md`, "Across M = 1").
 
-use stability_core::aero::lifting_surface_steady;
-use stability_core::damping::{DampingError, Theory, WingInput, damping_derivatives};
-use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::mach_box::{self as mach_box, MachBoxSpec};
-use stability_core::lifting_surface::mach_range::{
+use stability_core::aerodynamics::damping::{DampingError, Theory, WingInput, damping_derivatives};
+use stability_core::aerodynamics::lifting_surface::mach_box::{self as mach_box, MachBoxSpec};
+use stability_core::aerodynamics::lifting_surface::mach_range::{
     MACH_BOX_STEP, MACH_BOX_VERIFIED_BETA_COT, Method, coefficients, first_mach_box_mach, solution,
     sonic_steady, steady,
 };
-use stability_core::lifting_surface::{Harmonic, LiftingSurfaceError, Solution, store};
-use stability_core::warnings::Warning;
+use stability_core::aerodynamics::lifting_surface::{
+    Harmonic, LiftingSurfaceError, Solution, store,
+};
+use stability_core::aerodynamics::models::aero::lifting_surface_steady;
+use stability_core::aerodynamics::warnings::Warning;
+use stability_core::geometry::{Planform, Size, Trapezoid};
 use std::f64::consts::PI;
 
 fn planform(deg: f64) -> Planform {

@@ -6,15 +6,15 @@
 //! α̇ derivatives with the coefficient of (36)'s near-sonic form from the
 //! supersonic side. Tables: `docs/lattice-near-sonic.md`.
 
-use stability_core::damping::mangler_k;
-use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::mach_range::first_mach_box_mach;
-use stability_core::lifting_surface::store as mach_box;
-use stability_core::lifting_surface::{
+use stability_core::aerodynamics::damping::mangler_k;
+use stability_core::aerodynamics::lifting_surface::mach_range::first_mach_box_mach;
+use stability_core::aerodynamics::lifting_surface::store as mach_box;
+use stability_core::aerodynamics::lifting_surface::{
     Lattice, LatticeSpec, LiftingSurfaceError, Solution, Spacing, near_sonic, sonic_limit,
 };
-use stability_core::supersonic::Wing;
-use stability_core::supersonic::transonic::z_wdot_eq36_near_sonic;
+use stability_core::aerodynamics::supersonic::Wing;
+use stability_core::aerodynamics::supersonic::transonic::z_wdot_eq36_near_sonic;
+use stability_core::geometry::Trapezoid;
 use std::f64::consts::PI;
 
 /// A true delta of leading-edge sweep `deg`, root chord 1.
@@ -311,9 +311,9 @@ fn outside_its_range_near_sonic_says_what_to_do() {
 
 #[test]
 fn the_cache_serves_near_sonic_direct_and_interpolated() {
-    use stability_core::lifting_surface::near_sonic::SONIC_ANCHORS;
-    use stability_core::lifting_surface::solution::Solver;
-    use stability_core::lifting_surface::store::{self, Harmonic};
+    use stability_core::aerodynamics::lifting_surface::near_sonic::SONIC_ANCHORS;
+    use stability_core::aerodynamics::lifting_surface::solution::Solver;
+    use stability_core::aerodynamics::lifting_surface::store::{self, Harmonic};
     // Direct: the same numbers as near_sonic, solved once per (wing, M, ω̄)
     // — the anchors shared by every M above 0.99. Interpolated: the
     // refined lattices' frequency tables (cubic Lagrange between nodes

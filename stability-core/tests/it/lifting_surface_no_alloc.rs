@@ -4,8 +4,8 @@
 //! allocations of the thread that asked).
 
 use crate::allocations::allocations_in;
+use stability_core::aerodynamics::lifting_surface::{Lattice, LatticeSpec, Spacing};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{Lattice, LatticeSpec, Spacing};
 use std::hint::black_box;
 
 #[test]

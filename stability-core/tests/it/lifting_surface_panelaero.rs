@@ -11,8 +11,8 @@
 //! positive as an incidence), which its script checks.
 
 use serde_json::Value;
+use stability_core::aerodynamics::lifting_surface::{Lattice, LatticeSpec, LineRule, Spacing};
 use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::{Lattice, LatticeSpec, LineRule, Spacing};
 
 #[test]
 fn the_quartic_rule_is_panelaeros_method() {

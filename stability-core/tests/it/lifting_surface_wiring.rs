@@ -5,12 +5,12 @@
 //! differences of the solves themselves, and direct solves between the
 //! table's nodes.
 
-use stability_core::geometry::Trapezoid;
-use stability_core::lifting_surface::frequency::NODES;
-use stability_core::lifting_surface::{
+use stability_core::aerodynamics::lifting_surface::frequency::NODES;
+use stability_core::aerodynamics::lifting_surface::{
     Extrapolation, FrequencyTable, Harmonic, Lattice, LatticeSpec, OMEGA_BAR_QUASI_STEADY,
     Solution, Spacing, store,
 };
+use stability_core::geometry::Trapezoid;
 
 fn note_delta(deg: f64, taper: f64) -> Trapezoid {
     let t = deg.to_radians().tan();

@@ -5,10 +5,10 @@
 //! edged delta's lift slope, 4/β (Puckett & Stewart 1947); and the
 //! quasi-steady Mach derivatives `mach_range::steady` takes from it.
 
+use stability_core::aerodynamics::lifting_surface::mach_range::steady;
+use stability_core::aerodynamics::lifting_surface::store::mach_box as solution;
+use stability_core::aerodynamics::lifting_surface::{Solution, mach_table};
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::mach_range::steady;
-use stability_core::lifting_surface::store::mach_box as solution;
-use stability_core::lifting_surface::{Solution, mach_table};
 
 fn wing(deg: f64, taper: f64) -> Trapezoid {
     let p = Planform::new(deg.to_radians(), taper, Size::RootChord(1.0)).unwrap();

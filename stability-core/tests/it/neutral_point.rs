@@ -8,11 +8,13 @@
 //! E = (μ₁/i_B)C_L(m_w z_u − z_w m_u) with eqs 10, 13, 14: E = 0 where
 //! (h − H₀)(z_u + M C_L a′/a) = M C_L H₀′, and z_u + M C_L a′/a = −2C_L).
 
-use stability_core::aero::{AeroModel, AeroModelName, lifting_surface_steady};
-use stability_core::case::{Case, DampingModel, evaluate_point};
-use stability_core::damping::Theory;
-use stability_core::study::report_wing;
-use stability_core::sweep::{Axes, Sweep};
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::models::aero::{
+    AeroModel, AeroModelName, lifting_surface_steady,
+};
+use stability_core::design::case::{Case, DampingModel, evaluate_point};
+use stability_core::design::study::report_wing;
+use stability_core::design::sweep::{Axes, Sweep};
 
 fn case(deg: f64, mach: f64, damping: DampingModel, aero: AeroModelName) -> Case {
     Case {

@@ -19,15 +19,15 @@ use std::hint::black_box;
 /// The lifting surface's design points: damping and coefficients, at a
 /// given ω̄, and iterated (directly and interpolated).
 fn lifting_surface_cases() -> Vec<LiftingCase> {
-    use stability_core::aero::{AeroModel, AeroModelName};
-    use stability_core::case::{Case, DampingModel};
-    use stability_core::damping::Theory;
-    use stability_core::lifting_surface::Harmonic;
+    use stability_core::aerodynamics::damping::Theory;
+    use stability_core::aerodynamics::lifting_surface::Harmonic;
+    use stability_core::aerodynamics::models::aero::{AeroModel, AeroModelName};
+    use stability_core::design::case::{Case, DampingModel};
     let at = |deg: f64, mach: f64, t: Theory, omega_bar: Option<f64>| Case {
         damping: DampingModel::Theory(t),
         aero: AeroModel::default().with_name(AeroModelName::LiftingSurface),
         omega_bar,
-        ..stability_core::study::report_wing(deg, mach)
+        ..stability_core::design::study::report_wing(deg, mach)
     };
     vec![
         (
@@ -61,12 +61,12 @@ fn the_hot_path_does_not_allocate() {
 }
 
 type LiftingCase = (
-    stability_core::case::Case,
-    stability_core::lifting_surface::Harmonic,
+    stability_core::design::case::Case,
+    stability_core::aerodynamics::lifting_surface::Harmonic,
 );
 
 fn hot_path(lifting: &[LiftingCase]) -> f64 {
-    let d = stability_core::examples::tailless_delta_45_coupled();
+    let d = stability_core::design::examples::tailless_delta_45_coupled();
     let mut acc = 0.0;
     for i in 0..1000 {
         let mut di = d;
@@ -74,7 +74,7 @@ fn hot_path(lifting: &[LiftingCase]) -> f64 {
         let q = Quartic::from_derivatives(black_box(&di));
         let g = QuarticGradient::of(black_box(&di));
         acc += q.b + g.rows[5][1];
-        let r = stability_core::roots::solve_quartic(q.to_array()).expect("roots");
+        let r = stability_core::numerics::roots::solve_quartic(q.to_array()).expect("roots");
         let a = stability_core::analysis::Analysis::of(black_box(&di)).expect("analysis");
         let lean = stability_core::analysis::Analysis::without_classical(black_box(&di))
             .expect("analysis");
@@ -90,8 +90,8 @@ fn hot_path(lifting: &[LiftingCase]) -> f64 {
 }
 
 fn design_points(lifting: &[LiftingCase]) -> f64 {
-    use stability_core::case::{DampingModel, evaluate};
-    use stability_core::damping::Theory;
+    use stability_core::aerodynamics::damping::Theory;
+    use stability_core::design::case::{DampingModel, evaluate};
     use stability_core::geometry::{Planform, Size};
     let supersonic = DampingModel::Theory(Theory::Supersonic);
     let mut warned = 0;
@@ -117,7 +117,7 @@ fn design_points(lifting: &[LiftingCase]) -> f64 {
         ),
         (45.0, 0.0, 0.9, DampingModel::Theory(Theory::Garrick)),
     ] {
-        let mut case = stability_core::study::report_wing(deg, mach);
+        let mut case = stability_core::design::study::report_wing(deg, mach);
         case.planform =
             Planform::new(f64::to_radians(deg), taper, Size::RootChord(10.0)).expect("a planform");
         case.damping = damping;
@@ -127,7 +127,7 @@ fn design_points(lifting: &[LiftingCase]) -> f64 {
     }
     assert!(warned > 0, "the cases raise warnings too");
     for (case, harmonic) in lifting {
-        let r = stability_core::case::evaluate_point_with(black_box(case), *harmonic)
+        let r = stability_core::design::case::evaluate_point_with(black_box(case), *harmonic)
             .expect("a design point");
         acc += r.analysis.quartic.e + r.derivatives.m_q;
     }

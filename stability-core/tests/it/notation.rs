@@ -5,7 +5,9 @@
 
 use proptest::prelude::*;
 use stability_core::analysis::Analysis;
-use stability_core::notation::{N_ROWS, Notation, Values, derivatives_from_report, row, tables};
+use stability_core::data::notation::{
+    N_ROWS, Notation, Values, derivatives_from_report, row, tables,
+};
 
 fn report_values(seed: [f64; N_ROWS]) -> Values {
     let mut v = [None; N_ROWS];
@@ -143,8 +145,8 @@ fn the_boeing_747_of_etkin_and_reid() {
 /// target notation; so is a non-finite input.
 #[test]
 fn a_conversion_never_returns_a_non_finite_value() {
-    use stability_core::examples::tailless_delta_45;
-    use stability_core::notation::{NotationError, report_values};
+    use stability_core::data::notation::{NotationError, report_values};
+    use stability_core::design::examples::tailless_delta_45;
     let ribner = Notation::named("ribner").unwrap();
     let mut d = tailless_delta_45();
     d.z_q = 1e308; // C_Lq = −2z_q overflows

@@ -9,7 +9,7 @@
 use crate::support;
 
 use num_complex::Complex64;
-use stability_core::roots::solve_quartic;
+use stability_core::numerics::roots::solve_quartic;
 use support::{case_error, cases as read};
 
 fn cases() -> Vec<support::Case> {

@@ -13,7 +13,7 @@ use crate::allocations::allocations_in;
 use crate::support;
 use num_complex::Complex64;
 use proptest::prelude::*;
-use stability_core::roots::{RootsError, solve_quartic, solve_quartics};
+use stability_core::numerics::roots::{RootsError, solve_quartic, solve_quartics};
 use support::{case_error, cases};
 
 type Answer = Result<[Complex64; 4], RootsError>;

@@ -27,7 +27,7 @@ use num_complex::Complex64;
 use proptest::prelude::*;
 use stability_core::Quartic;
 use stability_core::criteria::Routh;
-use stability_core::roots::{RootsError, TOLERANCE, solve_quartic};
+use stability_core::numerics::roots::{RootsError, TOLERANCE, solve_quartic};
 
 /// |P(z)|/Σ|cₖ||z|^(4−k) with z = 2^k·x, |x| ~ 1, and each term cₘzᵐ
 /// divided by a common power of two: no overflow, and no underflow of a

@@ -16,9 +16,9 @@
 //! flight (the report's trimmed aircraft, eq 13). Then x_u = ∂(X/½ρV²S)/∂û,
 //! x_w = ∂(X/½ρV²S)/∂ŵ, and so on (the report's ½ρSV normalisation).
 
-use stability_core::aero::{AeroModel, Coefficients, level_flight_lift};
+use stability_core::aerodynamics::models::aero::{AeroModel, Coefficients, level_flight_lift};
+use stability_core::aerodynamics::models::stiffness::stiffness;
 use stability_core::geometry::{Planform, Size};
-use stability_core::stiffness::stiffness;
 
 /// (X, Z, M) on ½ρV²S (M also on c̄) at the disturbance (û, ŵ).
 fn forces(

@@ -1,12 +1,12 @@
-//! The supersonic-edge theory (stability_core::supersonic) against its
+//! The supersonic-edge theory (stability_core::aerodynamics::supersonic) against its
 //! independent routes: the direct source integral at every receiver
 //! (`supersonic::source`), the closed forms (the true delta's strip
 //! integrals, the cropped delta's lift slope), the limits — eq (36) at the
 //! sonic leading edge, Ackeret's two-dimensional plate at large aspect
 //! ratio — and the exact two-dimensional oscillatory theory.
 
-use stability_core::damping::mangler_k;
-use stability_core::supersonic::{
+use stability_core::aerodynamics::damping::mangler_k;
+use stability_core::aerodynamics::supersonic::{
     self, Derivatives, EdgeRegime, PotentialIntegrals, SupersonicError, Wing, evvard, source,
     strip, transonic, wave_drag,
 };

@@ -5,15 +5,15 @@
 //! the 60° delta at exactly M = 2, the low-frequency rule's warnings, and
 //! the two fairings.
 
-use stability_core::aero::{AeroModel, Origin, Source, Table, defaults};
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::models::aero::{AeroModel, Origin, Source, Table, defaults};
+use stability_core::aerodynamics::models::stiffness::stiffness;
+use stability_core::aerodynamics::supersonic::{self, EdgeRegime, Wing, strip, transonic};
+use stability_core::aerodynamics::warnings::Warning;
 use stability_core::analysis::Analysis;
-use stability_core::case::{Case, CaseResult, DampingModel, evaluate};
-use stability_core::damping::Theory;
+use stability_core::design::case::{Case, CaseResult, DampingModel, evaluate};
+use stability_core::design::study::report_wing;
 use stability_core::geometry::{Planform, Size};
-use stability_core::stiffness::stiffness;
-use stability_core::study::report_wing;
-use stability_core::supersonic::{self, EdgeRegime, Wing, strip, transonic};
-use stability_core::warnings::Warning;
 
 const SUPERSONIC: DampingModel = DampingModel::Theory(Theory::Supersonic);
 
@@ -49,15 +49,19 @@ fn the_case_takes_a_and_h0_from_the_supersonic_theory_with_exact_mach_derivative
             assert_eq!(c.aerodynamic_centre.value, t.aerodynamic_centre);
             assert_eq!(
                 c.origin.lift_slope,
-                Origin::DampingModel(stability_core::aero::OwnTheory::Theory(
-                    stability_core::damping::Theory::Supersonic
-                ))
+                Origin::DampingModel(
+                    stability_core::aerodynamics::models::aero::OwnTheory::Theory(
+                        stability_core::aerodynamics::damping::Theory::Supersonic
+                    )
+                )
             );
             assert_eq!(
                 c.origin.aerodynamic_centre,
-                Origin::DampingModel(stability_core::aero::OwnTheory::Theory(
-                    stability_core::damping::Theory::Supersonic
-                ))
+                Origin::DampingModel(
+                    stability_core::aerodynamics::models::aero::OwnTheory::Theory(
+                        stability_core::aerodynamics::damping::Theory::Supersonic
+                    )
+                )
             );
             assert_eq!(c.origin.zero_lift_drag, Origin::Method);
             // z_w, m_w from the same a and H₀ (eqs 12, 14)
@@ -140,9 +144,11 @@ fn tables_win_and_method_opts_out() {
     let f = eval(45.0, 0.0, 1.2, DampingModel::FairedTheories);
     assert_eq!(
         f.coefficients.origin.lift_slope,
-        Origin::DampingModel(stability_core::aero::OwnTheory::Theory(
-            stability_core::damping::Theory::Supersonic
-        ))
+        Origin::DampingModel(
+            stability_core::aerodynamics::models::aero::OwnTheory::Theory(
+                stability_core::aerodynamics::damping::Theory::Supersonic
+            )
+        )
     );
     let json = serde_json::to_value(r.coefficients.origin).unwrap();
     assert_eq!(json["lift_slope"], "table");

@@ -1,4 +1,4 @@
-//! The Mach box method at any frequency (stability_core::supersonic::
+//! The Mach box method at any frequency (stability_core::aerodynamics::supersonic::
 //! oscillatory) against independent references: the exact reverse-flow
 //! loads of supersonic-edged deltas and the oscillating plate
 //! (scripts/supersonic_oscillatory_reference.py, mpmath, fixture
@@ -6,12 +6,12 @@
 //! theories (supersonic::edge_theory) as ω̄ → 0, the exact steady
 //! rectangle and piston theory at high Mach number.
 
+use stability_core::aerodynamics::lifting_surface::Solution;
+use stability_core::aerodynamics::lifting_surface::mach_box::{MachBoxError, MachBoxSpec, solve};
+use stability_core::aerodynamics::lifting_surface::solution::Solver;
+use stability_core::aerodynamics::lifting_surface::store;
+use stability_core::aerodynamics::supersonic::{Wing, edge_theory};
 use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::Solution;
-use stability_core::lifting_surface::mach_box::{MachBoxError, MachBoxSpec, solve};
-use stability_core::lifting_surface::solution::Solver;
-use stability_core::lifting_surface::store;
-use stability_core::supersonic::{Wing, edge_theory};
 
 fn fixture() -> Vec<serde_json::Value> {
     let text = std::fs::read_to_string(concat!(

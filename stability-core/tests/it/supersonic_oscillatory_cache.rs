@@ -4,11 +4,11 @@
 //! direct solve it keeps near M = 1, where the cubic between the nodes is
 //! not good enough.
 
-use stability_core::geometry::{Planform, Size, Trapezoid};
-use stability_core::lifting_surface::store::{
+use stability_core::aerodynamics::lifting_surface::store::{
     INTERPOLATED_FROM_BETA, mach_box_with as solution_with,
 };
-use stability_core::lifting_surface::{Harmonic, Solution};
+use stability_core::aerodynamics::lifting_surface::{Harmonic, Solution};
+use stability_core::geometry::{Planform, Size, Trapezoid};
 
 fn delta(deg: f64) -> Trapezoid {
     let p = Planform::new(deg.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();

@@ -1,4 +1,4 @@
-//! The library sweep (`stability_core::sweep`): each point's values are
+//! The library sweep (`stability_core::design::sweep`): each point's values are
 //! those `case::evaluate_point` gives that design point alone — for the
 //! slender and faired models (the faired model's frequency iteration
 //! interpolated in the lattice's tables), the lifting surface (solved once per planform
@@ -6,12 +6,12 @@
 //! iteration (with direct solves exactly; interpolated within the table's
 //! accuracy) — its errors are the points', and the columns line up.
 
-use stability_core::aero::{AeroModel, AeroModelName};
-use stability_core::case::{Case, DampingModel, evaluate_point, evaluate_point_with};
-use stability_core::damping::Theory;
-use stability_core::lifting_surface::Harmonic;
-use stability_core::study::report_wing;
-use stability_core::sweep::{Axes, PointError, Points, Sweep, SweepError};
+use stability_core::aerodynamics::damping::Theory;
+use stability_core::aerodynamics::lifting_surface::Harmonic;
+use stability_core::aerodynamics::models::aero::{AeroModel, AeroModelName};
+use stability_core::design::case::{Case, DampingModel, evaluate_point, evaluate_point_with};
+use stability_core::design::study::report_wing;
+use stability_core::design::sweep::{Axes, PointError, Points, Sweep, SweepError};
 
 fn base(damping: DampingModel, aero: AeroModelName) -> Case {
     Case {
@@ -56,7 +56,7 @@ fn assert_alone(sweep: &Sweep, points: &Points, harmonic: Harmonic, tol: f64) {
                     close(points.sp_im[i], sp.map_or(nan, |m| m.im)),
                     "point {i} sp_im"
                 );
-                let overall = stability_core::verdict::overall(&r.analysis);
+                let overall = stability_core::analysis::verdict::overall(&r.analysis);
                 assert_eq!(points.verdict[i], Some(overall), "point {i}");
                 assert_eq!(points.stable[i], Some(r.analysis.routh.stable), "point {i}");
                 let ds = points.derivatives.as_ref().unwrap();
@@ -260,7 +260,7 @@ fn bad_grids_are_errors_of_the_sweep() {
 /// case, and τ scales as 1/M (C_L·M² constant, eq 24).
 #[test]
 fn a_physical_sweep_gives_each_planform_its_own_flight_parameters() {
-    use stability_core::flight::{Air, Altitude, FlightCondition, Mass, Units};
+    use stability_core::design::flight::{Air, Altitude, FlightCondition, Mass, Units};
     let flight = FlightCondition {
         units: Units::Si,
         air: Air::Standard(Altitude::Pressure(11_000.0)),

@@ -7,9 +7,9 @@ use rand::SeedableRng;
 use rand::rngs::ChaCha12Rng;
 use rand_distr::{Distribution, LogNormal, Normal, Uniform};
 use stability_core::analysis::Analysis;
-use stability_core::case::{Case, DampingModel, evaluate};
 use stability_core::criteria::Verdict;
-use stability_core::study::report_wing;
+use stability_core::design::case::{Case, DampingModel, evaluate};
+use stability_core::design::study::report_wing;
 use stability_core::uncertainty::{
     Dist, ErrorKind, Input, Options, Quantity, Sampling, Study, Summary,
 };
@@ -159,7 +159,8 @@ fn the_probabilities_agree_with_a_plain_loop_monte_carlo() {
         };
         let a = Analysis::of(&d).unwrap();
         met += u64::from(a.verdict.is_met());
-        divergent += u64::from(stability_core::verdict::overall(&a) == Verdict::Divergent);
+        divergent +=
+            u64::from(stability_core::analysis::verdict::overall(&a) == Verdict::Divergent);
         if let Some(z) = a.modes.short_period().and_then(|m| m.damping_ratio) {
             zeta.push(z);
         }

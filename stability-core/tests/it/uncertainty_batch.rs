@@ -8,8 +8,8 @@
 //! Sobol′ points, with and without the indices, a sample count that
 //! leaves a short block and a short chunk, and two damping theories.
 
-use stability_core::case::{Case, DampingModel};
-use stability_core::study::report_wing;
+use stability_core::design::case::{Case, DampingModel};
+use stability_core::design::study::report_wing;
 use stability_core::uncertainty::{
     Dist, ErrorKind, Input, Options, Quantity, Sampling, Study, Summary,
 };

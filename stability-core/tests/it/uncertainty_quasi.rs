@@ -6,9 +6,9 @@
 //! and the same bits on 1, 2 and 8 threads.
 
 use stability_core::analysis::Analysis;
-use stability_core::case::{Case, DampingModel, evaluate};
 use stability_core::criteria::Verdict;
-use stability_core::study::report_wing;
+use stability_core::design::case::{Case, DampingModel, evaluate};
+use stability_core::design::study::report_wing;
 use stability_core::uncertainty::{
     Dist, ErrorKind, Input, Options, Quantity, Sampling, Study, Summary,
 };

@@ -56,13 +56,13 @@ use crate::input::datcom::Datcom;
 use crate::input::toml_error;
 use crate::limits;
 use raw::{RawConfig, RawModel, RawPlanform};
-use stability_core::aero::{AeroError, AeroModel, AeroModelName};
-use stability_core::cap::AirplaneClass;
-use stability_core::case::{Case, CaseError, DampingModel};
-use stability_core::damping::DampingError;
-use stability_core::display::{Num, sig};
+use stability_core::aerodynamics::damping::DampingError;
+use stability_core::aerodynamics::lifting_surface::LiftingSurfaceError;
+use stability_core::aerodynamics::models::aero::{AeroError, AeroModel, AeroModelName};
+use stability_core::criteria::cap::AirplaneClass;
+use stability_core::design::case::{Case, CaseError, DampingModel};
 use stability_core::geometry::{GeometryError, Planform, Size};
-use stability_core::lifting_surface::LiftingSurfaceError;
+use stability_core::numerics::display::{Num, sig};
 use std::ops::Range;
 use std::path::Path;
 use toml::Spanned;
@@ -89,7 +89,7 @@ pub struct Config {
     /// The tailplane, foreplane and body (`[tailplane]`, `[foreplane]`,
     /// `[body]`), if any is given; the case's model carries it too
     /// (`case.aero.configuration`).
-    pub configuration: Option<stability_core::configuration::Configuration>,
+    pub configuration: Option<stability_core::geometry::configuration::Configuration>,
     text: String,
     /// Where each value (and table) was written: field and span.
     spans: Vec<(String, Range<usize>)>,
@@ -441,12 +441,19 @@ impl Config {
             ("aerodynamic_centre", &self.tables.aerodynamic_centre),
         ]
         .into_iter()
-        .filter(|(_, s)| matches!(s, stability_core::aero::Source::Table(_)))
+        .filter(|(_, s)| {
+            matches!(
+                s,
+                stability_core::aerodynamics::models::aero::Source::Table(_)
+            )
+        })
         .map(|(n, _)| n.to_string())
         .chain(self.tables.derivatives.0.iter().map(|t| {
             let mode = match t.mode {
-                stability_core::derivative_tables::Mode::Value => "value",
-                stability_core::derivative_tables::Mode::Increment => "increment",
+                stability_core::aerodynamics::models::derivative_tables::Mode::Value => "value",
+                stability_core::aerodynamics::models::derivative_tables::Mode::Increment => {
+                    "increment"
+                }
             };
             match t.reference_cg {
                 Some(h) => format!("{} ({mode}, about h = {})", t.name, sig(h, 3)),

@@ -9,9 +9,9 @@ use crate::Failure;
 use crate::diag::InputError;
 use crate::input::datcom::Datcom;
 use crate::limits;
-use stability_core::aero::{AeroModelName, Source};
-use stability_core::case::DampingModel;
-use stability_core::display::Num;
+use stability_core::aerodynamics::models::aero::{AeroModelName, Source};
+use stability_core::design::case::DampingModel;
+use stability_core::numerics::display::Num;
 
 /// Values that replace a config's.
 #[derive(Debug, Default, Clone)]

@@ -15,7 +15,7 @@
 //!
 //! With the planform's area S and M.A.C. c̄ (its size read in the same
 //! units) these give μ₁ = m/(½ρSc̄), i_B = I_y/(mc̄²) and C_L·M² =
-//! W/(½ρa²S) ([`stability_core::flight`]), and at each Mach number V = M·a,
+//! W/(½ρa²S) ([`stability_core::design::flight`]), and at each Mach number V = M·a,
 //! C_L and τ = m/(½ρSV), so that results come in seconds too. A quantity
 //! given in both forms (`mu1` and `mass`, say) is an error naming both.
 
@@ -23,12 +23,12 @@ use super::Reader;
 use super::raw::RawFlight;
 use crate::diag::{InputError, quote};
 use crate::limits;
-use stability_core::case::Case;
-use stability_core::display::Num;
-use stability_core::flight::{
+use stability_core::design::case::Case;
+use stability_core::design::flight::{
     Air, Altitude, FlightCondition, FlightError, FlightInput, Mass, PhysicalFlight, Units,
 };
 use stability_core::geometry::Planform;
+use stability_core::numerics::display::Num;
 use std::ops::Range;
 use toml::Spanned;
 

@@ -20,7 +20,10 @@ use super::Reader;
 use super::raw::{RawBody, RawConfig, RawSurface};
 use crate::diag::InputError;
 use crate::limits::{self, Limit};
-use stability_core::configuration::{Body, Configuration, Surface, SurfaceKind};
+use stability_core::geometry::configuration::Body;
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::Surface;
+use stability_core::geometry::configuration::SurfaceKind;
 use stability_core::geometry::{Planform, Trapezoid};
 use toml::Spanned;
 

@@ -5,7 +5,7 @@
 //! cell of a row that is not a number is an error at its line and column.
 //!
 //! A table is of a coefficient of §6 ([`COEFFICIENTS`]) or of a derivative
-//! of the report's notation ([`stability_core::derivative_tables::NAMES`],
+//! of the report's notation ([`stability_core::aerodynamics::models::derivative_tables::NAMES`],
 //! `z_ẇ` and `m_ẇ` also so spelt), the latter with `mode = "value"` (the
 //! default) or `"increment"` and, optionally, `cg = h`, the c.g. its values
 //! are about.
@@ -15,8 +15,10 @@ use crate::Failure;
 use crate::diag::{InputError, quote};
 use crate::input::suggest::did_you_mean;
 use crate::limits;
-use stability_core::aero::{AeroError, AeroModel, Source, Table};
-use stability_core::derivative_tables::{self, DerivativeTable, Mode, Outside};
+use stability_core::aerodynamics::models::aero::{AeroError, AeroModel, Source, Table};
+use stability_core::aerodynamics::models::derivative_tables::{
+    self, DerivativeTable, Mode, Outside,
+};
 use toml::Spanned;
 
 /// The coefficients of §6 a table may give.
@@ -369,12 +371,12 @@ mod derivative_table_tests {
         assert_eq!(d[0].name, "m_wdot");
         assert_eq!(
             d[0].mode,
-            stability_core::derivative_tables::Mode::Increment
+            stability_core::aerodynamics::models::derivative_tables::Mode::Increment
         );
         assert_eq!(d[0].reference_cg, Some(0.0));
         assert!(matches!(
             c.case.aero.lift_slope,
-            stability_core::aero::Source::Table(_)
+            stability_core::aerodynamics::models::aero::Source::Table(_)
         ));
     }
 }

@@ -8,11 +8,11 @@ use super::dimensional_notation::DimensionalFile;
 use super::{DerivativeFile, rows};
 use crate::diag::InputError;
 use stability_core::Derivatives;
+use stability_core::analysis::engineering::Engineering;
 use stability_core::analysis::{Analysis, AnalysisError};
-use stability_core::cap::{AirplaneClass, n_alpha_dimensional};
-use stability_core::dimensional::DimensionalAnalysis;
-use stability_core::engineering::Engineering;
-use stability_core::linear::{Control, LinearModel};
+use stability_core::criteria::cap::{AirplaneClass, n_alpha_dimensional};
+use stability_core::data::dimensional::DimensionalAnalysis;
+use stability_core::dynamics::linear::{Control, LinearModel};
 
 /// The message of an analysis whose numbers overflow.
 pub const OVERFLOW: &str = "the analysis overflows f64: no result can be written";

@@ -12,9 +12,9 @@ use crate::Failure;
 use crate::diag::InputError;
 use stability_core::Derivatives;
 use stability_core::analysis::Dimensional;
-use stability_core::display::Num;
-use stability_core::notation::avl::{self as st, AvlError, StFile};
-use stability_core::notation::{N_ROWS, report_values, tables};
+use stability_core::data::notation::avl::{self as st, AvlError, StFile};
+use stability_core::data::notation::{N_ROWS, report_values, tables};
+use stability_core::numerics::display::Num;
 use std::path::Path;
 
 /// The notation AVL's output is read in (`st_file`), never written.

@@ -9,8 +9,8 @@ use super::rows::{I_B, MU};
 use super::{DerivativeFile, Origin, Reading};
 use crate::diag::InputError;
 use stability_core::Derivatives;
-use stability_core::display::Num;
-use stability_core::notation::{N_ROWS, Notation, derivatives_from_report, row, tables};
+use stability_core::data::notation::{N_ROWS, Notation, derivatives_from_report, row, tables};
+use stability_core::numerics::display::Num;
 
 /// The error at a row's origin (or at the notation, when it has none).
 fn at_origin(cx: &Ctx<'_>, raw: &RawFile, origin: &Option<Origin>, message: String) -> InputError {

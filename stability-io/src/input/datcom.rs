@@ -3,7 +3,7 @@
 //! ANGLE OF ATTACK AND IN SIDESLIP`: CD, CLA, CMA, … per degree) and the
 //! dynamic one (`DYNAMIC DERIVATIVES`: CLQ, CMQ, CLAD, CMAD, … per degree)
 //! at α = 0, with the reference area, length and moment centre printed
-//! above each — the points of [`stability_core::datcom`], which makes them
+//! above each — the points of [`stability_core::data::datcom`], which makes them
 //! the tables of `[model.tables]` in the report's notation.
 //!
 //! The printout is FORTRAN's: a page starts with carriage control `1`,
@@ -25,9 +25,9 @@
 
 use crate::Failure;
 use crate::diag::{InputError, quote};
-use stability_core::datcom::{DatcomError, Point, Reference, Tables};
-use stability_core::display::{Num, sig};
+use stability_core::data::datcom::{DatcomError, Point, Reference, Tables};
 use stability_core::geometry::Planform;
+use stability_core::numerics::display::{Num, sig};
 use std::ops::Range;
 use std::path::Path;
 
@@ -75,7 +75,7 @@ impl Unit {
     fn per_degree(self, v: f64) -> f64 {
         match self {
             Unit::PerDegree => v,
-            Unit::PerRadian => v / stability_core::datcom::PER_RADIAN,
+            Unit::PerRadian => v / stability_core::data::datcom::PER_RADIAN,
         }
     }
 }
@@ -113,7 +113,7 @@ impl Datcom {
     pub fn load(path: &Path, planform: &Planform) -> Result<Datcom, Failure> {
         let text = crate::files::read_input(path)?;
         let output = parse(&path.display().to_string(), &text)?;
-        let tables = stability_core::datcom::tables(&output.points, planform, output.apex_x)
+        let tables = stability_core::data::datcom::tables(&output.points, planform, output.apex_x)
             .map_err(|e| located(&output.path, &text, &e))?;
         Ok(Datcom { output, tables })
     }
@@ -617,7 +617,7 @@ mod tests {
             let Ok(v) = cell.parse::<f64>() else {
                 return cell.to_string();
             };
-            let v = v * stability_core::datcom::PER_RADIAN;
+            let v = v * stability_core::data::datcom::PER_RADIAN;
             let e = if v == 0.0 {
                 0
             } else {
@@ -702,7 +702,7 @@ mod tests {
         use stability_core::geometry::Size;
         let p = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(10.0)).unwrap();
         let o = output();
-        let t = stability_core::datcom::tables(&o.points, &p, o.apex_x).unwrap();
+        let t = stability_core::data::datcom::tables(&o.points, &p, o.apex_x).unwrap();
         // XCG 3.333333, x̄ = 10/3: h_r = (3.333333 − 3.3333…)/6.6667 = −5e-8
         assert!((t.reference_cg + 5e-8).abs() < 1e-9, "{}", t.reference_cg);
         // a = 0.04505 per degree = 2.581175 per radian at M 0.2
@@ -718,9 +718,12 @@ mod tests {
         // computed value is kept; at M 1.0 and 1.4 it is DATCOM's
         let z_wdot = t.derivatives.0.iter().find(|d| d.name == "z_wdot").unwrap();
         assert_eq!(z_wdot.missing, [1.05, 1.1, 1.15, 1.2, 1.3]);
-        let d = stability_core::examples::tailless_delta_45();
+        let d = stability_core::design::examples::tailless_delta_45();
         let used = |m: f64| {
-            let one = stability_core::derivative_tables::DerivativeTables(vec![z_wdot.clone()]);
+            let one =
+                stability_core::aerodynamics::models::derivative_tables::DerivativeTables(vec![
+                    z_wdot.clone(),
+                ]);
             one.apply(&d, t.reference_cg, m).unwrap().0.z_wdot
         };
         assert_eq!(used(1.2), d.z_wdot);
@@ -728,7 +731,7 @@ mod tests {
         assert!((used(1.4) - 0.5 * 1.630e-2 * 180.0 / std::f64::consts::PI).abs() < 1e-12);
         // a planform of another size is refused, naming the reference
         let big = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(12.0)).unwrap();
-        let e = stability_core::datcom::tables(&o.points, &big, o.apex_x).unwrap_err();
+        let e = stability_core::data::datcom::tables(&o.points, &big, o.apex_x).unwrap_err();
         assert!(e.to_string().contains("reference area"), "{e}");
         // located at the flight-condition row of M 0.2 (line 119)
         let e = located("d.out", FILE, &e).to_string();

@@ -5,7 +5,7 @@
 use super::raw::{Ctx, RawDimensional};
 use crate::diag::InputError;
 use stability_core::analysis::Dimensional;
-use stability_core::display::Num;
+use stability_core::numerics::display::Num;
 use std::ops::Range;
 use toml::Spanned;
 

@@ -37,14 +37,14 @@ use crate::diag::{InputError, quote};
 use num_complex::Complex64;
 use serde::Deserialize;
 use stability_core::analysis::Analysis;
-use stability_core::dimensional::report::GAMMA0_NEGLIGIBLE;
-use stability_core::dimensional::{
+use stability_core::data::dimensional::report::GAMMA0_NEGLIGIBLE;
+use stability_core::data::dimensional::{
     Axes, DimensionalAnalysis, DimensionalDerivatives, DimensionalError, DimensionalModel, Form,
     Reference, Trim, Units,
 };
-use stability_core::display::Num;
-use stability_core::display::sig;
-use stability_core::notation::{Notation, report_values, tables};
+use stability_core::data::notation::{Notation, report_values, tables};
+use stability_core::numerics::display::Num;
+use stability_core::numerics::display::sig;
 use std::collections::BTreeMap;
 use std::ops::Range;
 use toml::Spanned;
@@ -659,7 +659,7 @@ impl DimensionalFile {
     /// modes (the general model's roots against eq (4)'s, in 1/s).
     fn dropped_warning(
         &self,
-        eq: &stability_core::dimensional::ReportEquivalent,
+        eq: &stability_core::data::dimensional::ReportEquivalent,
     ) -> Result<String, InputError> {
         let exact = self.analysis()?;
         // each root's move against the larger of the two roots' sizes: 0

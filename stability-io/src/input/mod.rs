@@ -45,7 +45,7 @@ use crate::Failure;
 use crate::diag::InputError;
 use stability_core::Derivatives;
 use stability_core::analysis::Dimensional;
-use stability_core::notation::{N_ROWS, Parameters, Values, tables};
+use stability_core::data::notation::{N_ROWS, Parameters, Values, tables};
 use std::ops::Range;
 use std::path::Path;
 

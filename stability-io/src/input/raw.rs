@@ -4,7 +4,7 @@
 use super::suggest::did_you_mean;
 use crate::diag::{InputError, quote};
 use serde::Deserialize;
-use stability_core::display::Num;
+use stability_core::numerics::display::Num;
 use std::collections::BTreeMap;
 use std::ops::Range;
 use toml::Spanned;

@@ -2,7 +2,7 @@
 //! resolved at compile time: a name that is not a row stops the build (no
 //! run-time fallback that could write a misspelt row into another).
 
-use stability_core::notation::tables::ROWS;
+use stability_core::data::notation::tables::ROWS;
 
 const fn same(a: &str, b: &str) -> bool {
     let (a, b) = (a.as_bytes(), b.as_bytes());

@@ -13,8 +13,8 @@ use super::rows::{C_D, DERIVATIVES, FLIGHT, I_B, MU, QUARTIC, X_Q, X_WDOT};
 use super::suggest::did_you_mean;
 use super::{Origin, Reading, notations};
 use crate::diag::{InputError, quote};
-use stability_core::display::Num;
-use stability_core::notation::{N_ROWS, Notation, NotationError, Parameters, Values, tables};
+use stability_core::data::notation::{N_ROWS, Notation, NotationError, Parameters, Values, tables};
+use stability_core::numerics::display::Num;
 
 /// Rows a notation may leave out, taken as 0, with the reason given in the
 /// warning that says so.
@@ -420,7 +420,7 @@ fn from_dimensional(dims: &Dims, report: &mut Values, origins: &mut [Option<Orig
 /// The notation (other than `ours`) a name belongs to, in words: a
 /// dimensional set's `X_u`, `U0` …, or another table's name.
 fn notation_of(key: &str, ours: Notation) -> Option<String> {
-    use stability_core::dimensional::DimensionalDerivatives;
+    use stability_core::data::dimensional::DimensionalDerivatives;
     if DimensionalDerivatives::NAMES.contains(&key) || ["U0", "W0", "theta0"].contains(&key) {
         return Some(
             "notation = \"dimensional\" (derivatives per unit mass and inertia, as CR-2144 prints them)"

@@ -11,8 +11,8 @@
 
 use stability_core::Derivatives;
 use stability_core::criteria::{Category, Level, phugoid_level, short_period_level};
-use stability_core::flight::FlightPoint;
-use stability_core::sweep::Points;
+use stability_core::design::flight::FlightPoint;
+use stability_core::design::sweep::Points;
 
 /// One point of a sweep, as a column reads it.
 #[derive(Debug, Clone, Copy)]

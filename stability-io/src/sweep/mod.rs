@@ -5,15 +5,15 @@
 //! table ([`columns::COLUMNS`]), numbers in their shortest round-trip
 //! form.
 //!
-//! The computation is the library's ([`stability_core::sweep`]).
+//! The computation is the library's ([`stability_core::design::sweep`]).
 
 use crate::config::physical::Physical;
 use crate::limits::{self, Limit};
-use stability_core::aero::{Source, TableOrigin};
-use stability_core::case::Case;
-use stability_core::display::{Num, sig};
-use stability_core::grid;
-use stability_core::sweep::{Axes, PointError, Sweep, SweepError};
+use stability_core::aerodynamics::models::aero::{Source, TableOrigin};
+use stability_core::design::case::Case;
+use stability_core::design::sweep::{Axes, PointError, Sweep, SweepError};
+use stability_core::numerics::display::{Num, sig};
+use stability_core::numerics::grid;
 
 pub mod columns;
 
@@ -220,7 +220,7 @@ pub fn axes(given: Given, base: &Case, physical: bool) -> Result<Axes, AxisError
 /// corners of the axes' ranges bound them, planform by planform. The
 /// message names the corner and what to do.
 pub fn check_flight_limits(sweep: &Sweep) -> Result<(), String> {
-    use stability_core::sweep::set_flight_value;
+    use stability_core::design::sweep::set_flight_value;
     let Some(base) = sweep.condition() else {
         return Ok(());
     };

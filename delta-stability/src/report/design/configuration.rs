@@ -4,8 +4,9 @@
 //! in pitch m_θ̇ = m_q + m_ẇ (docs/configurations.md).
 
 use super::Design;
-use stability_core::configuration::{Configuration, Surface};
-use stability_core::display::sig;
+use stability_core::geometry::configuration::Configuration;
+use stability_core::geometry::configuration::Surface;
+use stability_core::numerics::display::sig;
 use std::fmt::Write;
 
 /// The section's HTML (empty without a configuration).

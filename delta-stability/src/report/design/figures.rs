@@ -5,12 +5,12 @@
 //! aerodynamic centre beside the c.g., and every coefficient and
 //! derivative with its source. The boundaries drawn are read from the
 //! library's own definitions ([`stability_core::criteria`],
-//! [`stability_core::cap::regions`]), not restated.
+//! [`stability_core::criteria::cap::regions`]), not restated.
 
 use super::{Design, phugoid, short_period, times};
-use stability_core::cap::regions;
+use stability_core::criteria::cap::regions;
 use stability_core::criteria::{Category, Level, phugoid_level, short_period_level};
-use stability_core::modes::Mode;
+use stability_core::dynamics::modes::Mode;
 use stability_io::design_point::Results;
 use stability_io::plot::Plate;
 use stability_io::plot::short;
@@ -252,7 +252,7 @@ fn cap(d: &Design) -> Vec<Plate> {
         Category::A,
         d.class
             .class
-            .unwrap_or(stability_core::cap::AirplaneClass::IV),
+            .unwrap_or(stability_core::criteria::cap::AirplaneClass::IV),
     );
     for (k, r) in rs.iter().take(2).enumerate() {
         let l = k + 1;

@@ -17,9 +17,9 @@ pub mod figures;
 pub mod page;
 
 use rayon::prelude::*;
+use stability_core::dynamics::modes::Mode;
 use stability_core::geometry::sonic_leading_edge_mach;
-use stability_core::grid::grid;
-use stability_core::modes::Mode;
+use stability_core::numerics::grid::grid;
 use stability_io::class::ClassChoice;
 use stability_io::config::Config;
 use stability_io::design_point::{Results, at_mach};
@@ -206,7 +206,7 @@ pub fn phugoid(r: &Results) -> Option<&Mode> {
 
 /// A mode's times and rates in the design's unit: seconds (and rad/s)
 /// where τ is known, else τ (and 1/τ).
-pub fn times(r: &Results, m: &Mode) -> stability_core::modes::ModeTimes {
+pub fn times(r: &Results, m: &Mode) -> stability_core::dynamics::modes::ModeTimes {
     let t = m.times();
     r.tau().map_or(t, |tau| t.in_units_of(tau))
 }

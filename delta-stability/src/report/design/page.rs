@@ -7,9 +7,9 @@
 
 use super::{Design, phugoid, short_period, times};
 use stability_core::analysis::Timebase;
-use stability_core::display::sig;
-use stability_core::modes::Mode;
-use stability_core::verdict::Overall;
+use stability_core::analysis::verdict::Overall;
+use stability_core::dynamics::modes::Mode;
+use stability_core::numerics::display::sig;
 use stability_io::design_point::Results;
 use stability_io::plot::Plate;
 use stability_io::plot::{csv_field, num, short};
@@ -31,7 +31,7 @@ fn n(v: Option<f64>) -> String {
 
 /// A number in prose: `digits` significant figures, shortest form.
 fn g(x: f64, digits: usize) -> String {
-    stability_core::display::round_to(x, digits).to_string()
+    stability_core::numerics::display::round_to(x, digits).to_string()
 }
 
 /// The design, in words: planform, c.g., models, flight condition.
@@ -72,12 +72,12 @@ fn design(d: &Design) -> String {
 /// The overall verdict (every root judged) across Mach number.
 fn verdicts(d: &Design) -> String {
     let runs = d.runs(|r| {
-        stability_core::verdict::overall(&r.result.analysis)
+        stability_core::analysis::verdict::overall(&r.result.analysis)
             .as_str()
             .to_string()
     });
     let mut s = String::from(
-        "<h2 id=\"verdict\">Verdict across Mach number</h2><p>Every root judged (<code>stability_core::verdict</code>): <b>divergent</b> where any mode grows, <b>fails</b> where one is neutral or the short period takes more than one cycle to halve (§8), else <b>meets</b>.</p><ul>",
+        "<h2 id=\"verdict\">Verdict across Mach number</h2><p>Every root judged (<code>stability_core::analysis::verdict</code>): <b>divergent</b> where any mode grows, <b>fails</b> where one is neutral or the short period takes more than one cycle to halve (§8), else <b>meets</b>.</p><ul>",
     );
     for (what, a, b) in runs {
         let range = match a == b {
@@ -105,7 +105,7 @@ fn verdicts(d: &Design) -> String {
 /// The verdict's runs of Mach number, a line each, for the terminal.
 pub fn verdict_lines(d: &Design) -> String {
     let runs = d.runs(|r| {
-        stability_core::verdict::overall(&r.result.analysis)
+        stability_core::analysis::verdict::overall(&r.result.analysis)
             .as_str()
             .to_string()
     });
@@ -144,7 +144,7 @@ fn mode_cells(r: &Results, m: Option<&Mode>) -> String {
 /// The aperiodic roots (a pair split): each one's time to half or to
 /// double (×2).
 fn aperiodic(r: &Results) -> String {
-    use stability_core::modes::ModeName;
+    use stability_core::dynamics::modes::ModeName;
     let cells: Vec<String> = r
         .result
         .analysis

@@ -26,7 +26,7 @@
 //! # Use
 //! ```
 //! use stability_core::geometry::{Planform, Size, Trapezoid};
-//! use stability_core::lifting_surface::{Lattice, LatticeSpec};
+//! use stability_core::aerodynamics::lifting_surface::{Lattice, LatticeSpec};
 //! let delta = Planform::new(60f64.to_radians(), 0.0, Size::RootChord(1.0)).unwrap();
 //! let wing = Trapezoid::from(&delta);
 //! let lattice = Lattice::new(&wing, LatticeSpec::for_wing(&wing)).unwrap();

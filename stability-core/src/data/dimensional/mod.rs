@@ -29,7 +29,7 @@
 //! The 747 of NASA CR-2144, flight condition 9, body axes, as printed:
 //!
 //! ```
-//! use stability_core::dimensional::{
+//! use stability_core::data::dimensional::{
 //!     Axes, DimensionalAnalysis, DimensionalDerivatives, DimensionalModel, Reference, Trim, Units,
 //! };
 //! let model = DimensionalModel {

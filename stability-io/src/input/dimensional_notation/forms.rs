@@ -10,11 +10,11 @@ use super::{RawFile, Reader, unknown_name};
 use crate::diag::{InputError, quote};
 use crate::input::raw::Table;
 use crate::input::suggest::did_you_mean;
-use stability_core::dimensional::form::{ALPHA_NAMES, w_name_of};
-use stability_core::dimensional::{
+use stability_core::data::dimensional::form::{ALPHA_NAMES, w_name_of};
+use stability_core::data::dimensional::{
     Axes, DimensionalDerivatives, Form, Inertia, Printed, Trim, Units,
 };
-use stability_core::display::Num;
+use stability_core::numerics::display::Num;
 use std::ops::Range;
 
 /// The names a `[derivatives]` table may hold: the model's and the α form's.

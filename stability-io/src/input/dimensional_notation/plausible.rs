@@ -1,12 +1,12 @@
 //! Warnings for a set no aircraft has: derivatives off
 //! by orders from their class and roots faster than
-//! [`RATE_MAX`] s⁻¹ ([`stability_core::dimensional::form::implausible`]),
+//! [`RATE_MAX`] s⁻¹ ([`stability_core::data::dimensional::form::implausible`]),
 //! with the likely unit mistake named.
 
 use super::DimensionalFile;
-use stability_core::dimensional::form::{RATE_MAX, implausible};
-use stability_core::dimensional::{DimensionalAnalysis, Form};
-use stability_core::display::sig;
+use stability_core::data::dimensional::form::{RATE_MAX, implausible};
+use stability_core::data::dimensional::{DimensionalAnalysis, Form};
+use stability_core::numerics::display::sig;
 
 impl DimensionalFile {
     /// The warnings about magnitudes no aircraft has: at most one about the
