@@ -7,8 +7,8 @@ use crate::inputs::derivative_file;
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use stability_core::numerics::display::Num;
 use stability_core::dynamics::response::MAX_STEPS;
+use stability_core::numerics::display::Num;
 use stability_io::input::suggest::did_you_mean;
 use stability_io::response::{Disturbance, Given, Spec, respond};
 

@@ -61,9 +61,10 @@ pub fn sensitivity<'py>(
             )
         })?;
         let out = PyDict::new(py);
-        let col = |f: fn(&stability_core::dynamics::sensitivity::ModeSensitivity) -> f64| -> Vec<f64> {
-            s.iter().map(f).collect()
-        };
+        let col =
+            |f: fn(&stability_core::dynamics::sensitivity::ModeSensitivity) -> f64| -> Vec<f64> {
+                s.iter().map(f).collect()
+            };
         out.set_item("input", s.iter().map(|x| x.input).collect::<Vec<_>>())?;
         out.set_item("value", col(|x| x.value).into_pyarray(py))?;
         out.set_item("d_re", col(|x| x.d_re).into_pyarray(py))?;

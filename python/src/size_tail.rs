@@ -7,8 +7,8 @@ use crate::guard;
 use crate::overrides::{Model, overridden};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use stability_core::geometry::configuration::SurfaceKind;
 use stability_core::design::sizing::size_surface;
+use stability_core::geometry::configuration::SurfaceKind;
 use stability_io::diag::InputError;
 
 /// The smallest area of the config's `[tailplane]` (or, with

@@ -8,12 +8,14 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use pyo3::types::PyList;
-use stability_core::aerodynamics::models::aero::AeroModelName;
-use stability_core::design::case::DampingModel;
-use stability_core::aerodynamics::damping::{Theory, WingInput, damping_derivatives as theory_derivatives};
-use stability_core::geometry::{Planform, Size, Trapezoid};
+use stability_core::aerodynamics::damping::{
+    Theory, WingInput, damping_derivatives as theory_derivatives,
+};
 use stability_core::aerodynamics::lifting_surface::{Lattice, LatticeSpec};
+use stability_core::aerodynamics::models::aero::AeroModelName;
 use stability_core::aerodynamics::theory::Row;
+use stability_core::design::case::DampingModel;
+use stability_core::geometry::{Planform, Size, Trapezoid};
 use stability_io::input::suggest::did_you_mean;
 
 /// A true or cropped delta of leading-edge sweep `sweep` (degrees) and
@@ -191,7 +193,8 @@ pub fn lifting_surface<'py>(
             .map_err(|e| argument("cg", e))?;
         let out = PyDict::new(py);
         out.set_item("cg", cgs.clone().into_pyarray(py))?;
-        type Get = fn(&stability_core::aerodynamics::lifting_surface::LiftingSurfaceDerivatives) -> f64;
+        type Get =
+            fn(&stability_core::aerodynamics::lifting_surface::LiftingSurfaceDerivatives) -> f64;
         let columns: [(&str, Get); 10] = [
             ("lift_slope", |d| d.lift_slope),
             ("aerodynamic_centre", |d| d.aerodynamic_centre),
