@@ -113,7 +113,11 @@ fn differences(path: &str, got: &Value, want: &Value, out: &mut Vec<String>) {
         }
         (Value::Number(g), Value::Number(w)) => {
             let (g, w) = (g.as_f64().unwrap(), w.as_f64().unwrap());
-            if (g - w).abs() > 1e-12 * w.abs().max(1e-300) {
+            // 1e-10: the values are the command's, but the lattice's
+            // solution moves in its last bits with the wing's snapped
+            // shape (store::unit_wing), and the frequency iteration and
+            // the exact maximum's root solve amplify that to a few 1e-12
+            if (g - w).abs() > 1e-10 * w.abs().max(1e-300) {
                 out.push(format!("{path}: {g} vs {w}"));
             }
         }

@@ -75,7 +75,19 @@ pub fn unit_wing(
 /// within four units in the last place of it (the rounding a product and
 /// a quotient leave: 0.8000000000000002 is 0.8), else `x` itself.
 pub fn snapped(x: f64) -> f64 {
-    let Ok(decimal) = format!("{x:.11e}").parse::<f64>() else {
+    // formatted on the stack: the store's lookups are on the hot path,
+    // which allocates nothing
+    use std::io::Write;
+    let mut buf = [0u8; 40];
+    let mut out = std::io::Cursor::new(&mut buf[..]);
+    if write!(out, "{x:.11e}").is_err() {
+        return x;
+    }
+    let len = out.position() as usize;
+    let Some(decimal) = std::str::from_utf8(&buf[..len])
+        .ok()
+        .and_then(|s| s.parse::<f64>().ok())
+    else {
         return x;
     };
     let ulp = f64::from_bits(x.abs().to_bits() + 1) - x.abs();
