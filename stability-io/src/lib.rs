@@ -11,7 +11,7 @@
 //! | the `[control]` table (control derivatives) | [`control`] |
 //! | the state-space export: JSON, python-control and MATLAB scripts | [`state_space`] |
 //! | the guard every writer of results passes: no value that is not finite | [`finite`] |
-//! | the form a result is written in (text, JSON, CSV), chosen once, and the writers of whole results and of records | [`format`] |
+//! | the form a result is written in (text, JSON, CSV), chosen once, and the writers of whole results and of records | [`format`](mod@format) |
 //! | a sweep's axes, grid and rows, in the columns of one table | [`sweep`] |
 //! | figures (curves, bands, lines, labels) as SVG and their data as CSV | [`plot`] |
 //!

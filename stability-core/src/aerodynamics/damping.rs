@@ -43,8 +43,8 @@ impl From<&Planform> for WingInput {
 
 /// The lift slope and aerodynamic centre a damping model's own theory
 /// gives at one Mach number, each with its exact Mach derivative (eqs
-/// 27–29 need them): what [`Source::Default`] takes in place of the
-/// methods of [`defaults`], so that z_w, m_w come from the same theory as
+/// 27–29 need them): what [`Source::Default`](crate::aerodynamics::models::aero::Source::Default) takes in place of the
+/// methods of [`defaults`](crate::aerodynamics::models::defaults), so that z_w, m_w come from the same theory as
 /// z_q, m_q, z_ẇ, m_ẇ.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct TheoryCoefficients {

@@ -1,7 +1,7 @@
 //! Each part's share of a design point's derivatives (`analyze --json`'s
 //! `configuration` object): the wing's from the case's own models, the
 //! surfaces' and the body's from the configuration's increment
-//! ([`super::increment`]), about the case's c.g.; they sum to the totals
+//! ([`crate::aerodynamics::models::increment`]), about the case's c.g.; they sum to the totals
 //! the design point uses before the user's derivative tables.
 
 use crate::aerodynamics::lifting_surface::LiftingSurfaceError;

@@ -25,7 +25,7 @@
 //! damping model iterates ω̄, which depends on them
 //! ([`DampingModel::depends_on_mass`]). The lifting surface is solved once
 //! per (planform, Mach, ω̄), whatever the c.g., μ₁ or i_B
-//! ([`crate::aerodynamics::lifting_surface::cache`]); [`Sweep::prepare`] solves those in
+//! ([`crate::aerodynamics::lifting_surface::store`]); [`Sweep::prepare`] solves those in
 //! parallel before the points are evaluated. With
 //! `lifting-surface-frequency` each point's frequency iteration interpolates
 //! in the wing's [`crate::aerodynamics::lifting_surface::FrequencyTable`]

@@ -3,16 +3,16 @@
 //! addition of a forebody, foreplane, or tailplane or by cropping the wing
 //! tips".
 //!
-//! A configuration's aerodynamics come as the lattice's [`Solution`] (the
+//! A configuration's aerodynamics come as the lattice's [`Solution`](crate::aerodynamics::lifting_surface::Solution) (the
 //! response to incidence and to pitch rate, moments about the wing M.A.C.'s
 //! leading edge), for the whole configuration and for each part, so that
 //! every derivative follows about any c.g. by the same axis transfer
-//! ([`Solution::derivatives`]). Everything stays on the wing's area S and
+//! ([`Solution::derivatives`](crate::aerodynamics::lifting_surface::Solution::derivatives)). Everything stays on the wing's area S and
 //! M.A.C. c̄, and h stays the c.g. on the wing's M.A.C.
 //!
-//! - subsonic: one doublet lattice over all the surfaces ([`lattice`]);
+//! - subsonic: one doublet lattice over all the surfaces ([`configuration`](crate::aerodynamics::lifting_surface::configuration));
 //! - supersonic: each surface by the program's theories with the wing's
-//!   downwash at the tailplane and its lag ([`supersonic`]).
+//!   downwash at the tailplane and its lag ([`supersonic::configuration`](crate::aerodynamics::supersonic::configuration)).
 
 use crate::geometry::Trapezoid;
 use serde::Serialize;

@@ -1,7 +1,7 @@
 //! A process-wide table of solutions, each computed once: what the
 //! lifting-surface caches share (the configuration lattice's,
-//! [`crate::aerodynamics::lifting_surface::configuration::cache`], and the Mach box's,
-//! [`crate::aerodynamics::lifting_surface::mach_box::cache`]).
+//! [`crate::aerodynamics::lifting_surface::store`], and the Mach box's,
+//! [`crate::aerodynamics::lifting_surface::store`]).
 //!
 //! Each entry is solved once, by the first thread to ask; other threads
 //! asking meanwhile wait for it — except a worker of a rayon pool, which

@@ -2,10 +2,10 @@
 //! one dispatch over the three lifting-surface methods, cached.
 //!
 //! - 0 ≤ M ≤ 0.9: the doublet lattice on its default grid
-//!   ([`cache::solution`], Albano & Rodden 1969), unchanged (at 0.9 the
+//!   ([`store::lattice`], Albano & Rodden 1969), unchanged (at 0.9 the
 //!   refined lattice is the default one);
 //! - 0.9 < M ≤ 1: the refined lattice and its sonic extrapolation
-//!   ([`cache::near_sonic`], `docs/lattice-near-sonic.md`). Above M = 0.99
+//!   ([`store::near_sonic`], `docs/lattice-near-sonic.md`). Above M = 0.99
 //!   (the extrapolation in β²) it needs ω̄ ≥ [`SONIC_OMEGA_BAR_MIN`], where
 //!   it was verified: below, an error that says what to give instead;
 //! - M ≥ [`first_mach_box_mach`]: the Mach box method
@@ -172,8 +172,8 @@ fn subsonic_edge_warning(wing: &Trapezoid, mach: f64) -> Option<Warning> {
 /// The quasi-steady solution at `mach` with its Mach derivatives (eqs
 /// 27–29 need dC_Lα/dM and dH₀/dM): the lattice's exact ones
 /// ([`Lattice::solve_steady`](super::Lattice::solve_steady)) below M = 0.99
-/// — on the default lattice below 0.9 ([`cache::steady`]), on the refined
-/// one of [`cache::near_sonic`] above ([`cache::near_sonic_steady`]); from
+/// — on the default lattice below 0.9 ([`store::lattice_steady`]), on the refined
+/// one of [`store::near_sonic`] above ([`store::near_sonic_steady`]); from
 /// [`first_mach_box_mach`] on, the Mach box's table in Mach number
 /// ([`super::mach_table`], quasi-steady): the cubic through its four nodes
 /// around M and the cubic's slope. Between M = 0.99 and [`first_mach_box_mach`]

@@ -35,7 +35,7 @@ pub struct Solution {
 }
 
 /// The quasi-steady [`Solution`] at one Mach number with the exact Mach
-/// derivatives of its in-phase numbers ([`Lattice::solve_steady`]): what the
+/// derivatives of its in-phase numbers (`Lattice::solve_steady`): what the
 /// aerodynamic model's lift slope and aerodynamic centre, and their d/dM in
 /// eqs (27)–(29), come from.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

@@ -293,7 +293,7 @@ fn between_nodes<T: Clone, E>(
 }
 
 /// The Mach box's solution solved at ω̄ ([`Harmonic::Direct`],
-/// [`mach_box`]) or interpolated ([`Harmonic::Interpolated`], from
+/// [`mach_box()`]) or interpolated ([`Harmonic::Interpolated`], from
 /// β ≥ [`INTERPOLATED_FROM_BETA`]) between the four [`NODES`] around ω̄,
 /// each solved once; outside the nodes solved there. Within 10⁻³ of C_Lα
 /// of the direct solve on the note's deltas at M = 1.05–2.

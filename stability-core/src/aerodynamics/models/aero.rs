@@ -27,7 +27,7 @@ use crate::geometry::configuration::Configuration;
 use serde::Serialize;
 
 /// Where a coefficient comes from. The precedence is one rule
-/// ([`AeroModel::at_with`]): the user's table; else, under
+/// ([`AeroModel::at_configured`]): the user's table; else, under
 /// [`Source::Default`], the damping model's own value where it gives one
 /// ([`TheoryCoefficients`]); else the method of [`defaults`].
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -103,7 +103,7 @@ impl AeroModelName {
 
 /// The lattice's steady solution of the planform's shape at Mach `m`, with
 /// its Mach derivatives: one solve per (shape, M), cached
-/// ([`cache::steady`]).
+/// ([`store::lattice_steady`]).
 ///
 /// At any M in [0, 3] ([`mach_range::steady`]): the lattice's exact Mach
 /// derivatives up to M = 0.99 (the refined lattice above 0.9); above M = 1

@@ -46,7 +46,7 @@ pub enum DampingModel {
     /// theories.
     FairedTheories,
     /// The previous slender-wing fairing, `faired-slender`
-    /// ([`crate::aerodynamics::models::faired::slender_fairing`]): slender-wing theory (37) to
+    /// ([`crate::aerodynamics::models::faired::slender`]): slender-wing theory (37) to
     /// M = 1, blended into linear supersonic theory over 1 ≤ M ≤ 1.2, (36)
     /// held at its sonic-leading-edge values past the sonic edge, with a
     /// warning; quasi-steady, and the default methods' lift slope and

@@ -35,7 +35,7 @@ pub struct Increment {
     /// surfaces' interference on the wing). They sum to `solution`.
     pub parts: Vec<Contribution>,
     /// d ℓ_α/dM and d μ_α/dM of `solution` (`None` from
-    /// [`Configuration::increment_at`], which does not compute them).
+    /// [`DampingModel::increment`](crate::aerodynamics::models::damping_model::DampingModel::increment), which does not compute them).
     pub d_lift_alpha: Option<f64>,
     pub d_moment_alpha: Option<f64>,
 }

@@ -192,7 +192,7 @@ pub fn coefficients(
 
 /// The first Mach number at which every surface of `config` has its Mach
 /// box (each surface's [`first_mach_box_mach`], the latest): where
-/// [`increment`] leaves the bridge for the Mach box.
+/// [`increment()`] leaves the bridge for the Mach box.
 pub fn increment_mach_box_from(config: &Configuration) -> f64 {
     let unit = |t: &Trapezoid| store::unit_wing(t.aspect_ratio(), t.taper(), t.sweep_le).ok();
     std::iter::once(&config.wing)
