@@ -34,6 +34,10 @@ pub use errors::InputError;
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
+    // as the command line does: the note's wings' Mach box and near-sonic
+    // solutions, solved ahead of time, into the store (a cache checked by
+    // the solvers' fingerprints; a stale file is refused whole)
+    let _ = stability_study::study::preload();
     m.add("InputError", py.get_type::<InputError>())?;
     m.add_class::<quartic::Derivatives>()?;
     m.add_class::<quartic::Mode>()?;
