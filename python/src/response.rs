@@ -7,8 +7,9 @@ use crate::inputs::derivative_file;
 use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use stability_core::dynamics::response::MAX_STEPS;
+use stability_core::dynamics::response::{Computed, MAX_STEPS};
 use stability_core::numerics::display::Num;
+use stability_io::input::DerivativeFile;
 use stability_io::input::suggest::did_you_mean;
 use stability_io::response::{Disturbance, Given, Spec, respond};
 
@@ -46,73 +47,97 @@ pub fn response<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let file = derivative_file(source, notation, kwargs)?;
-        let input = Disturbance::parse(input).ok_or_else(|| {
-            let hint = did_you_mean(input, ["step", "initial"]);
-            argument(
-                "input",
-                format!("`{input}` is neither `step` nor `initial`{hint}"),
-            )
-        })?;
-        if !(until > 0.0 && until.is_finite()) {
-            return Err(argument(
-                "until",
-                format!("must be positive and finite, not {until}"),
-            ));
-        }
-        if steps == 0 || steps > MAX_STEPS {
-            return Err(argument(
-                "steps",
-                format!("must lie between 1 and {MAX_STEPS}, not {steps}"),
-            ));
-        }
-        for (name, v) in [("m0", m0), ("w0", w0)] {
-            if !v.is_finite() {
-                return Err(argument(name, format!("must be a finite number, not {v}")));
-            }
-        }
-        let spec = Spec {
-            input,
-            until,
-            steps,
-            m0,
-            x0: 0.0,
-            z0: 0.0,
-            w0,
-            neglect_zq_zwdot,
-            neglect_u,
-            given: Given {
-                span: format!("until={}", Num(until)),
-                span_option: "until",
-                steps: format!("steps={steps}"),
-                input: match input {
-                    Disturbance::Step => format!("m0={}", Num(m0)),
-                    Disturbance::Initial => format!("w0={}", Num(w0)),
-                },
-            },
-        };
+        let spec = spec(input, until, steps, m0, w0, neglect_zq_zwdot, neglect_u)?;
         let r = py
             .detach(|| respond(&file, &spec))
             .map_err(|e| input_error(&e))?;
-        let out = PyDict::new(py);
-        let column = |f: fn(&stability_core::dynamics::response::Sample) -> f64| -> Vec<f64> {
-            r.samples.iter().map(f).collect()
-        };
-        out.set_item("t_hat", column(|s| s.t).into_pyarray(py))?;
-        if let Some(tau) = file.tau() {
-            let t: Vec<f64> = r.samples.iter().map(|s| s.t * tau).collect();
-            out.set_item("t_s", t.into_pyarray(py))?;
-        }
-        out.set_item("u_hat", column(|s| s.u).into_pyarray(py))?;
-        out.set_item("w_hat", column(|s| s.w).into_pyarray(py))?;
-        out.set_item("q_hat", column(|s| s.q).into_pyarray(py))?;
-        out.set_item("theta", column(|s| s.theta).into_pyarray(py))?;
-        if let Some(w) = r.eq45 {
-            out.set_item("w_hat_eq45", w.into_pyarray(py))?;
-        }
-        out.set_item("gamma", column(|s| s.theta - s.w).into_pyarray(py))?;
-        if let Some(n) = r.n_z {
-            out.set_item("n_z", n.into_pyarray(py))?;
-        }
-        Ok(out)
+        columns(py, &file, r)
     })
+}
+
+/// The response's specification from the function's arguments, checked
+/// as the command line checks its options.
+#[allow(clippy::too_many_arguments)]
+fn spec(
+    input: &str,
+    until: f64,
+    steps: usize,
+    m0: f64,
+    w0: f64,
+    neglect_zq_zwdot: bool,
+    neglect_u: bool,
+) -> PyResult<Spec> {
+    let input = Disturbance::parse(input).ok_or_else(|| {
+        let hint = did_you_mean(input, ["step", "initial"]);
+        argument(
+            "input",
+            format!("`{input}` is neither `step` nor `initial`{hint}"),
+        )
+    })?;
+    if !(until > 0.0 && until.is_finite()) {
+        return Err(argument(
+            "until",
+            format!("must be positive and finite, not {until}"),
+        ));
+    }
+    if steps == 0 || steps > MAX_STEPS {
+        return Err(argument(
+            "steps",
+            format!("must lie between 1 and {MAX_STEPS}, not {steps}"),
+        ));
+    }
+    for (name, v) in [("m0", m0), ("w0", w0)] {
+        if !v.is_finite() {
+            return Err(argument(name, format!("must be a finite number, not {v}")));
+        }
+    }
+    Ok(Spec {
+        input,
+        until,
+        steps,
+        m0,
+        x0: 0.0,
+        z0: 0.0,
+        w0,
+        neglect_zq_zwdot,
+        neglect_u,
+        given: Given {
+            span: format!("until={}", Num(until)),
+            span_option: "until",
+            steps: format!("steps={steps}"),
+            input: match input {
+                Disturbance::Step => format!("m0={}", Num(m0)),
+                Disturbance::Initial => format!("w0={}", Num(w0)),
+            },
+        },
+    })
+}
+
+/// The response's samples as columns of numpy arrays (the CSV's names).
+fn columns<'py>(
+    py: Python<'py>,
+    file: &DerivativeFile,
+    r: Computed,
+) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    let column = |f: fn(&stability_core::dynamics::response::Sample) -> f64| -> Vec<f64> {
+        r.samples.iter().map(f).collect()
+    };
+    out.set_item("t_hat", column(|s| s.t).into_pyarray(py))?;
+    if let Some(tau) = file.tau() {
+        let t: Vec<f64> = r.samples.iter().map(|s| s.t * tau).collect();
+        out.set_item("t_s", t.into_pyarray(py))?;
+    }
+    out.set_item("u_hat", column(|s| s.u).into_pyarray(py))?;
+    out.set_item("w_hat", column(|s| s.w).into_pyarray(py))?;
+    out.set_item("q_hat", column(|s| s.q).into_pyarray(py))?;
+    out.set_item("theta", column(|s| s.theta).into_pyarray(py))?;
+    if let Some(w) = r.eq45 {
+        out.set_item("w_hat_eq45", w.into_pyarray(py))?;
+    }
+    out.set_item("gamma", column(|s| s.theta - s.w).into_pyarray(py))?;
+    if let Some(n) = r.n_z {
+        out.set_item("n_z", n.into_pyarray(py))?;
+    }
+    Ok(out)
 }
