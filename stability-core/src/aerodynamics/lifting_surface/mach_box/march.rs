@@ -58,11 +58,13 @@ pub fn march(
     let mut spans = vec![(usize::MAX, 0usize); grid.rows];
     // each box's own potential and the earlier rows' sum, row by row
     let mut ahead = vec![[zero; 2]; grid.columns];
-    let mut relaxed = (method == Method::Relaxed).then(|| Relaxed::new(grid, table));
+    // made at the first row with a source (the rows before have none; a
+    // wing with no diaphragm needs none)
+    let mut relaxed: Option<Relaxed> = None;
     let mut summed = vec![zero; grid.columns];
     for i in 0..grid.rows {
         let width = reach(grid, i);
-        if let Some(r) = relaxed.as_mut().filter(|_| any_diaphragm) {
+        if let Some(r) = relaxed.as_mut() {
             r.row(i, &mut summed[..width]);
         }
         let earlier = Earlier {
@@ -122,7 +124,8 @@ pub fn march(
             }
         }
         any_diaphragm |= spans[i].0 <= spans[i].1;
-        if let Some(r) = relaxed.as_mut() {
+        if method == Method::Relaxed && any_diaphragm {
+            let r = relaxed.get_or_insert_with(|| Relaxed::new(grid, table));
             r.push(i, &source[i * grid.columns..i * grid.columns + width]);
         }
     }

@@ -105,20 +105,23 @@ const DIRECT_LAGS: usize = 8;
 /// Each (source row, lag) pair falls in exactly one product.
 ///
 /// All buffers are made by [`Relaxed::new`]: [`Relaxed::row`] and
-/// [`Relaxed::push`] allocate nothing.
+/// [`Relaxed::push`] allocate nothing. Rows never pushed count as empty
+/// (the march makes it at its first row with a source).
 pub struct Relaxed {
     rows: usize,
     /// P, the spanwise transforms' length.
     span: usize,
     forward: Arc<dyn Fft<f64>>,
     inverse: Arc<dyn Fft<f64>>,
-    /// The spanwise transforms of C(m, ·)/P, m = 1..DIRECT_LAGS, row-major.
+    /// The spanwise transforms of C(m, ·)/P, m = 1..DIRECT_LAGS,
+    /// frequency-major (P × (DIRECT_LAGS − 1)).
     near: Vec<Complex64>,
     levels: Vec<Level>,
-    /// Each right-hand side's transformed source rows, row-major (rows × P).
+    /// Each right-hand side's transformed source rows, frequency-major
+    /// (P × rows: a block of rows at one frequency is contiguous).
     history: [Vec<Complex64>; 2],
     /// Each right-hand side's sums of the block products still to be
-    /// used, by target row (rows × P).
+    /// used, by target row, frequency-major (P × rows).
     pending: [Vec<Complex64>; 2],
     /// Whether each pushed row has a non-zero source.
     active: Vec<bool>,
@@ -179,12 +182,15 @@ impl Relaxed {
             scratch.resize(forward.get_inplace_scratch_len(), Complex64::default());
             forward.process_with_scratch(out, scratch);
         };
+        let mut line = vec![Complex64::default(); span];
         let mut near = vec![Complex64::default(); (DIRECT_LAGS - 1) * span];
-        for (k, out) in near.chunks_exact_mut(span).enumerate() {
-            kernel_row(k + 1, out, &mut scratch);
+        for m in 1..DIRECT_LAGS {
+            kernel_row(m, &mut line, &mut scratch);
+            for (q, &v) in line.iter().enumerate() {
+                near[q * (DIRECT_LAGS - 1) + m - 1] = v;
+            }
         }
         let mut levels = Vec::new();
-        let mut line = vec![Complex64::default(); span];
         let mut length = DIRECT_LAGS;
         while length <= lags {
             let twice = 2 * length;
@@ -242,18 +248,20 @@ impl Relaxed {
 
     /// b(i, j) for j < `out.len()`, once rows 0..i are pushed.
     pub fn row(&mut self, i: usize, out: &mut [Pair]) {
-        let p = self.span;
+        let (rows, lags) = (self.rows, DIRECT_LAGS.min(i + 1) - 1);
+        let any = self.active[i - lags..i].iter().any(|&a| a);
         for r in 0..2 {
             let line = &mut self.line;
-            line.copy_from_slice(&self.pending[r][i * p..(i + 1) * p]);
-            for m in 1..DIRECT_LAGS.min(i + 1) {
-                if !self.active[i - m] {
-                    continue;
-                }
-                let k = &self.near[(m - 1) * p..m * p];
-                let s = &self.history[r][(i - m) * p..(i - m + 1) * p];
-                for ((l, &k), &s) in line.iter_mut().zip(k).zip(s) {
-                    *l += k * s;
+            let (history, pending) = (&self.history[r], &self.pending[r]);
+            let near = self.near.chunks_exact(DIRECT_LAGS - 1);
+            for (q, (l, k)) in line.iter_mut().zip(near).enumerate() {
+                *l = pending[q * rows + i];
+                if any {
+                    // C(m)·s(i − m), m = 1..=lags
+                    let s = &history[q * rows + i - lags..q * rows + i];
+                    for (&k, &s) in k[..lags].iter().zip(s.iter().rev()) {
+                        *l += k * s;
+                    }
                 }
             }
             self.inverse.process_with_scratch(line, &mut self.scratch);
@@ -266,17 +274,15 @@ impl Relaxed {
     /// Row i's sources (`sources[j]`, column j; none beyond), now known:
     /// their transform, and every block product whose last row is i.
     pub fn push(&mut self, i: usize, sources: &[Pair]) {
-        let p = self.span;
-        let lags = self.rows.saturating_sub(1);
+        let (p, rows) = (self.span, self.rows);
+        let lags = rows.saturating_sub(1);
         self.active[i] = sources
             .iter()
             .any(|s| s[0].norm() > 0.0 || s[1].norm() > 0.0);
-        for r in 0..2 {
-            let h = &mut self.history[r][i * p..(i + 1) * p];
+        // an empty row's transform stays zero, as made
+        for r in (0..2).filter(|_| self.active[i]) {
+            let h = &mut self.line;
             h.fill(Complex64::default());
-            if !self.active[i] {
-                continue;
-            }
             for (j, s) in sources.iter().enumerate() {
                 h[j] += s[r];
                 // the mirror image at −j (it reaches back to j′ = 0
@@ -286,6 +292,9 @@ impl Relaxed {
                 }
             }
             self.forward.process_with_scratch(h, &mut self.scratch);
+            for (q, &v) in h.iter().enumerate() {
+                self.history[r][q * rows + i] = v;
+            }
         }
         for level in 0..self.levels.len() {
             let length = self.levels[level].length;
@@ -304,7 +313,7 @@ impl Relaxed {
             forward,
             inverse,
         } = &self.levels[level];
-        let (length, p) = (*length, self.span);
+        let (length, p, rows) = (*length, self.span, self.rows);
         if !self.active[start..start + length].iter().any(|&a| a) {
             return;
         }
@@ -312,13 +321,9 @@ impl Relaxed {
         let block = &mut self.block[..p * twice];
         for r in 0..2 {
             for (q, column) in block.chunks_exact_mut(twice).enumerate() {
-                for (a, v) in column.iter_mut().enumerate() {
-                    *v = if a < length {
-                        self.history[r][(start + a) * p + q]
-                    } else {
-                        Complex64::default()
-                    };
-                }
+                let h = &self.history[r][q * rows + start..q * rows + start + length];
+                column[..length].copy_from_slice(h);
+                column[length..].fill(Complex64::default());
             }
             forward.process_with_scratch(block, &mut self.scratch);
             for (v, &k) in block.iter_mut().zip(kernel.iter()) {
@@ -327,11 +332,12 @@ impl Relaxed {
             inverse.process_with_scratch(block, &mut self.scratch);
             // output c of the product: row start + L + c
             let first = start + length;
-            let last = (first + twice - 1).min(self.rows);
+            let reach = (twice - 1).min(rows - first);
             let pending = &mut self.pending[r];
             for (q, column) in block.chunks_exact(twice).enumerate() {
-                for (c, &v) in column.iter().enumerate().take(last - first) {
-                    pending[(first + c) * p + q] += v;
+                let target = &mut pending[q * rows + first..q * rows + first + reach];
+                for (t, &v) in target.iter_mut().zip(column) {
+                    *t += v;
                 }
             }
         }
