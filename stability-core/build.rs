@@ -33,6 +33,7 @@ const SOLVERS: [(&str, &[&str]); 2] = [
             "aerodynamics/lifting_surface/mach_box/grid.rs",
             "aerodynamics/lifting_surface/mach_box/influence.rs",
             "aerodynamics/lifting_surface/mach_box/march.rs",
+            "aerodynamics/lifting_surface/mach_box/upstream.rs",
         ],
     ),
 ];

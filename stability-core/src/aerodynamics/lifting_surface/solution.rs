@@ -34,6 +34,20 @@ pub struct Solution {
     pub moment_q: f64,
 }
 
+impl Solution {
+    /// Its six numbers: ℓ_α, μ_α, ℓ_α̇, μ_α̇, ℓ_q, μ_q.
+    pub fn numbers(&self) -> [f64; 6] {
+        [
+            self.lift_alpha,
+            self.moment_alpha,
+            self.lift_alphadot,
+            self.moment_alphadot,
+            self.lift_q,
+            self.moment_q,
+        ]
+    }
+}
+
 /// The quasi-steady [`Solution`] at one Mach number with the exact Mach
 /// derivatives of its in-phase numbers (`Lattice::solve_steady`): what the
 /// aerodynamic model's lift slope and aerodynamic centre, and their d/dM in

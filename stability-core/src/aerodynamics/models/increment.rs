@@ -40,18 +40,6 @@ pub struct Increment {
     pub d_moment_alpha: Option<f64>,
 }
 
-/// The six numbers of a [`Solution`].
-pub(super) fn numbers(s: &Solution) -> [f64; 6] {
-    [
-        s.lift_alpha,
-        s.moment_alpha,
-        s.lift_alphadot,
-        s.moment_alphadot,
-        s.lift_q,
-        s.moment_q,
-    ]
-}
-
 pub(super) fn from_numbers(n: [f64; 6], mach: f64, omega_bar: f64) -> Solution {
     Solution {
         mach,
@@ -67,7 +55,7 @@ pub(super) fn from_numbers(n: [f64; 6], mach: f64, omega_bar: f64) -> Solution {
 
 /// a − b, number by number.
 fn minus(a: &Solution, b: &Solution) -> Solution {
-    let (x, y) = (numbers(a), numbers(b));
+    let (x, y) = (a.numbers(), b.numbers());
     from_numbers(std::array::from_fn(|i| x[i] - y[i]), a.mach, a.omega_bar)
 }
 
@@ -78,7 +66,7 @@ fn parts_less_wing(config: &ConfigurationSolution, alone: &Solution) -> Vec<Cont
     for c in &config.parts {
         if c.part == Part::Wing {
             let d = minus(&c.solution, alone);
-            if numbers(&d).iter().any(|v| *v != 0.0) {
+            if d.numbers().iter().any(|v| *v != 0.0) {
                 out.push(Contribution {
                     part: Part::Wing,
                     solution: d,
@@ -204,7 +192,7 @@ pub fn line(
         inc.parts
             .iter()
             .find(|c| c.part == part)
-            .map_or([0.0; 6], |c| numbers(&c.solution))
+            .map_or([0.0; 6], |c| c.solution.numbers())
     };
     let mut order: Vec<Part> = Vec::new();
     for c in a.parts.iter().chain(b.parts.iter()) {
@@ -226,7 +214,7 @@ pub fn line(
             }
         })
         .collect();
-    let (x, y) = (numbers(&a.solution), numbers(&b.solution));
+    let (x, y) = (a.solution.numbers(), b.solution.numbers());
     Increment {
         solution: from_numbers(
             std::array::from_fn(|i| x[i] + t * (y[i] - x[i])),

@@ -20,6 +20,7 @@ use super::direct::{Flow, wing_potential};
 use super::edge;
 use super::grid::{Grid, Kind};
 use super::influence::{Influence, Pair};
+use super::upstream::{self, Method, Relaxed};
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
 use rayon::prelude::*;
@@ -30,8 +31,15 @@ use std::f64::consts::PI;
 /// ([`super::direct`]), the diaphragm's by its boxes. With a subsonic
 /// leading edge (β cot Λ < 1) the diaphragm's upwash carries its edge
 /// singularity exactly ([`super::edge`]): each box's unknown is the
-/// smooth factor a of w̄ = a/√d.
-pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> Vec<Pair> {
+/// smooth factor a of w̄ = a/√d. The earlier rows' sum by `method`
+/// ([`super::upstream`]).
+pub fn march(
+    wing: &Trapezoid,
+    grid: &Grid,
+    table: &Influence,
+    flow: &Flow,
+    method: Method,
+) -> Vec<Pair> {
     let n = grid.cells.len();
     let zero = [Complex64::default(); 2];
     let mut source = vec![zero; n];
@@ -50,13 +58,21 @@ pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> V
     let mut spans = vec![(usize::MAX, 0usize); grid.rows];
     // each box's own potential and the earlier rows' sum, row by row
     let mut ahead = vec![[zero; 2]; grid.columns];
+    // made at the first row with a source (the rows before have none; a
+    // wing with no diaphragm needs none)
+    let mut relaxed: Option<Relaxed> = None;
+    let mut summed = vec![zero; grid.columns];
     for i in 0..grid.rows {
         let width = reach(grid, i);
+        if let Some(r) = relaxed.as_mut() {
+            r.row(i, &mut summed[..width]);
+        }
         let earlier = Earlier {
             grid,
             table,
             source: &source,
             spans: &spans,
+            summed: relaxed.as_ref().map(|_| &summed[..width]),
             near: &near,
             wash: &wash,
             any: any_diaphragm,
@@ -108,6 +124,10 @@ pub fn march(wing: &Trapezoid, grid: &Grid, table: &Influence, flow: &Flow) -> V
             }
         }
         any_diaphragm |= spans[i].0 <= spans[i].1;
+        if method == Method::Relaxed && any_diaphragm {
+            let r = relaxed.get_or_insert_with(|| Relaxed::new(grid, table));
+            r.push(i, &source[i * grid.columns..i * grid.columns + width]);
+        }
     }
     phi
 }
@@ -118,6 +138,9 @@ struct Earlier<'a> {
     table: &'a Influence,
     source: &'a [Pair],
     spans: &'a [(usize, usize)],
+    /// The earlier rows' sums of this row by [`Relaxed`] (else summed
+    /// [`upstream::direct`]ly).
+    summed: Option<&'a [Pair]>,
     near: &'a [f64],
     wash: &'a [Pair],
     /// Whether any earlier row has a source.
@@ -142,7 +165,10 @@ impl Earlier<'_> {
         if !self.any {
             return [own, zero];
         }
-        let mut before = upstream(g, self.table, (self.source, &self.spans[..i]), i, j);
+        let mut before = match self.summed {
+            Some(summed) => summed[j],
+            None => upstream::direct(g, self.table, (self.source, &self.spans[..i]), i, j),
+        };
         if edge.singular {
             let field = (self.near, self.wash);
             edge.near_field(wing, g, self.table, field, (i, j), &mut before);
@@ -265,59 +291,6 @@ fn neighbour_wash(grid: &Grid, wash: &[Pair], i: usize, j: usize) -> Pair {
 /// solved: its normalwash acts on nothing the loads use (exact pruning).
 fn reach(grid: &Grid, i: usize) -> usize {
     (grid.strips + grid.rows - i).min(grid.columns)
-}
-
-/// Σ sources × C over the earlier rows, with the mirror image of each box
-/// (the half wing's symmetric motion); `spans` bounds each row's non-zero
-/// sources.
-fn upstream(
-    grid: &Grid,
-    table: &Influence,
-    (source, spans): (&[Pair], &[(usize, usize)]),
-    i: usize,
-    j: usize,
-) -> Pair {
-    let mut sum = [Complex64::default(); 2];
-    for (ip, &(slo, shi)) in spans.iter().enumerate().take(i) {
-        if slo > shi {
-            continue;
-        }
-        let m = i - ip;
-        let c = table.row(m);
-        let row = &source[ip * grid.columns..(ip + 1) * grid.columns];
-        let (lo, hi) = (j.saturating_sub(m).max(slo), (j + m).min(shi));
-        // ahead and inboard of the receiver: C(m, j − j′), j′ ≤ j
-        if lo <= j.min(hi) {
-            let a = j.min(hi);
-            accumulate(&row[lo..=a], c[j - a..=j - lo].iter().rev(), &mut sum);
-        }
-        // outboard: C(m, j′ − j), j′ > j
-        let b = (j + 1).max(lo);
-        if b <= hi {
-            accumulate(&row[b..=hi], c[b - j..=hi - j].iter(), &mut sum);
-        }
-        // mirror images at −j′, j′ ≥ 1: offset j + j′ ≤ m
-        let (mlo, mhi) = (slo.max(1), (m.saturating_sub(j)).min(shi));
-        if mlo <= mhi {
-            accumulate(&row[mlo..=mhi], c[j + mlo..=j + mhi].iter(), &mut sum);
-        }
-    }
-    sum
-}
-
-/// sum += Σ sources × coefficients, term by term.
-#[inline]
-fn accumulate<'a>(
-    sources: &[Pair],
-    coefficients: impl Iterator<Item = &'a Complex64>,
-    sum: &mut Pair,
-) {
-    let (mut s0, mut s1) = (sum[0], sum[1]);
-    for (s, &c) in sources.iter().zip(coefficients) {
-        s0 += s[0] * c;
-        s1 += s[1] * c;
-    }
-    *sum = [s0, s1];
 }
 
 /// C_L and C_m (about the M.A.C.'s leading edge, on c̄) of the two

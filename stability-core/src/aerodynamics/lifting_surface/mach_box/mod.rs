@@ -18,7 +18,8 @@
 //! the potential vanish there). Chosen over the constant-pressure panel
 //! method (Appa, J. Aircraft 24(10), 1987) because the potential needs no
 //! linear system — the influence is causal, so the boxes are swept row
-//! after row (O(N³) for N strips, no factorisation) — and because on a
+//! after row (the earlier rows' sum a causal convolution, done by fast
+//! online convolution, [`upstream`]; no factorisation) — and because on a
 //! wing with supersonic edges it is a direct quadrature of the exact
 //! integral, to which it converges; the method also treats subsonic
 //! leading edges and tips (the diaphragm) without a Kutta condition.
@@ -35,6 +36,8 @@
 //!   each receiving point;
 //! - [`edge`]: the diaphragm's edge singularity (box weights and exact
 //!   near-field coefficients of the upwash a/√d);
+//! - [`upstream`]: the earlier rows' sum, a causal convolution, by relaxed
+//!   (online) FFT multiplication or term by term;
 //!
 //! Its solutions are stored, one solve per (wing, M, p̄), by
 //! [`crate::aerodynamics::lifting_surface::store`].
@@ -68,10 +71,12 @@ pub mod edge;
 pub mod grid;
 pub mod influence;
 pub mod march;
+pub mod upstream;
 
 use crate::aerodynamics::lifting_surface::Solution;
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
+pub use upstream::Method;
 
 /// Below this ω̄ the quasi-steady limit is returned (evaluated at
 /// [`QUASI_STEADY_EVALUATION`]).
@@ -183,6 +188,19 @@ pub fn solve(
     omega_bar: f64,
     spec: MachBoxSpec,
 ) -> Result<Solution, MachBoxError> {
+    solve_by(wing, mach, omega_bar, spec, Method::default())
+}
+
+/// [`solve`] with the earlier rows' sum done by `method` (the same numbers
+/// to rounding; [`Method::Direct`] is the reference the tests compare
+/// with).
+pub fn solve_by(
+    wing: &Trapezoid,
+    mach: f64,
+    omega_bar: f64,
+    spec: MachBoxSpec,
+    method: Method,
+) -> Result<Solution, MachBoxError> {
     let beta = check(wing, mach, omega_bar)?;
     let n = spec.strips;
     let multiple = if spec.richardson { 2 } else { 1 };
@@ -198,7 +216,7 @@ pub fn solve(
         });
     }
     let evaluated = omega_bar.max(QUASI_STEADY_EVALUATION);
-    let one = |strips: usize| solve_grid(wing, mach, beta, evaluated, strips);
+    let one = |strips: usize| solve_grid(wing, (mach, beta), evaluated, strips, method);
     let mut s = if spec.richardson {
         let (a, b) = (one(n), one(n / 2));
         let r = |x: f64, y: f64| (4.0 * x - y) / 3.0;
@@ -217,15 +235,7 @@ pub fn solve(
     if omega_bar < OMEGA_BAR_QUASI_STEADY {
         s.omega_bar = 0.0;
     }
-    let all = [
-        s.lift_alpha,
-        s.moment_alpha,
-        s.lift_alphadot,
-        s.moment_alphadot,
-        s.lift_q,
-        s.moment_q,
-    ];
-    if all.iter().all(|v| v.is_finite()) {
+    if s.numbers().iter().all(|v| v.is_finite()) {
         Ok(s)
     } else {
         Err(MachBoxError::NotFinite { mach, omega_bar })
@@ -254,7 +264,13 @@ fn check(wing: &Trapezoid, mach: f64, omega_bar: f64) -> Result<f64, MachBoxErro
 }
 
 /// One grid's solution at ω̄ > 0.
-fn solve_grid(wing: &Trapezoid, mach: f64, beta: f64, omega_bar: f64, strips: usize) -> Solution {
+fn solve_grid(
+    wing: &Trapezoid,
+    (mach, beta): (f64, f64),
+    omega_bar: f64,
+    strips: usize,
+    method: Method,
+) -> Solution {
     let grid = grid::Grid::new(wing, beta, strips);
     let kappa = omega_bar / wing.mac();
     let (sigma, nu) = (
@@ -269,7 +285,7 @@ fn solve_grid(wing: &Trapezoid, mach: f64, beta: f64, omega_bar: f64, strips: us
         x_mac: wing.x_mac(),
         mac: wing.mac(),
     };
-    let phi = march::march(wing, &grid, &table, &flow);
+    let phi = march::march(wing, &grid, &table, &flow, method);
     let [lift, moment]: [[Complex64; 2]; 2] = march::loads(wing, &grid, &phi, kappa);
     Solution {
         mach,

@@ -17,9 +17,7 @@
 //! M = 1 ([`super`]), and this model is kept for comparison and for the
 //! note's own construction.
 
-use super::super::increment::{
-    Increment, Method, by_method, from_numbers, numbers, with_derivatives,
-};
+use super::super::increment::{Increment, Method, by_method, from_numbers, with_derivatives};
 use super::super::regime::{Regime, RegimeKind};
 use crate::aerodynamics::damping::{
     Damping, DampingError, Theory, WingInput, damping_derivatives_with, theory_coefficients,
@@ -371,7 +369,7 @@ fn faired(
         ends[i]
             .iter()
             .find(|c| c.part == part)
-            .map_or([0.0; 6], |c| numbers(&c.solution))
+            .map_or([0.0; 6], |c| c.solution.numbers())
     };
     let mut order: Vec<Part> = Vec::new();
     for c in ends[0].iter().chain(ends[2].iter()) {
