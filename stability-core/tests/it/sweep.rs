@@ -269,7 +269,9 @@ fn a_physical_sweep_gives_each_planform_its_own_flight_parameters() {
     };
     let base = report_wing(60.0, 0.9);
     let axes = Axes {
-        mach: vec![0.6, 1.2],
+        // (the flight parameters are the question: subsonic Mach numbers,
+        // whose lattices are quick)
+        mach: vec![0.6, 0.9],
         sweep_deg: vec![50.0, 60.0, 70.0],
         ..Axes::around(&base)
     };
