@@ -181,7 +181,7 @@ fn the_design_report_has_a_section_10_with_each_parts_damping() {
         "report",
         TAILED,
         "--mach",
-        "1.2,1.6",
+        "1.2",
         "--out",
         out.to_str().unwrap(),
     ]);
