@@ -98,8 +98,8 @@ const DIRECT_LAGS: usize = 8;
 /// too lazy", J. Symbolic Comput. 34(6), 2002, §4), the zero-delay block
 /// convolution of W.G. Gardner ("Efficient convolution without
 /// input-output delay", J. Audio Eng. Soc. 43(3), 1995): lags below
-/// [`DIRECT_LAGS`] by direct products, and the lags [L, 2L) for
-/// L = [`DIRECT_LAGS`]·2ᵏ by one FFT product of length 2L of the kernel's
+/// `DIRECT_LAGS` (8) by direct products, and the lags [L, 2L) for
+/// L = 8·2ᵏ by one FFT product of length 2L of the kernel's
 /// block with each aligned block of L source rows, done as soon as the
 /// block's last row is known — L rows before the first row it reaches.
 /// Each (source row, lag) pair falls in exactly one product.
