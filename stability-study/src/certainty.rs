@@ -299,6 +299,16 @@ pub fn percent(x: f64) -> String {
     format!("{} %", sig(100.0 * x, 2))
 }
 
+/// Bounds on a share: "between 3.0 % and 40 %", or the one share when both
+/// print the same ("0 %", never "between 0 % and 0 %").
+pub fn percent_range(least: f64, most: f64) -> String {
+    let (a, b) = (percent(least), percent(most));
+    match a == b {
+        true => a,
+        false => format!("between {a} and {b}"),
+    }
+}
+
 /// The μ₁ of the 60° study, from the limit and the tolerance.
 pub fn mu1_60() -> f64 {
     MU1_LIMIT / ABOUT
@@ -495,12 +505,11 @@ impl Answer {
             .map(|d| format!("{} (total index {})", d.factor, sig(d.total, 2)))
             .collect();
         format!(
-            "{}: from {} (M = {m_lo:.2}) to {} (M = {m_hi:.2}) over M {ms}; {all}: between {} and {}. Deciding inputs: {}.",
+            "{}: from {} (M = {m_lo:.2}) to {} (M = {m_hi:.2}) over M {ms}; {all}: {}. Deciding inputs: {}.",
             capitalised(self.headline.question),
             percent(lo),
             percent(hi),
-            percent(least),
-            percent(most),
+            percent_range(least, most),
             if deciding.is_empty() {
                 "—".to_string()
             } else {
@@ -544,5 +553,16 @@ impl Certainty {
             "How sure (section “How sure are the headline conclusions?”): {}",
             s.join(" ")
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::percent_range;
+
+    #[test]
+    fn equal_bounds_print_as_one_share() {
+        assert_eq!(percent_range(0.0, 0.0), "0 %");
+        assert_eq!(percent_range(0.03, 0.4), "between 3.0 % and 40 %");
     }
 }

@@ -27,6 +27,7 @@
 use super::standard::CGS;
 use super::study::{Assumed, Assumption, Study, WINGS};
 use super::summary::{CROPPED_TAPER, Findings, SWEEPS_ABOUT_60, Worst, show_intervals};
+use crate::certainty::percent;
 use crate::study::{NOTE_SUPERSONIC, SUBCRITICAL};
 use serde::Serialize;
 use stability_core::design::study::intervals;
@@ -229,11 +230,6 @@ fn share(points: &[(f64, bool)]) -> f64 {
         return 0.0;
     }
     points.iter().filter(|(_, f)| *f).count() as f64 / points.len() as f64
-}
-
-/// A share as a percentage: "64 %".
-fn percent(s: f64) -> String {
-    format!("{} %", sig(100.0 * s, 2))
 }
 
 /// The note's range of "serious instability" of the 45° delta (Fig 33).

@@ -194,6 +194,15 @@ fn contents(write: &Write<'_>, out: &Path, bar: &ProgressBar) -> Result<(usize, 
     Ok((report.plates().count(), text))
 }
 
+/// Where in Mach number: "for M in 0.92–0.99, 1.2", or "at no Mach
+/// number" (never "for M in none").
+fn where_in_mach(v: &[[f64; 2]]) -> String {
+    match v.is_empty() {
+        true => "at no Mach number".into(),
+        false => format!("for M in {}", summary::show_intervals(v)),
+    }
+}
+
 /// What the terminal shows of the findings: each wing's intervals and the
 /// worst case of its largest μ₁ (a Mach number where none meets the
 /// standard is the worst), then each conclusion's verdict.
@@ -201,10 +210,10 @@ pub fn terminal_summary(f: &Findings, judged: &[Judged]) -> String {
     let mut text = String::new();
     for (k, w) in f.wings.iter().enumerate() {
         text.push_str(&format!(
-            "  {}° delta: short period divergent for M in {}; more than one cycle to halve for M in {}; largest μ₁ meeting the standard, at worst: {}\n",
+            "  {}° delta: short period divergent {}; more than one cycle to halve {}; largest μ₁ meeting the standard, at worst: {}\n",
             w.sweep_deg,
-            summary::show_intervals(&w.unstable),
-            summary::show_intervals(&w.fails),
+            where_in_mach(&w.unstable),
+            where_in_mach(&w.fails),
             f.max_mu1(k).worst().map_or("—".into(), |w| w.describe())
         ));
     }
@@ -232,6 +241,15 @@ pub fn terminal_summary(f: &Findings, judged: &[Judged]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_empty_set_of_mach_numbers_is_said_in_words() {
+        assert_eq!(where_in_mach(&[]), "at no Mach number");
+        assert_eq!(
+            where_in_mach(&[[0.92, 0.99], [1.2, 1.2]]),
+            "for M in 0.92–0.99, 1.20"
+        );
+    }
 
     /// The temporary directories of runs beside `out`.
     fn temporaries(out: &Path) -> Vec<std::path::PathBuf> {

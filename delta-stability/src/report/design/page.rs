@@ -80,10 +80,7 @@ fn verdicts(d: &Design) -> String {
         "<h2 id=\"verdict\">Verdict across Mach number</h2><p>Every root judged (<code>stability_core::analysis::verdict</code>): <b>divergent</b> where any mode grows, <b>fails</b> where one is neutral or the short period takes more than one cycle to halve (§8), else <b>meets</b>.</p><ul>",
     );
     for (what, a, b) in runs {
-        let range = match a == b {
-            true => format!("M = {}", short(a)),
-            false => format!("M = {} to {}", short(a), short(b)),
-        };
+        let range = mach_range(a, b);
         let _ = write!(s, "<li>{range}: <span class=\"{what}\">{what}</span></li>");
     }
     let failed: Vec<String> = d
@@ -111,9 +108,18 @@ pub fn verdict_lines(d: &Design) -> String {
     });
     let mut s = String::new();
     for (what, a, b) in runs {
-        let _ = writeln!(s, "  M = {} to {}: {what}", short(a), short(b));
+        let _ = writeln!(s, "  {}: {what}", mach_range(a, b));
     }
     s
+}
+
+/// A run of Mach numbers from `a` to `b`: "M = a to b", or "M = a" when
+/// the run is one point (never "M = 1 to 1").
+fn mach_range(a: f64, b: f64) -> String {
+    match short(a) == short(b) {
+        true => format!("M = {}", short(a)),
+        false => format!("M = {} to {}", short(a), short(b)),
+    }
 }
 
 /// A mode's cells: ζ, ωₙ, period, time to half (or double, marked ×2),
@@ -359,4 +365,16 @@ pub fn index_html(d: &Design, sections: &[(&str, Vec<Plate>)]) -> String {
     s.push_str(&sources(d));
     s.push_str("</body></html>\n");
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::mach_range;
+
+    #[test]
+    fn a_run_of_one_mach_number_is_one_point() {
+        assert_eq!(mach_range(1.0, 1.0), "M = 1");
+        assert_eq!(mach_range(0.95, 0.95), "M = 0.95");
+        assert_eq!(mach_range(0.5, 0.9), "M = 0.5 to 0.9");
+    }
 }
