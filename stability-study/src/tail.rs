@@ -22,13 +22,14 @@ use super::Plate;
 use super::study::{Assumed, mach_fig};
 use rayon::prelude::*;
 use serde::Serialize;
+use stability_core::criteria::Verdict;
 use stability_core::design::case::Case;
-use stability_core::design::sizing::{Sizing, outcomes_at, size_surface};
+use stability_core::design::sizing::{MachOutcome, Sizing, outcomes_at, size_surface};
 use stability_core::design::study::report_wing;
 use stability_core::geometry::configuration::Configuration;
 use stability_core::geometry::configuration::SurfaceKind;
 use stability_core::numerics::display::sig;
-use stability_io::plot::Series;
+use stability_io::plot::{Series, short};
 use std::sync::Arc;
 
 /// The tailed config whose tailplane is the family.
@@ -77,6 +78,9 @@ pub struct TailNeeded {
     /// (S_T/S, cycles to half amplitude at each Mach number; NaN where
     /// none) for no tail, half the found area, the found area and 1.5×.
     pub members: Vec<(f64, Vec<f64>)>,
+    /// The wing alone at each Mach number, every root judged: what the
+    /// tail cures.
+    pub tailless: Vec<MachOutcome>,
 }
 
 impl TailNeeded {
@@ -101,20 +105,32 @@ impl TailNeeded {
         let ((tc, tailplane), (_, foreplane)) = (tail?, fore?);
         let wing = tailplane.limit;
         let found = tailplane.area.unwrap_or(tailplane.limit);
-        let members = [0.0, 0.5, 1.0, 1.5]
+        let outcomes = [0.0, 0.5, 1.0, 1.5]
             .par_iter()
             .map(|&k| {
                 let o = outcomes_at(&tc, SurfaceKind::Tailplane, &ms, k * found)
                     .map_err(|e| e.to_string())?;
-                let c = o.iter().map(|o| o.cycles_to_half.unwrap_or(f64::NAN));
-                Ok((k * found / wing, c.collect()))
+                Ok((k * found / wing, o))
             })
-            .collect::<Result<_, String>>()?;
+            .collect::<Result<Vec<_>, String>>()?;
+        let members = outcomes
+            .iter()
+            .map(|(ratio, o)| {
+                let c = o.iter().map(|o| o.cycles_to_half.unwrap_or(f64::NAN));
+                (*ratio, c.collect())
+            })
+            .collect();
+        let tailless = outcomes
+            .into_iter()
+            .next()
+            .map(|(_, o)| o)
+            .unwrap_or_default();
         Ok(TailNeeded {
             machs: ms,
             tailplane,
             foreplane,
             members,
+            tailless,
         })
     }
 }
@@ -153,7 +169,7 @@ fn answer(s: &Sizing) -> String {
             sig(v, 3),
             sig(a / s.limit, 3)
         ),
-        _ => format!("no {name} up to the wing's area meets it"),
+        _ => format!("no {name} up to the wing's area is enough"),
     }
 }
 
@@ -166,15 +182,53 @@ impl TailNeeded {
         }
     }
 
-    /// The conclusion: "a tailplane of V̄ = … (S_T/S = …) is needed …".
+    /// The conclusion: "a tailplane of V̄ = … (S_T/S = …) is needed …",
+    /// with what it cures.
     pub fn sentence(&self) -> String {
         format!(
-            "{} for the 45° delta (μ₁ = 50, h = 0.25) to meet the one-cycle standard at every Mach number from {} to {} (examples/delta-45-tailed.toml's tail shape; V̄ from the c.g. to the tail's M.A.C. quarter chord); of examples/delta-60-canard.toml's foreplane shape ahead of the wing, {}",
+            "{} for the 45° delta (μ₁ = 50, h = 0.25) to meet the one-cycle standard at every Mach number from {} to {}, every root judged ({}; examples/delta-45-tailed.toml's tail shape; V̄ from the c.g. to the tail's M.A.C. quarter chord); of examples/delta-60-canard.toml's foreplane shape ahead of the wing, {}",
             answer(&self.tailplane),
             sig(self.machs[0], 2),
             sig(self.machs[self.machs.len() - 1], 2),
+            self.cures(),
             answer(&self.foreplane),
         )
+    }
+
+    /// What the tail cures, from the wing alone's every-root verdict:
+    /// "the wing alone diverges (a root grows) at M = 0.97 and meets it
+    /// elsewhere".
+    pub fn cures(&self) -> String {
+        let at = |v: Verdict| -> Vec<String> {
+            self.tailless
+                .iter()
+                .filter(|o| o.verdict == Some(v))
+                .map(|o| short(o.mach))
+                .collect()
+        };
+        let (diverges, fails) = (at(Verdict::Divergent), at(Verdict::Fails));
+        let mut parts = Vec::new();
+        if !diverges.is_empty() {
+            parts.push(format!(
+                "diverges (a root grows) at M = {}",
+                diverges.join(", ")
+            ));
+        }
+        if !fails.is_empty() {
+            parts.push(format!(
+                "takes more than one cycle to halve, or has a neutral root, at M = {}",
+                fails.join(", ")
+            ));
+        }
+        let judged = self.tailless.iter().filter(|o| o.verdict.is_some());
+        let elsewhere = match judged.count() > diverges.len() + fails.len() {
+            true => " and meets it elsewhere",
+            false => "",
+        };
+        match parts.is_empty() {
+            true => "the wing alone meets it at each of them".into(),
+            false => format!("the wing alone {}{elsewhere}", parts.join("; ")),
+        }
     }
 
     /// Cycles to half amplitude against Mach number for the tailplane's
@@ -267,5 +321,26 @@ mod tests {
         assert!((found.0 - area / 100.0).abs() < 1e-12);
         assert!(found.1.iter().all(|&c| c.is_nan() || c <= 1.0));
         assert!(t.sentence().contains("tailplane of V̄ ="));
+        // what it cures is the wing alone's every-root verdict, evaluated
+        // here with the tailplane taken out of the configuration
+        let mut alone = (**c.aero.configuration.as_ref().unwrap()).clone();
+        alone.tailplane = None;
+        let alone = Arc::new(alone);
+        assert_eq!(t.tailless.len(), MS.len());
+        for o in &t.tailless {
+            let mut k = c.clone();
+            k.mach = o.mach;
+            k.aero.configuration = Some(alone.clone());
+            let v = evaluate(&k).ok().map(|r| overall(&r.analysis));
+            assert_eq!(o.verdict, v, "the wing alone at M = {}", o.mach);
+            if v != Some(Verdict::Meets) {
+                assert!(t.cures().contains(&short(o.mach)), "{}", t.cures());
+            }
+        }
+        assert!(
+            t.tailless.iter().any(|o| o.verdict != Some(Verdict::Meets)),
+            "the tail cures nothing"
+        );
+        assert!(t.sentence().contains(&t.cures()));
     }
 }
