@@ -96,14 +96,16 @@ def test_a_sweep_is_a_loop_over_analyze(damping):
     """The default model (faired) and the quasi-steady faired-slender, at
     subsonic, transonic and supersonic points."""
     # (analyze solves each point's lifting surface at its own frequency:
-    # three Mach numbers, two sweeps, with an extreme of each other axis)
-    grid = dict(mach=[0.6, 0.95, 1.3], sweep=[45.0, 70.0], cg=[0.2, 0.3],
-                mu1=[50.0, 400.0], i_b=[0.08, 0.1])
+    # three Mach numbers, two sweeps, the extremes of μ₁, which moves the
+    # frequency most; every axis's whole grid is the library's
+    # stability-core/tests/it/sweep.rs)
+    grid = dict(mach=[0.6, 0.95, 1.3], sweep=[45.0, 70.0], cg=[0.3],
+                mu1=[50.0, 400.0], i_b=[0.08])
     s = ds.sweep(BASE, damping=damping, **grid)
-    assert s.shape == (3, 2, 2, 2, 2) and len(s["mach"]) == 48
+    assert s.shape == (3, 2, 1, 2, 1) and len(s["mach"]) == 12
     c = loop(s, grid, report_wing, damping=damping)
-    assert c["exact"] + c["interpolated"] + c["error"] == 48, c
-    assert c["error"] <= 5, c
+    assert c["exact"] + c["interpolated"] + c["error"] == 12, c
+    assert c["error"] <= 2, c
     if damping == "faired-slender":
         assert c["interpolated"] == 0, c
 
