@@ -266,9 +266,10 @@ mod tests {
     use stability_core::criteria::Verdict;
     use stability_core::design::case::evaluate;
 
-    /// The transonic band where the tailless wing fails (the report's
-    /// full range is [`machs`]; this keeps the test short).
-    const MS: [f64; 3] = [0.97, 1.2, 1.4];
+    /// Two of the report's Mach numbers ([`machs`]): 0.97, where the
+    /// tailless wing diverges, and 1.4, where the tail's increment is the
+    /// Mach box's (the whole range would make the test a report's length).
+    const MS: [f64; 2] = [0.97, 1.4];
 
     /// The verdict at each of `ms` with the tailplane of the example
     /// scaled (every length, about its apex) to area `area`, built here
@@ -282,7 +283,7 @@ mod tests {
         t.shape.semi_span *= f;
         config.tailplane = Some(t);
         let config = Arc::new(config);
-        MS.iter()
+        MS.par_iter()
             .map(|&m| {
                 let mut k = c.clone();
                 k.mach = m;
@@ -307,11 +308,10 @@ mod tests {
         let cli = size_surface(&cfg.case, SurfaceKind::Tailplane, &MS, None).unwrap();
         let area = t.tailplane.area.expect("a tail up to the wing's area");
         assert_eq!(Some(area), cli.area);
-        assert!(area > 0.0, "the tailless wing fails in 0.97–1.5 (Fig 33)");
+        assert!(area > 0.0, "the tailless wing diverges at M = 0.97");
         let c = case(Assumed::ours(), SurfaceKind::Tailplane).unwrap();
-        let at = verdicts(&c, area);
+        let (at, below) = rayon::join(|| verdicts(&c, area), || verdicts(&c, 0.99 * area));
         assert!(at.iter().all(|v| *v == Some(Verdict::Meets)), "{at:?}");
-        let below = verdicts(&c, 0.99 * area);
         assert!(
             below.iter().any(|v| *v != Some(Verdict::Meets)),
             "{below:?}"
@@ -327,11 +327,17 @@ mod tests {
         alone.tailplane = None;
         let alone = Arc::new(alone);
         assert_eq!(t.tailless.len(), MS.len());
-        for o in &t.tailless {
-            let mut k = c.clone();
-            k.mach = o.mach;
-            k.aero.configuration = Some(alone.clone());
-            let v = evaluate(&k).ok().map(|r| overall(&r.analysis));
+        let judged: Vec<_> = t
+            .tailless
+            .par_iter()
+            .map(|o| {
+                let mut k = c.clone();
+                k.mach = o.mach;
+                k.aero.configuration = Some(alone.clone());
+                evaluate(&k).ok().map(|r| overall(&r.analysis))
+            })
+            .collect();
+        for (o, v) in t.tailless.iter().zip(judged) {
             assert_eq!(o.verdict, v, "the wing alone at M = {}", o.mach);
             if v != Some(Verdict::Meets) {
                 assert!(t.cures().contains(&short(o.mach)), "{}", t.cures());
