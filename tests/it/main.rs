@@ -5,6 +5,7 @@
 //! (`lib.rs`).
 
 mod generated_code;
+mod manifests;
 mod quartic_reference;
 mod responses;
 mod stability_properties;
