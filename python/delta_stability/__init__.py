@@ -136,11 +136,15 @@ def sweep(
     cg: Axis = None,
     mu1: Axis = None,
     i_b: Axis = None,
+    altitude: Axis = None,
+    mass: Axis = None,
+    I_y: Axis = None,
     damping: Optional[str] = None,
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
     derivatives: bool = False,
     datcom: Optional[str] = None,
+    iy: Axis = None,
 ) -> SweepResult:
     """Design points over a Cartesian grid of Mach number, leading-edge sweep
     (degrees), c.g. position h, relative density μ₁ and pitching inertia i_B:
@@ -168,7 +172,11 @@ def sweep(
     every iterate). With a physical flight condition in the config (``[flight]
     altitude``, ``mass``, ``I_y``) each planform's μ₁, i_B and C_L·M² (eq 24)
     follow from it — the ``mu1`` and ``i_b`` axes may then not be given — and
-    the columns carry the modes in seconds.
+    the columns carry the modes in seconds. Its own quantities are axes too,
+    as the command line's ``--altitude``, ``--mass`` and ``--iy``:
+    ``altitude`` (pressure altitudes), ``mass`` and ``I_y`` (``iy`` is the
+    same), in the config's units; given any of them, the grid's shape has
+    eight dimensions (those three last, each one value where not given).
 
     Raises :class:`InputError` for a bad config, option or axis value; a point
     outside a theory's validity is not an error but has its ``error`` column
@@ -181,6 +189,9 @@ def sweep(
         cg=cg,
         mu1=mu1,
         i_b=i_b,
+        altitude=altitude,
+        mass=mass,
+        i_y=_one_of("I_y", I_y, "iy", iy),
         damping=damping,
         aero=aero,
         omega_bar=omega_bar,
@@ -207,6 +218,7 @@ def uncertainty(
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
     sampling: Optional[str] = None,
+    datcom: Optional[str] = None,
 ):  # -> pandas.DataFrame
     """The config's ``[uncertainty]`` study at each Mach number: what
     ``delta-stability uncertainty`` computes (docs/uncertainty.md), by the
@@ -223,7 +235,9 @@ def uncertainty(
     al. 2010; Jansen 1999) for the margin Δm_θ̇ (eq 41) and for ζ;
     ``sampling="sobol"`` draws Owen-scrambled Sobol′ points (Burley 2020)
     instead of random ones (default: the config's ``sampling``, else
-    ``"random"``), an error nearer 1/N than 1/√N.
+    ``"random"``), an error nearer 1/N than 1/√N. ``damping``, ``aero``,
+    ``omega_bar`` and ``datcom`` override the config's model as for
+    :func:`analyze`.
 
     Returns a ``pandas.DataFrame`` in long form, one row per Mach number and
     quantity: columns ``mach``, ``quantity`` (``p_standard_met``,
@@ -250,6 +264,7 @@ def uncertainty(
         aero=aero,
         omega_bar=omega_bar,
         sampling=sampling,
+        datcom=datcom,
     )
     df = pd.read_csv(io.StringIO(csv))
     df.attrs["results"] = json.loads(text)
@@ -282,6 +297,13 @@ def report(out: Optional[PathLike] = "report", *, figures: bool = True) -> dict:
     import json
 
     return json.loads(_native.report_run(out, figures=figures))
+
+
+def _one_of(name: str, value, alias: str, alias_value):
+    """The value of an argument given by its name or its alias, not both."""
+    if value is not None and alias_value is not None:
+        raise TypeError(f"give {name} or {alias}, not both (the same axis)")
+    return alias_value if value is None else value
 
 
 def _argument_error(field: str, message: str) -> InputError:

@@ -125,6 +125,21 @@ class Quartic:
     derivatives: Derivatives
     tau_s: Optional[float]
     notation: str
+    roots_s: Optional[npt.NDArray[np.complex128]]
+    """The roots in 1/s (``roots`` over τ), where τ is known."""
+    mode_shapes: list[dict[str, Any]]
+    """Each mode's eigenvector (u/V, α, q, θ) of eqs (2)–(3), θ = 1."""
+    damp: Optional[list[dict[str, Any]]]
+    """The modes in seconds (``damp``), when τ is known."""
+    short_period_frequency: Optional[dict[str, Any]]
+    """MIL-F-8785C §3.2.2.1.1: ω_sp against n/α, the CAP and the levels,
+    when τ is known and the short period oscillates."""
+    def state_space(self) -> dict[str, Any]:
+        """As ``quartic FILE --state-space OUT.json`` exports it: ``A``,
+        ``B``, ``C``, ``D`` (2-D arrays; ``B``, ``D`` None without a
+        control), the states', inputs' and outputs' names and units,
+        ``time_unit``, ``eigenvalues`` and the scripts (``python_control``,
+        ``matlab``)."""
     def to_dict(self) -> dict[str, Any]:
         """As ``delta-stability quartic FILE --json``."""
 
@@ -163,6 +178,14 @@ class Analysis:
     short_period_frequency: Optional[dict[str, Any]]
     """MIL-F-8785C §3.2.2.1.1: ω_sp against n/α, the CAP and the levels,
     when τ is known and the short period oscillates."""
+    roots_s: Optional[npt.NDArray[np.complex128]]
+    """The roots in 1/s (``roots`` over τ), at a physical flight condition."""
+    def state_space(self) -> dict[str, Any]:
+        """As ``analyze CONFIG --state-space OUT.json`` exports it (see
+        ``Quartic.state_space``)."""
+    def write_derivatives(self, path: PathLike) -> None:
+        """Writes the design point as a derivative file, as ``analyze CONFIG
+        --write-derivatives OUT.toml`` does."""
     def to_dict(self) -> dict[str, Any]:
         """As ``delta-stability analyze CONFIG --json``."""
 
@@ -198,6 +221,7 @@ def uncertainty_run(
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
     sampling: Optional[str] = None,
+    datcom: Optional[str] = None,
 ) -> tuple[str, str]:
     """The raw result of ``delta_stability.uncertainty``: the JSON of
     ``delta-stability uncertainty --json`` and its long CSV."""
@@ -215,6 +239,9 @@ def sweep_columns(
     cg: Axis = None,
     mu1: Axis = None,
     i_b: Axis = None,
+    altitude: Axis = None,
+    mass: Axis = None,
+    i_y: Axis = None,
     damping: Optional[str] = None,
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,

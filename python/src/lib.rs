@@ -13,6 +13,7 @@
 use pyo3::prelude::*;
 
 mod convert;
+mod engineering;
 mod errors;
 mod inputs;
 mod json;

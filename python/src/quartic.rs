@@ -4,6 +4,7 @@
 //! line's `quartic --json` and `analyze --json`, serialized from the same
 //! library views.
 
+use crate::engineering;
 use crate::errors::{argument, failure, input_error};
 use crate::guard;
 use crate::inputs::derivative_file;
@@ -20,6 +21,7 @@ use stability_core::dynamics::modes::Mode as CoreMode;
 use stability_io::design_point::results;
 use stability_io::input::DerivativeFile;
 use stability_io::views::{AnalyzeJson, QuarticJson};
+use std::path::{Path, PathBuf};
 
 /// A longitudinal derivative set in the report's notation (§3, eqs 2–4):
 /// the twelve non-dimensional derivatives and the three flight parameters
@@ -365,6 +367,14 @@ const ANALYSIS_ATTRS: &[Attr] = &[
     always("verdict_reasons", &["verdict", "reasons"]),
     always("criteria", &["criteria"]),
     always("classical", &["classical_eq7"]),
+    // the engineer's outputs
+    always("mode_shapes", &["mode_shapes"]),
+    optional("damp", &["damp"], SECONDS),
+    optional(
+        "short_period_frequency",
+        &["short_period_frequency"],
+        "τ known and n/α defined, the short period oscillating",
+    ),
 ];
 
 /// The attributes of a [`Quartic`].
@@ -375,6 +385,9 @@ const QUARTIC_ATTRS: &[Attr] = &[
     ANALYSIS_ATTRS[3],
     ANALYSIS_ATTRS[4],
     ANALYSIS_ATTRS[5],
+    ANALYSIS_ATTRS[6],
+    ANALYSIS_ATTRS[7],
+    ANALYSIS_ATTRS[8],
     always("warnings", &["warnings"]),
     always("notation", &["notation"]),
 ];
@@ -387,14 +400,10 @@ const DESIGN_POINT_ATTRS: &[Attr] = &[
     ANALYSIS_ATTRS[3],
     ANALYSIS_ATTRS[4],
     ANALYSIS_ATTRS[5],
+    ANALYSIS_ATTRS[6],
+    ANALYSIS_ATTRS[7],
+    ANALYSIS_ATTRS[8],
     optional("flight", &["flight"], "a physical flight condition"),
-    always("mode_shapes", &["mode_shapes"]),
-    optional("damp", &["damp"], SECONDS),
-    optional(
-        "short_period_frequency",
-        &["short_period_frequency"],
-        "τ known and n/α defined, the short period oscillating",
-    ),
     always("aerodynamics", &["aerodynamics"]),
     always("damping", &["damping"]),
     always("case", &["case"]),
@@ -443,6 +452,8 @@ pub struct Quartic {
     file: DerivativeFile,
     analysis: stability_core::analysis::Analysis,
     json: Value,
+    /// `--state-space`'s JSON ([`engineering::export`]).
+    state_space: Value,
 }
 
 #[pymethods]
@@ -461,6 +472,20 @@ impl Quartic {
     #[getter]
     fn roots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<Complex64>> {
         roots(py, &self.analysis)
+    }
+    /// The four roots in 1/s (`roots` over τ), where τ is known; else None.
+    #[getter]
+    fn roots_s<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<Complex64>>> {
+        engineering::roots_s(py, &self.analysis.roots, self.file.tau())
+    }
+    /// The linear model ẋ = A x + B δ, y = C x + D δ of eqs (2)–(3), as
+    /// `quartic --state-space` exports it: a dict of its JSON's keys, `A`,
+    /// `B`, `C`, `D` as 2-D arrays (`B`, `D` None without a `[control]`),
+    /// in seconds where τ is known (`time_unit`), with the states', inputs'
+    /// and outputs' names and units, `eigenvalues` and the python-control
+    /// and MATLAB scripts' text (`python_control`, `matlab`).
+    fn state_space<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        engineering::state_space(py, &self.state_space)
     }
     /// The modes, fastest first.
     #[getter]
@@ -486,7 +511,9 @@ impl Quartic {
         getattr(py, "Quartic", &self.json, QUARTIC_ATTRS, name)
     }
     fn __dir__(&self) -> Vec<&'static str> {
-        dir(QUARTIC_ATTRS, &OWN[..8])
+        let mut own = OWN[..8].to_vec();
+        own.extend(["roots_s", "state_space"]);
+        dir(QUARTIC_ATTRS, &own)
     }
     /// Everything, as `delta-stability quartic FILE --json` prints it
     /// (`file` is the path, or "<dict>").
@@ -523,27 +550,33 @@ fn repr(class: &str, a: &stability_core::analysis::Analysis) -> String {
 /// InputError (a ValueError) with the command line's message, naming the
 /// file (or "<dict>"), line and field.
 #[pyfunction]
-#[pyo3(signature = (source=None, /, *, notation=None, **kwargs))]
+#[pyo3(signature = (source=None, /, *, notation=None, class_=None, **kwargs))]
 pub fn quartic(
     py: Python<'_>,
     source: Option<&Bound<'_, PyAny>>,
     notation: Option<&str>,
+    class_: Option<&str>,
     kwargs: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<Quartic> {
     guard(|| {
         let file = derivative_file(source, notation, kwargs)?;
-        let (analysis, json) = py
+        let class = engineering::class(class_)?;
+        let control = engineering::control(&file.path)?;
+        let (analysis, json, model) = py
             .detach(|| -> Result<_, _> {
-                let (a, engineering) = file.evaluated(None, None)?;
+                let (a, engineering) = file.evaluated(control.as_ref(), class)?;
                 let json = serde_json::to_value(QuarticJson::new(&file, &a, &engineering));
-                Ok((a, json))
+                Ok((a, json, engineering.model))
             })
             .map_err(|e| input_error(&e))?;
         let json = json.map_err(|e| PyTypeError::new_err(e.to_string()))?;
+        let state_space =
+            engineering::export(&file.path, "quartic", &model, file.tau(), analysis.roots)?;
         Ok(Quartic {
             file,
             analysis,
             json,
+            state_space,
         })
     })
 }
@@ -574,6 +607,10 @@ pub struct Analysis {
     /// τ = m/(½ρSV) (s) at a physical flight condition.
     tau: Option<f64>,
     json: Value,
+    /// `--state-space`'s JSON ([`engineering::export`]).
+    state_space: Value,
+    /// `--write-derivatives`' file, and the config's path when it is a file.
+    derivative_file: (String, Option<PathBuf>),
 }
 
 #[pymethods]
@@ -596,6 +633,26 @@ impl Analysis {
     #[getter]
     fn roots<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<Complex64>> {
         roots(py, &self.result.analysis)
+    }
+    /// The four roots in 1/s (`roots` over τ) at a physical flight
+    /// condition; else None.
+    #[getter]
+    fn roots_s<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<Complex64>>> {
+        engineering::roots_s(py, &self.result.analysis.roots, self.tau)
+    }
+    /// The linear model of eqs (2)–(3), as `analyze --state-space` exports
+    /// it (see `Quartic.state_space`).
+    fn state_space<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        engineering::state_space(py, &self.state_space)
+    }
+    /// Writes the design point as a derivative file that `quartic()` and
+    /// every command read: `analyze --write-derivatives OUT.toml`'s file
+    /// (report notation, with τ where known), read back before it is
+    /// written, never over the config. Raises InputError naming the path.
+    fn write_derivatives(&self, path: PathBuf) -> PyResult<()> {
+        let (text, config) = &self.derivative_file;
+        let d = &self.result.derivatives;
+        engineering::write_derivatives(&path, text, d, config.as_deref())
     }
     /// The modes, fastest first (with their times in seconds at a
     /// physical flight condition).
@@ -621,7 +678,7 @@ impl Analysis {
     }
     fn __dir__(&self) -> Vec<&'static str> {
         let mut own = OWN[..8].to_vec();
-        own.push("warnings");
+        own.extend(["warnings", "roots_s", "state_space", "write_derivatives"]);
         dir(DESIGN_POINT_ATTRS, &own)
     }
     /// Everything, as `delta-stability analyze CONFIG --json` prints it.
@@ -654,7 +711,7 @@ impl Analysis {
 /// (--datcom: a Digital DATCOM output's tables, docs/tables.md). Raises
 /// InputError with the command line's message.
 #[pyfunction]
-#[pyo3(signature = (config, /, *, mach=None, cg=None, damping=None, aero=None, omega_bar=None, datcom=None))]
+#[pyo3(signature = (config, /, *, mach=None, cg=None, damping=None, aero=None, omega_bar=None, datcom=None, class_=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn analyze(
     py: Python<'_>,
@@ -665,6 +722,7 @@ pub fn analyze(
     aero: Option<&str>,
     omega_bar: Option<f64>,
     datcom: Option<&str>,
+    class_: Option<&str>,
 ) -> PyResult<Analysis> {
     guard(|| {
         let model = Model {
@@ -674,15 +732,29 @@ pub fn analyze(
             datcom,
         };
         let cfg = overridden(config, mach, cg, model)?;
-        let (result, tau, json) = py
+        let class = engineering::class(class_)?;
+        let (r, json) = py
             .detach(|| -> Result<_, stability_io::Failure> {
-                let r = results(&cfg, None)?;
+                let r = results(&cfg, class)?;
                 let json = serde_json::to_value(AnalyzeJson::new(&cfg, &r));
-                let tau = r.tau();
-                Ok((r.result, tau, json))
+                Ok((r, json))
             })
             .map_err(failure)?;
         let json = json.map_err(|e| PyTypeError::new_err(e.to_string()))?;
-        Ok(Analysis { result, tau, json })
+        let tau = r.tau();
+        let model = &r.engineering.model;
+        let roots = r.result.analysis.roots;
+        let state_space = engineering::export(&cfg.path, "analyze", model, tau, roots)?;
+        let made_by = format!("delta_stability.analyze({})", cfg.path);
+        let text = stability_io::design_point::derivative_text(&cfg, &r, &made_by);
+        let file = Path::new(&cfg.path);
+        let config = file.is_file().then(|| file.to_path_buf());
+        Ok(Analysis {
+            result: r.result,
+            tau,
+            json,
+            state_space,
+            derivative_file: (text, config),
+        })
     })
 }

@@ -63,6 +63,10 @@ pub struct AxisArgs<'a, 'py> {
     pub cg: Option<&'a Bound<'py, PyAny>>,
     pub mu1: Option<&'a Bound<'py, PyAny>>,
     pub i_b: Option<&'a Bound<'py, PyAny>>,
+    /// A physical flight condition's axes ([`NAMES`]' last three).
+    pub altitude: Option<&'a Bound<'py, PyAny>>,
+    pub mass: Option<&'a Bound<'py, PyAny>>,
+    pub i_y: Option<&'a Bound<'py, PyAny>>,
 }
 
 /// The arguments' names, in the order of the library's axes (those of a
@@ -94,13 +98,15 @@ pub fn sweep_of(a: &AxisArgs<'_, '_>, cfg: &Config) -> PyResult<Sweep> {
         cg: read(2, a.cg)?,
         mu1: read(3, a.mu1)?,
         i_b: read(4, a.i_b)?,
-        ..Given::default()
+        altitude: read(5, a.altitude)?,
+        mass: read(6, a.mass)?,
+        i_y: read(7, a.i_y)?,
     };
     let axes = axes(given, &cfg.case, cfg.physical.is_some())
         .map_err(|e| argument(NAMES[e.axis], e.message))?;
-    let n = [&axes.mach, &axes.sweep_deg, &axes.cg, &axes.mu1, &axes.i_b]
+    let n = shape(&axes)
         .iter()
-        .try_fold(1usize, |n, v| n.checked_mul(v.len()));
+        .try_fold(1usize, |n, len| n.checked_mul(*len));
     if n.is_none_or(|n| n > MAX_POINTS) {
         // the count bounded in length, however large the grid
         let points = stability_core::design::sweep::count(n, "points");
@@ -112,6 +118,23 @@ pub fn sweep_of(a: &AxisArgs<'_, '_>, cfg: &Config) -> PyResult<Sweep> {
         None => Sweep::new(cfg.case.clone(), axes),
     }
     .map_err(|e| sweep_error(cfg, e))
+}
+
+/// The grid's shape: the five axes of [`NAMES`], then the physical
+/// flight condition's three where any of them is given (each the
+/// condition's one value where it is not), the last varying fastest.
+pub fn shape(a: &stability_core::design::sweep::Axes) -> Vec<usize> {
+    let mut shape = vec![
+        a.mach.len(),
+        a.sweep_deg.len(),
+        a.cg.len(),
+        a.mu1.len(),
+        a.i_b.len(),
+    ];
+    if a.has_flight_axes() {
+        shape.extend([&a.altitude, &a.mass, &a.i_y].map(|v| v.len().max(1)));
+    }
+    shape
 }
 
 /// A column, as numpy takes it.
@@ -250,7 +273,7 @@ pub fn sweep_columns_doc() -> String {
 /// The sweep's columns as a dict of numpy arrays (see [`to_dict`]);
 /// `delta_stability.sweep` decodes the verdicts and errors.
 #[pyfunction]
-#[pyo3(signature = (config, *, mach=None, sweep=None, cg=None, mu1=None, i_b=None, damping=None, aero=None, omega_bar=None, derivatives=false, datcom=None))]
+#[pyo3(signature = (config, *, mach=None, sweep=None, cg=None, mu1=None, i_b=None, altitude=None, mass=None, i_y=None, damping=None, aero=None, omega_bar=None, derivatives=false, datcom=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep_columns<'py>(
     py: Python<'py>,
@@ -260,6 +283,9 @@ pub fn sweep_columns<'py>(
     cg: Option<&Bound<'py, PyAny>>,
     mu1: Option<&Bound<'py, PyAny>>,
     i_b: Option<&Bound<'py, PyAny>>,
+    altitude: Option<&Bound<'py, PyAny>>,
+    mass: Option<&Bound<'py, PyAny>>,
+    i_y: Option<&Bound<'py, PyAny>>,
     damping: Option<&str>,
     aero: Option<&str>,
     omega_bar: Option<f64>,
@@ -280,16 +306,12 @@ pub fn sweep_columns<'py>(
             cg,
             mu1,
             i_b,
+            altitude,
+            mass,
+            i_y,
         };
         let s = sweep_of(&axes, &cfg)?;
-        let a = s.axes();
-        let shape = vec![
-            a.mach.len(),
-            a.sweep_deg.len(),
-            a.cg.len(),
-            a.mu1.len(),
-            a.i_b.len(),
-        ];
+        let shape = shape(s.axes());
         // a panic in here unwinds through `detach`, which takes the GIL
         // back, to `guard`
         let columns = py.detach(|| evaluate(&s, derivatives));

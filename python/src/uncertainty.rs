@@ -22,7 +22,7 @@ use stability_io::uncertainty::{CSV_HEADER, UncertaintyJson, csv_rows};
 /// JSON (a str, `delta-stability uncertainty --json`'s) and the long CSV
 /// (mach, quantity, value, low, high).
 #[pyfunction]
-#[pyo3(signature = (config, /, *, mach, samples=10_000, seed=1, sobol=false, damping=None, aero=None, omega_bar=None, sampling=None))]
+#[pyo3(signature = (config, /, *, mach, samples=10_000, seed=1, sobol=false, damping=None, aero=None, omega_bar=None, sampling=None, datcom=None))]
 #[allow(clippy::too_many_arguments)] // the keywords of the Python function
 pub fn uncertainty_run(
     py: Python<'_>,
@@ -35,6 +35,7 @@ pub fn uncertainty_run(
     aero: Option<&str>,
     omega_bar: Option<f64>,
     sampling: Option<&str>,
+    datcom: Option<&str>,
 ) -> PyResult<(String, String)> {
     guard(|| {
         let machs: Vec<f64> = match mach.extract::<String>() {
@@ -54,7 +55,7 @@ pub fn uncertainty_run(
             damping,
             aero,
             omega_bar,
-            datcom: None,
+            datcom,
         };
         let cfg = overridden(config, None, None, model)?;
         let study = stability_io::config::uncertainty::read(&cfg)

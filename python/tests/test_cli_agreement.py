@@ -317,12 +317,16 @@ SWEEPS = {
     "a physical flight condition": ("examples/delta-60-physical.toml",
                                     dict(mach="0.6:1.5:0.9", sweep="70",
                                          cg="0.2:0.3:0.1", derivatives=True)),
+    "a physical flight condition's own axes": ("examples/delta-60-physical.toml",
+                                               dict(mach="0.6", altitude="0:11000:11000",
+                                                    mass="10000:14000:4000", I_y="70000")),
 }
 
 
 def _flags(kwargs):
     """The command line's flags for sweep()'s keyword arguments."""
-    names = {"i_b": "--ib", "omega_bar": "--omega-bar", "derivatives": "--derivatives"}
+    names = {"i_b": "--ib", "omega_bar": "--omega-bar", "derivatives": "--derivatives",
+             "I_y": "--iy"}
     out = []
     for k, v in kwargs.items():
         flag = names.get(k, f"--{k}")
@@ -382,3 +386,81 @@ def test_report_writes_the_command_line_s_summary_and_figures(cli_report, tmp_pa
     for name in figures:
         assert (out / name).read_bytes() == (cli_report / name).read_bytes(), name
     assert sorted(p.name for p in out.iterdir()) == sorted(figures + ["summary.json"])
+
+
+def test_roots_in_seconds_damp_and_mode_shapes_are_the_cli_s(cli):
+    """Quartic.roots_s, damp and mode_shapes: the command line's re_s/im_s,
+    damp table and mode shapes (Etkin's 747, τ known); where τ is not
+    known, roots_s and damp are None."""
+    path = "examples/boeing-747-american.toml"
+    q, j = ds.quartic(path), cli.json("quartic", path)
+    theirs = [complex(r["re_s"], r["im_s"]) for r in j["roots"]]
+    np.testing.assert_allclose(q.roots_s, theirs, rtol=1e-15)
+    np.testing.assert_allclose(q.roots_s * q.tau_s, q.roots, rtol=1e-15)
+    assert q.damp == j["damp"] and q.mode_shapes == j["mode_shapes"]
+    assert q.short_period_frequency == j.get("short_period_frequency")
+    n = ds.quartic("examples/tailless-delta-45.toml")
+    assert n.tau_s is None and n.roots_s is None and n.damp is None
+
+
+def _exported(cli, tmp_path, *args):
+    out = tmp_path / "ss.json"
+    cli.run(*args, "--state-space", out)
+    return json.loads(out.read_text())
+
+
+def test_state_space_is_the_cli_export_and_its_eigenvalues_are_the_roots(cli, tmp_path):
+    """state_space(): the matrices and names `--state-space` writes, as
+    arrays; the eigenvalues of A (numpy's, an independent route from the
+    quartic's roots) are the roots in the model's unit of time; with a
+    [control] table B and D are there."""
+    for command, path, call in [
+        ("quartic", "examples/boeing-747-american.toml", ds.quartic),
+        ("quartic", "examples/tailless-delta-45.toml", ds.quartic),
+        ("analyze", "examples/delta-60-physical.toml", ds.analyze),
+    ]:
+        r = call(path)
+        ours, theirs = r.state_space(), _exported(cli, tmp_path, command, path)
+        assert set(ours) == set(theirs), path
+        for k in ["A", "B", "C", "D"]:
+            if theirs[k] is None:
+                assert ours[k] is None, (path, k)
+            else:
+                assert ours[k].tolist() == theirs[k], (path, k)
+        for k in ["states", "inputs", "outputs", "time_unit", "python_control", "matlab"]:
+            assert ours[k] == theirs[k], (path, k)
+        roots = r.roots if r.roots_s is None else r.roots_s
+        assert ours["time_unit"] == ("tau" if r.roots_s is None else "s"), path
+        eig = np.sort_complex(np.linalg.eigvals(ours["A"]))
+        np.testing.assert_allclose(eig, np.sort_complex(roots), rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(np.sort_complex(ours["eigenvalues"]), np.sort_complex(roots),
+                                   rtol=1e-15)
+    # examples/delta-60-physical.toml has a [control]: the elevon's column
+    assert ours["B"] is not None and ours["B"].shape == (4, 1)
+
+
+def test_write_derivatives_is_the_cli_s_file_and_reads_back(cli, tmp_path):
+    """Analysis.write_derivatives: the file `analyze --write-derivatives`
+    writes (but the line naming what wrote it), whose quartic is the design
+    point's; never over the config it came from."""
+    config = "examples/delta-60-physical.toml"
+    a = ds.analyze(config)
+    ours, theirs = tmp_path / "ours.toml", tmp_path / "theirs.toml"
+    a.write_derivatives(ours)
+    cli.run("analyze", config, "--write-derivatives", theirs)
+
+    def kept(p):
+        return [l for l in p.read_text().splitlines() if not l.startswith("# Written by")]
+
+    assert kept(ours) == kept(theirs)
+    assert "delta_stability.analyze(" in ours.read_text()
+    q = ds.quartic(ours)
+    assert q.derivatives == a.derivatives
+    np.testing.assert_allclose(q.roots, a.roots, rtol=1e-15)
+    copy = tmp_path / "config.toml"
+    copy.write_text((EXAMPLES / "delta-60-physical.toml").read_text())
+    b = ds.analyze(str(copy))
+    with pytest.raises(ds.InputError) as e:
+        b.write_derivatives(copy)
+    assert "config" in str(e.value)
+    assert copy.read_text() == (EXAMPLES / "delta-60-physical.toml").read_text()

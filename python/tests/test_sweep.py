@@ -229,3 +229,26 @@ def test_the_gil_is_released_during_a_sweep():
     thread.join()
     assert state["error"] is None, state["error"]
     assert state["seen"] > 0, "the main thread never ran while the sweep did"
+
+
+def test_a_physical_flight_condition_s_own_axes_shape_the_grid():
+    """altitude, mass and I_y (iy, the command line's --iy, is the same) as
+    axes: three more dimensions of the grid, last; each point's condition
+    is its altitude's, mass's and I_y's (the columns say so); a config
+    without a physical flight condition refuses them, naming the axis."""
+    path = "examples/delta-60-physical.toml"
+    s = ds.sweep(path, mach=0.6, altitude=[0.0, 11000.0], mass=[10000.0, 14000.0])
+    assert s.shape == (1, 1, 1, 1, 1, 2, 2, 1)
+    assert list(s["altitude"]) == [0.0, 0.0, 11000.0, 11000.0]
+    assert list(s["mass"]) == [10000.0, 14000.0, 10000.0, 14000.0]
+    # a heavier aircraft at the same altitude: a larger μ₁
+    assert s["mu1"][1] > s["mu1"][0] and s["mu1"][3] > s["mu1"][2]
+    a = ds.sweep(path, mach=0.6, I_y=[60000.0, 80000.0])
+    b = ds.sweep(path, mach=0.6, iy="60000:80000:20000")
+    assert a.shape == b.shape == (1, 1, 1, 1, 1, 1, 1, 2)
+    assert np.array_equal(a["sp_re"], b["sp_re"]) and a["i_b"][1] > a["i_b"][0]
+    with pytest.raises(TypeError):
+        ds.sweep(path, mach=0.6, I_y=1.0, iy=1.0)
+    with pytest.raises(ds.InputError) as e:
+        ds.sweep("examples/delta-60.toml", mach=0.6, altitude=[0.0, 1000.0])
+    assert "altitude" in str(e.value)
