@@ -296,7 +296,7 @@ def test_damping_derivatives_are_analyze_s(cli, theory, mach):
 
 SWEEPS = {
     "derivatives": ("examples/delta-60.toml",
-                    dict(mach="0.5:2:0.25", cg="0.2:0.3:0.05", mu1="50:450:200",
+                    dict(mach="0.5:2:0.25", cg="0.2:0.3:0.05", mu1="50:450:400",
                          sweep="45:75:15", derivatives=True)),
     "the config's sweep, faired-slender": ("examples/delta-45.toml",
                                            dict(mach="0.6:1.6:0.2", i_b="0.06:0.1:0.02",
