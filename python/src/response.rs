@@ -8,17 +8,22 @@ use numpy::IntoPyArray;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use stability_core::dynamics::response::{Computed, MAX_STEPS};
-use stability_core::numerics::display::Num;
 use stability_io::input::DerivativeFile;
 use stability_io::input::suggest::did_you_mean;
-use stability_io::response::{Disturbance, Given, Spec, respond};
+use stability_io::response::{Asked, Disturbance, Style, respond};
 
 /// The longitudinal response (§11) of a derivative set to an elevon step
 /// (`input="step"`, the moment m₀ from rest) or to an initial disturbance
 /// (`input="initial"`, ŵ = w0), solved exactly from the state-space form of
 /// eqs (2): the matrix exponential of the augmented system sampled at
-/// `steps + 1` times from 0 to `until` (units of τ). For a step it also
-/// gives the report's two-degree-of-freedom closed form, eqs (44)–(45).
+/// `steps + 1` times from 0 to `until` (units of τ) or `until_s` (seconds,
+/// where τ is known: a set with `[dimensional]`, or a physical flight
+/// condition). For a step it also gives the report's two-degree-of-freedom
+/// closed form, eqs (44)–(45); `elevator_deg` makes the step a deflection
+/// of the file's `[control]` in degrees (its force and moment derivatives)
+/// instead of m0 (default 1); `w0` defaults to 0.01. The options are the
+/// command line's (`--until-s`, `--elevator-deg`), checked by the same
+/// code.
 ///
 /// `neglect_zq_zwdot` sets z_q = z_ẇ = 0 (Fig 38); `neglect_u` holds
 /// û = 0 (two degrees of freedom). The derivative set is given as to
@@ -30,24 +35,53 @@ use stability_io::response::{Disturbance, Given, Spec, respond};
 /// InputError with the command line's message (e.g. a response that
 /// overflows before `until`).
 #[pyfunction]
-#[pyo3(signature = (source=None, /, *, until, input="step", steps=400, m0=1.0, w0=0.01, neglect_zq_zwdot=false, neglect_u=false, notation=None, **kwargs))]
+#[pyo3(signature = (source=None, /, *, until=None, input="step", steps=400, m0=None, w0=None, neglect_zq_zwdot=false, neglect_u=false, notation=None, until_s=None, elevator_deg=None, **kwargs))]
 #[allow(clippy::too_many_arguments)]
 pub fn response<'py>(
     py: Python<'py>,
     source: Option<&Bound<'py, PyAny>>,
-    until: f64,
+    until: Option<f64>,
     input: &str,
     steps: usize,
-    m0: f64,
-    w0: f64,
+    m0: Option<f64>,
+    w0: Option<f64>,
     neglect_zq_zwdot: bool,
     neglect_u: bool,
     notation: Option<&str>,
+    until_s: Option<f64>,
+    elevator_deg: Option<f64>,
     kwargs: Option<&Bound<'py, PyDict>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let file = derivative_file(source, notation, kwargs)?;
-        let spec = spec(input, until, steps, m0, w0, neglect_zq_zwdot, neglect_u)?;
+        let control = crate::engineering::control(&file.path)?;
+        let asked = Asked {
+            input: disturbance(input)?,
+            until: checked("until", until, true)?,
+            until_s: checked("until_s", until_s, true)?,
+            steps: checked_steps(steps)?,
+            m0: checked("m0", m0, false)?,
+            w0: checked("w0", w0, false)?,
+            elevator_deg: checked("elevator_deg", elevator_deg, false)?,
+            neglect_zq_zwdot,
+            neglect_u,
+            style: Style::Keywords,
+        };
+        if asked.until.is_some() && asked.until_s.is_some() {
+            return Err(argument(
+                "until_s",
+                "give until (units of τ) or until_s (seconds), not both",
+            ));
+        }
+        if asked.m0.is_some() && asked.elevator_deg.is_some() {
+            return Err(argument(
+                "elevator_deg",
+                "give m0 or elevator_deg, not both",
+            ));
+        }
+        let spec = asked
+            .spec(&file, control.as_ref())
+            .map_err(|e| input_error(&e))?;
         let r = py
             .detach(|| respond(&file, &spec))
             .map_err(|e| input_error(&e))?;
@@ -55,62 +89,40 @@ pub fn response<'py>(
     })
 }
 
-/// The response's specification from the function's arguments, checked
-/// as the command line checks its options.
-#[allow(clippy::too_many_arguments)]
-fn spec(
-    input: &str,
-    until: f64,
-    steps: usize,
-    m0: f64,
-    w0: f64,
-    neglect_zq_zwdot: bool,
-    neglect_u: bool,
-) -> PyResult<Spec> {
-    let input = Disturbance::parse(input).ok_or_else(|| {
+/// The input named `input`.
+fn disturbance(input: &str) -> PyResult<Disturbance> {
+    Disturbance::parse(input).ok_or_else(|| {
         let hint = did_you_mean(input, ["step", "initial"]);
         argument(
             "input",
             format!("`{input}` is neither `step` nor `initial`{hint}"),
         )
-    })?;
-    if !(until > 0.0 && until.is_finite()) {
-        return Err(argument(
-            "until",
-            format!("must be positive and finite, not {until}"),
-        ));
+    })
+}
+
+/// `value`, finite (and positive for a span), as the command line's
+/// parser checks its options.
+fn checked(name: &str, value: Option<f64>, positive: bool) -> PyResult<Option<f64>> {
+    match value {
+        Some(v) if !v.is_finite() => {
+            Err(argument(name, format!("must be a finite number, not {v}")))
+        }
+        Some(v) if positive && v <= 0.0 => Err(argument(
+            name,
+            format!("must be positive and finite, not {v}"),
+        )),
+        v => Ok(v),
     }
+}
+
+fn checked_steps(steps: usize) -> PyResult<usize> {
     if steps == 0 || steps > MAX_STEPS {
         return Err(argument(
             "steps",
             format!("must lie between 1 and {MAX_STEPS}, not {steps}"),
         ));
     }
-    for (name, v) in [("m0", m0), ("w0", w0)] {
-        if !v.is_finite() {
-            return Err(argument(name, format!("must be a finite number, not {v}")));
-        }
-    }
-    Ok(Spec {
-        input,
-        until,
-        steps,
-        m0,
-        x0: 0.0,
-        z0: 0.0,
-        w0,
-        neglect_zq_zwdot,
-        neglect_u,
-        given: Given {
-            span: format!("until={}", Num(until)),
-            span_option: "until",
-            steps: format!("steps={steps}"),
-            input: match input {
-                Disturbance::Step => format!("m0={}", Num(m0)),
-                Disturbance::Initial => format!("w0={}", Num(w0)),
-            },
-        },
-    })
+    Ok(steps)
 }
 
 /// The response's samples as columns of numpy arrays (the CSV's names).

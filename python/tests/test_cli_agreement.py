@@ -282,6 +282,41 @@ def test_response_is_the_cli_csv(cli, path, flags, kwargs):
         np.testing.assert_allclose(ours[k], v, rtol=5e-12, atol=0, err_msg=k)
 
 
+def test_response_in_seconds_and_degrees_is_the_cli_csv(cli, tmp_path):
+    """until_s and elevator_deg (--until-s, --elevator-deg) on a set with τ
+    and a [control] (the physical design point's derivative file): the
+    command line's CSV; and where they cannot apply, the command line's
+    reasons in Python's words."""
+    f = tmp_path / "point.toml"
+    ds.analyze("examples/delta-60-physical.toml").write_derivatives(f)
+    flags = ["--until-s", "6", "--elevator-deg", "-1", "--steps", "60"]
+    theirs = _csv_columns(cli.run("response", f, *flags).stdout)
+    ours = ds.response(f, until_s=6.0, elevator_deg=-1.0, steps=60)
+    assert ours["t_s"][-1] == pytest.approx(6.0, rel=1e-14)
+    for k, v in theirs.items():
+        if np.all(np.isnan(v)):  # eq (45) is the moment step's alone
+            assert k not in ours
+            continue
+        np.testing.assert_allclose(ours[k], v, rtol=5e-12, atol=0, err_msg=k)
+    no_tau = "examples/tailless-delta-45.toml"
+    for path, cli_flags, kwargs, words in [
+        (no_tau, ["--until-s", "5"], {"until_s": 5.0}, "until_s=5: times in seconds need τ"),
+        (no_tau, ["--until", "5", "--elevator-deg", "1"], {"until": 5.0, "elevator_deg": 1.0},
+         "elevator_deg=1: the file has no [control] table"),
+        (f, ["--until", "5", "--input", "initial", "--m0", "1"],
+         {"until": 5.0, "input": "initial", "m0": 1.0},
+         "m0 is the moment step of input=step: it does nothing with input=initial"),
+    ]:
+        message = cli.error("response", path, *cli_flags)
+        with pytest.raises(ds.InputError) as e:
+            ds.response(path, **kwargs)
+        assert words in str(e.value), str(e.value)
+        # the same sentence, in the command line's words
+        cli_words = (words.replace("until_s=", "--until-s ").replace("elevator_deg=", "--elevator-deg ")
+                     .replace("m0 is", "--m0 is").replace("input=", "--input "))
+        assert cli_words in message, message
+
+
 @pytest.mark.parametrize("theory,mach", [("slender", 0.9), ("garrick", 0.5),
                                          ("supersonic", 1.3), ("transonic", 1.0)])
 def test_damping_derivatives_are_analyze_s(cli, theory, mach):

@@ -65,6 +65,8 @@ PARITY = {
     ("response", "w0"): "w0",
     ("response", "neglect-zq-zwdot"): "neglect_zq_zwdot",
     ("response", "neglect-u"): "neglect_u",
+    ("response", "until-s"): "until_s",
+    ("response", "elevator-deg"): "elevator_deg",
     ("response", "csv"): RETURNS,
     ("convert", "from"): "notation",
     ("convert", "to"): "to",
@@ -94,8 +96,6 @@ PARITY = {
 
 # the options Python does not have yet, and why
 GAPS = {
-    ("response", "until-s"): "the span in seconds: give until in τ (t_s = t̂·τ)",
-    ("response", "elevator-deg"): "the [control] step in degrees: give m0",
     ("response", "svg"): "the plot: the returned columns, drawn with matplotlib",
     **{
         ("report", flag): "report CONFIG (a design's report across Mach): the note's study only"

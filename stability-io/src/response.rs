@@ -107,6 +107,167 @@ impl Spec {
     }
 }
 
+/// How a caller writes its options, for the messages of [`Asked::spec`]:
+/// the command line's `--until-s 5`, Python's `until_s=5`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Style {
+    CommandLine,
+    Keywords,
+}
+
+impl Style {
+    /// The option whose keyword is `name` (`until_s`), as the caller
+    /// writes it (`--until-s`, `until_s`).
+    pub fn option(self, name: &str) -> String {
+        match self {
+            Style::CommandLine => format!("--{}", name.replace('_', "-")),
+            Style::Keywords => name.to_string(),
+        }
+    }
+
+    /// The option with its value (`--until-s 5`, `until_s=5`).
+    pub fn given(self, name: &str, value: impl std::fmt::Display) -> String {
+        match self {
+            Style::CommandLine => format!("{} {value}", self.option(name)),
+            Style::Keywords => format!("{name}={value}"),
+        }
+    }
+
+    /// [`Given::span_option`]: the span's option.
+    fn span_option(self, seconds: bool) -> &'static str {
+        match (self, seconds) {
+            (Style::CommandLine, false) => "--until",
+            (Style::CommandLine, true) => "--until-s",
+            (Style::Keywords, false) => "until",
+            (Style::Keywords, true) => "until_s",
+        }
+    }
+}
+
+/// A response as the caller asks for it — the span in τ (`until`) or in
+/// seconds (`until_s`, by the file's τ), a moment step `m0`, a step of the
+/// `[control]` in degrees (`elevator_deg`) or an initial ŵ (`w0`) — made
+/// into a [`Spec`] by [`Asked::spec`], the one place both front ends'
+/// options are checked. The numbers are finite and the span positive (the
+/// caller's parser checks that).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Asked {
+    pub input: Disturbance,
+    pub until: Option<f64>,
+    pub until_s: Option<f64>,
+    pub steps: usize,
+    pub m0: Option<f64>,
+    pub w0: Option<f64>,
+    pub elevator_deg: Option<f64>,
+    pub neglect_zq_zwdot: bool,
+    pub neglect_u: bool,
+    pub style: Style,
+}
+
+impl Asked {
+    /// The library's response, as asked for, of `file` with its
+    /// `[control]`: the span in τ (from seconds by τ), the step from the
+    /// control's deflection; the error names what is missing, in the
+    /// caller's words.
+    pub fn spec(
+        &self,
+        file: &DerivativeFile,
+        control: Option<&Control>,
+    ) -> Result<Spec, InputError> {
+        let st = self.style;
+        let bad = |m: String| InputError::file(&file.path, m);
+        let (until, span) = match (self.until, self.until_s, file.tau()) {
+            (Some(t), ..) => (t, (st.given("until", Num(t)), false)),
+            (None, Some(s), Some(tau)) => {
+                let g = format!("{} (t̂ = {})", st.given("until_s", Num(s)), Num(s / tau));
+                (s / tau, (g, true))
+            }
+            (None, Some(s), None) => {
+                return Err(bad(format!(
+                    "{}: times in seconds need τ = m/(½ρSV): give a physical flight condition (a config's [flight] units, altitude, mass, I_y; or a derivative file's [dimensional] V, rho, S, chord, mass), or {} in units of τ",
+                    st.given("until_s", s),
+                    st.option("until")
+                )));
+            }
+            (None, None, _) => {
+                return Err(bad(format!(
+                    "give the span: {} (units of τ) or {} (seconds)",
+                    st.option("until"),
+                    st.option("until_s")
+                )));
+            }
+        };
+        self.refuse_unused().map_err(|m| {
+            bad(format!(
+                "{m}: it does nothing with {}",
+                st.given("input", self.input.name())
+            ))
+        })?;
+        let (m0, w0) = (self.m0.unwrap_or(1.0), self.w0.unwrap_or(0.01));
+        let input = match (self.input, self.elevator_deg) {
+            (Disturbance::Initial, _) => st.given("w0", Num(w0)),
+            (Disturbance::Step, Some(deg)) => st.given("elevator_deg", Num(deg)),
+            (Disturbance::Step, None) => st.given("m0", Num(m0)),
+        };
+        let [x0, z0, m0] = match (self.elevator_deg, control) {
+            (None, _) => [0.0, 0.0, m0],
+            (Some(_), _) if self.input == Disturbance::Initial => {
+                return Err(bad(format!(
+                    "{} is a step of the control: it needs {}",
+                    st.option("elevator_deg"),
+                    st.given("input", "step")
+                )));
+            }
+            (Some(deg), Some(c)) => control_step(file, c, deg),
+            (Some(deg), None) => {
+                return Err(bad(format!(
+                    "{}: the file has no [control] table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; see delta-stability quartic --help)",
+                    st.given("elevator_deg", deg)
+                )));
+            }
+        };
+        Ok(Spec {
+            input: self.input,
+            until,
+            steps: self.steps,
+            m0,
+            x0,
+            z0,
+            w0,
+            neglect_zq_zwdot: self.neglect_zq_zwdot,
+            neglect_u: self.neglect_u,
+            given: Given {
+                span: span.0,
+                span_option: st.span_option(span.1),
+                steps: st.given("steps", self.steps),
+                input,
+            },
+        })
+    }
+
+    /// An option of the other input, which would be ignored: refused.
+    fn refuse_unused(&self) -> Result<(), String> {
+        let st = self.style;
+        let (unused, of) = match self.input {
+            Disturbance::Step => (self.w0.map(|_| "w0"), "initial"),
+            Disturbance::Initial => (self.m0.map(|_| "m0"), "step"),
+        };
+        let what = |name: &str| match name {
+            "w0" => "the initial ŵ",
+            _ => "the moment step",
+        };
+        match unused {
+            Some(name) => Err(format!(
+                "{} is {} of {}",
+                st.option(name),
+                what(name),
+                st.given("input", of)
+            )),
+            None => Ok(()),
+        }
+    }
+}
+
 /// The step (x₀, z₀, m₀) of a deflection of `degrees` of the file's
 /// `[control]` ([`Control::forcing`]).
 pub fn control_step(file: &DerivativeFile, control: &Control, degrees: f64) -> [f64; 3] {

@@ -13,13 +13,13 @@ use crate::output::{print, write_set};
 use crate::overwrite::Named;
 use stability_core::dynamics::linear::Control;
 use stability_core::dynamics::response::{Computed, Sample};
-use stability_core::numerics::display::{Num, sig};
+use stability_core::numerics::display::sig;
 use stability_io::design_point::read_set;
 use stability_io::diag::InputError;
 use stability_io::files::write_error;
 use stability_io::input::DerivativeFile;
 use stability_io::plot::{Figure, Series};
-use stability_io::response::{Disturbance, Given, Spec, control_step, csv, respond};
+use stability_io::response::{Asked, Disturbance, Spec, Style, csv, respond};
 use std::path::PathBuf;
 
 /// The command's options (validated by clap: `until` positive and finite,
@@ -64,91 +64,29 @@ pub struct Args {
 }
 
 impl Args {
-    /// `step` or `initial`, as the option is written.
-    fn input_name(&self) -> &'static str {
-        match self.input {
-            ResponseInput::Step => "step",
-            ResponseInput::Initial => "initial",
-        }
-    }
-
     /// The library's response, as asked for, of `file` with its
-    /// `[control]`: the span in τ (from seconds by τ), the step from the
-    /// control's deflection; the error names what is missing.
+    /// `[control]` ([`Asked::spec`], the options' checks Python shares).
     pub fn spec(
         &self,
         file: &DerivativeFile,
         control: Option<&Control>,
     ) -> Result<Spec, InputError> {
-        let (until, span, span_option) = match (self.until, self.until_s, file.tau()) {
-            (Some(t), ..) => (t, format!("--until {}", Num(t)), "--until"),
-            (None, Some(s), Some(tau)) => (
-                s / tau,
-                format!("--until-s {} (t̂ = {})", Num(s), Num(s / tau)),
-                "--until-s",
-            ),
-            (None, Some(s), None) => {
-                return Err(InputError::file(
-                    &file.path,
-                    format!(
-                        "--until-s {s}: times in seconds need τ = m/(½ρSV): give a physical flight condition (a config's [flight] units, altitude, mass, I_y; or a derivative file's [dimensional] V, rho, S, chord, mass), or --until in units of τ"
-                    ),
-                ));
-            }
-            (None, None, _) => {
-                let m = "give the span: --until (units of τ) or --until-s (seconds)";
-                return Err(InputError::file(&file.path, m));
-            }
-        };
-        // an option of the other input would be ignored: refused
-        let unused = match self.input {
-            ResponseInput::Step => self.w0.map(|_| "--w0 is the initial ŵ of --input initial"),
-            ResponseInput::Initial => self.m0.map(|_| "--m0 is the moment step of --input step"),
-        };
-        if let Some(m) = unused {
-            let m = format!("{m}: it does nothing with --input {}", self.input_name());
-            return Err(InputError::file(&file.path, m));
-        }
-        let (m0, w0) = (self.m0.unwrap_or(1.0), self.w0.unwrap_or(0.01));
-        let input = match (self.input, self.elevator_deg) {
-            (ResponseInput::Initial, _) => format!("--w0 {}", Num(w0)),
-            (ResponseInput::Step, Some(deg)) => format!("--elevator-deg {}", Num(deg)),
-            (ResponseInput::Step, None) => format!("--m0 {}", Num(m0)),
-        };
-        let [x0, z0, m0] = match (self.elevator_deg, control) {
-            (None, _) => [0.0, 0.0, m0],
-            (Some(_), _) if self.input == ResponseInput::Initial => {
-                let m = "--elevator-deg is a step of the control: it needs --input step";
-                return Err(InputError::file(&file.path, m));
-            }
-            (Some(deg), Some(c)) => control_step(file, c, deg),
-            (Some(deg), None) => {
-                let m = format!(
-                    "--elevator-deg {deg}: the file has no [control] table (C_mdelta, and C_zdelta or C_Ldelta, C_xdelta: per radian; see delta-stability quartic --help)"
-                );
-                return Err(InputError::file(&file.path, m));
-            }
-        };
-        Ok(Spec {
+        Asked {
             input: match self.input {
                 ResponseInput::Step => Disturbance::Step,
                 ResponseInput::Initial => Disturbance::Initial,
             },
-            until,
+            until: self.until,
+            until_s: self.until_s,
             steps: self.steps as usize,
-            m0,
-            x0,
-            z0,
-            w0,
+            m0: self.m0,
+            w0: self.w0,
+            elevator_deg: self.elevator_deg,
             neglect_zq_zwdot: self.neglect_zq_zwdot,
             neglect_u: self.neglect_u,
-            given: Given {
-                span,
-                span_option,
-                steps: format!("--steps {}", self.steps),
-                input,
-            },
-        })
+            style: Style::CommandLine,
+        }
+        .spec(file, control)
     }
 }
 
