@@ -17,6 +17,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde_json::Value;
 use stability_core::design::case::CaseResult;
+use stability_core::dynamics::linear::LinearModel;
 use stability_core::dynamics::modes::Mode as CoreMode;
 use stability_io::design_point::results;
 use stability_io::input::DerivativeFile;
@@ -452,8 +453,8 @@ pub struct Quartic {
     file: DerivativeFile,
     analysis: stability_core::analysis::Analysis,
     json: Value,
-    /// `--state-space`'s JSON ([`engineering::export`]).
-    state_space: Value,
+    /// The linear model `state_space()` exports (on demand).
+    model: LinearModel,
 }
 
 #[pymethods]
@@ -485,7 +486,9 @@ impl Quartic {
     /// and outputs' names and units, `eigenvalues` and the python-control
     /// and MATLAB scripts' text (`python_control`, `matlab`).
     fn state_space<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        engineering::state_space(py, &self.state_space)
+        let (file, a) = (&self.file, &self.analysis);
+        let json = engineering::export(&file.path, "quartic", &self.model, file.tau(), a.roots)?;
+        engineering::state_space(py, &json)
     }
     /// The modes, fastest first.
     #[getter]
@@ -570,13 +573,11 @@ pub fn quartic(
             })
             .map_err(|e| input_error(&e))?;
         let json = json.map_err(|e| PyTypeError::new_err(e.to_string()))?;
-        let state_space =
-            engineering::export(&file.path, "quartic", &model, file.tau(), analysis.roots)?;
         Ok(Quartic {
             file,
             analysis,
             json,
-            state_space,
+            model,
         })
     })
 }
@@ -607,8 +608,9 @@ pub struct Analysis {
     /// τ = m/(½ρSV) (s) at a physical flight condition.
     tau: Option<f64>,
     json: Value,
-    /// `--state-space`'s JSON ([`engineering::export`]).
-    state_space: Value,
+    /// The linear model `state_space()` exports (on demand), and the
+    /// config's path.
+    model: (LinearModel, String),
     /// `--write-derivatives`' file, and the config's path when it is a file.
     derivative_file: (String, Option<PathBuf>),
 }
@@ -643,7 +645,10 @@ impl Analysis {
     /// The linear model of eqs (2)–(3), as `analyze --state-space` exports
     /// it (see `Quartic.state_space`).
     fn state_space<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        engineering::state_space(py, &self.state_space)
+        let (model, path) = &self.model;
+        let roots = self.result.analysis.roots;
+        let json = engineering::export(path, "analyze", model, self.tau, roots)?;
+        engineering::state_space(py, &json)
     }
     /// Writes the design point as a derivative file that `quartic()` and
     /// every command read: `analyze --write-derivatives OUT.toml`'s file
@@ -742,9 +747,6 @@ pub fn analyze(
             .map_err(failure)?;
         let json = json.map_err(|e| PyTypeError::new_err(e.to_string()))?;
         let tau = r.tau();
-        let model = &r.engineering.model;
-        let roots = r.result.analysis.roots;
-        let state_space = engineering::export(&cfg.path, "analyze", model, tau, roots)?;
         let made_by = format!("delta_stability.analyze({})", cfg.path);
         let text = stability_io::design_point::derivative_text(&cfg, &r, &made_by);
         let file = Path::new(&cfg.path);
@@ -753,7 +755,7 @@ pub fn analyze(
             result: r.result,
             tau,
             json,
-            state_space,
+            model: (r.engineering.model, cfg.path.clone()),
             derivative_file: (text, config),
         })
     })
