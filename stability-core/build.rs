@@ -28,6 +28,7 @@ const SOLVERS: [(&str, &[&str]); 2] = [
         &[
             "geometry.rs",
             "aerodynamics/lifting_surface/mach_box/mod.rs",
+            "aerodynamics/lifting_surface/mach_box/across.rs",
             "aerodynamics/lifting_surface/mach_box/direct.rs",
             "aerodynamics/lifting_surface/mach_box/edge.rs",
             "aerodynamics/lifting_surface/mach_box/grid.rs",

@@ -41,8 +41,9 @@ Solves again every Mach box and near-sonic lattice solution the note's study
 needs and writes them to stability-study/data/lifting-surface-solutions.csv,
 with each solver's fingerprint (a hash of its source; the report preloads
 the file into the store of solutions: stability_core::aerodynamics::lifting_surface::
-precomputed): computes the study in this process, every solution solved.
-About a quarter of an hour on 2 cores.
+precomputed): computes the study in this process, every solution solved
+(minutes: `cargo bench -p stability-core --bench design_point` times single
+solves).
 Run it after a change to either solver (the report then refuses the stale
 file and solves afresh), their tables in Mach number or frequency, or the
 study's wings; review the diff.
@@ -119,7 +120,7 @@ fn tables(root: &Path, mode: Tables) -> Result<(), String> {
     eprintln!(
         "computing the note's study ({}) …",
         match mode {
-            Tables::Afresh => "every solution solved: about a quarter of an hour on 2 cores",
+            Tables::Afresh => "every solution solved: minutes",
             _ => "the file's solutions preloaded",
         }
     );

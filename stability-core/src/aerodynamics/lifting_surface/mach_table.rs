@@ -36,8 +36,10 @@
 use super::LiftingSurfaceError;
 use super::derivatives::Extrapolate;
 use super::mach_box::MAX_ROWS;
+use super::solution::Solver;
 use super::store;
-use super::{Solution, Trapezoid};
+use super::{OMEGA_BAR_QUASI_STEADY, Solution, Trapezoid};
+use rayon::prelude::*;
 
 /// The highest Mach number the dispatch takes.
 pub const MACH_RANGE_MAX: f64 = 3.0;
@@ -181,7 +183,8 @@ fn weight(piece: &Piece, first: usize, n: usize, m: usize, beta: f64) -> (f64, f
 }
 
 /// The wing's solution at `mach` (first Mach box Mach number ≤ M ≤ 3) and
-/// ω̄, interpolated in the table, and its derivative in Mach number.
+/// ω̄, interpolated in the table, and its derivative in Mach number (a
+/// steady stencil's nodes solved in parallel).
 pub fn solution(
     wing: &Trapezoid,
     mach: f64,
@@ -195,6 +198,15 @@ pub fn solution(
     let dbeta_dmach = mach / beta;
     let node =
         |m: usize| store::mach_box_interpolated(wing, mach_of(piece.beta(first + m)), omega_bar);
+    // a steady stencil's missing nodes solved in parallel first (into the
+    // store); once stored, a lookup that allocates nothing
+    let steady = omega_bar < OMEGA_BAR_QUASI_STEADY;
+    let held = |m: usize| store::holds(Solver::MachBox, wing, mach_of(piece.beta(first + m)), 0.0);
+    if steady && !(0..n).all(held) {
+        (0..n).into_par_iter().for_each(|m| {
+            let _ = node(m);
+        });
+    }
     let (w, dw) = weight(&piece, first, n, 0, beta);
     let s0 = node(0)?;
     let (mut value, mut slope) = (

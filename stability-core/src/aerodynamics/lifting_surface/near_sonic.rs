@@ -97,7 +97,7 @@ pub fn near_sonic(
 pub(super) fn near_sonic_by(
     mach: f64,
     omega_bar: f64,
-    solve: impl Fn(f64) -> Result<Solution, LiftingSurfaceError>,
+    solve: impl Fn(f64) -> Result<Solution, LiftingSurfaceError> + Sync,
 ) -> Result<Solution, LiftingSurfaceError> {
     if !(mach.is_finite() && (NEAR_SONIC_FROM..=1.0).contains(&mach)) {
         return Err(LiftingSurfaceError::NearSonicMach(mach));
@@ -112,7 +112,9 @@ pub(super) fn near_sonic_by(
         return Err(LiftingSurfaceError::SonicQuasiSteady);
     }
     let [m0, m1, m2] = SONIC_ANCHORS;
-    let (a, b, c) = (solve(m0)?, solve(m1)?, solve(m2)?);
+    // the anchors in parallel
+    let (a, (b, c)) = rayon::join(|| solve(m0), || rayon::join(|| solve(m1), || solve(m2)));
+    let (a, b, c) = (a?, b?, c?);
     let w = quadratic_weights(SONIC_ANCHORS.map(beta2), beta2(mach));
     let s = a.combine(&b, w[0], w[1]).combine(&c, 1.0, w[2]);
     Solution::checked(Solution {

@@ -21,8 +21,10 @@ use super::doublet_line::{DoubletLine, FRAC_1_SQRT_3, GAUSS_BEYOND, LineRule};
 use super::kernel::{self, KernelFlow, Radial};
 use super::lattice::{Box, Grid, Lattice};
 use super::{LiftingSurfaceError, OMEGA_BAR_QUASI_STEADY, Solution, Steady};
+use arrayvec::ArrayVec;
 use nalgebra::{DMatrix, Dyn, LU};
 use num_complex::Complex64;
+use rayon::prelude::*;
 
 impl Lattice {
     /// The wing's response at Mach `mach` (0 ≤ M < 1) and frequency
@@ -85,24 +87,27 @@ impl Lattice {
 
     /// `solve` on every lattice, extrapolated as the spec says (each lattice
     /// solved, finest first; see [`super::Extrapolation`]).
-    fn extrapolated<T: Extrapolate>(
+    fn extrapolated<T: Extrapolate + Send>(
         &self,
-        solve: impl Fn(&Grid) -> Result<T, LiftingSurfaceError>,
+        solve: impl Fn(&Grid) -> Result<T, LiftingSurfaceError> + Sync,
     ) -> Result<T, LiftingSurfaceError> {
+        // the lattices in parallel (each one's assembly too)
         let chordwise = |g: &[Grid]| -> Result<T, LiftingSurfaceError> {
-            let finest = solve(&g[0])?;
             if g.len() == 1 {
-                return Ok(finest);
+                return solve(&g[0]);
             }
-            Ok(finest.richardson(&solve(&g[1])?, &solve(&g[2])?))
+            let (finest, (middle, coarsest)) = rayon::join(
+                || solve(&g[0]),
+                || rayon::join(|| solve(&g[1]), || solve(&g[2])),
+            );
+            Ok(finest?.richardson(&middle?, &coarsest?))
         };
         let grids = self.grids();
         if grids.len() < 6 {
             return chordwise(grids).and_then(T::checked);
         }
-        let fine = chordwise(&grids[..3])?;
-        let coarse = chordwise(&grids[3..])?;
-        T::checked(fine.combine(&coarse, 4.0 / 3.0, -1.0 / 3.0))
+        let (fine, coarse) = rayon::join(|| chordwise(&grids[..3]), || chordwise(&grids[3..]));
+        T::checked(fine?.combine(&coarse?, 4.0 / 3.0, -1.0 / 3.0))
     }
 
     /// The right-hand sides: unit incidence, and unit rate (x − x̄)/c̄.
@@ -221,7 +226,7 @@ impl Lattice {
             grid,
             rule,
             |_| (),
-            |x0, y0, _| kernel::first_order_numerator(x0, y0, beta2),
+            each(|x0, y0, _| kernel::first_order_numerator(x0, y0, beta2)),
             |line, x, y| line.first_order(x, y, beta2, rule),
         );
         d1 / self.wing().mac()
@@ -264,7 +269,7 @@ pub(crate) fn harmonic_matrix(
         grid,
         rule,
         |y0| Radial::new(y0, flow),
-        |x0, _, radial| kernel::increment_at(x0, radial, flow),
+        |x0s, _, radial, out| kernel::increments_at(x0s, radial, flow, out),
         |line, x, y| line.oscillatory(x, y, flow, rule),
     );
     d
@@ -295,65 +300,114 @@ fn strip_rule(ybar: f64, e: f64, rule: LineRule) -> ([(f64, f64, f64); 5], usize
 /// shares the spanwise distances y₀ of the rule's stations, so the
 /// stations' weights and whatever `prep` makes of y₀ (the kernel's
 /// [`Radial`] factors) are computed once per block. On its own strip each
-/// pair takes `own` (the line's graded rule). Equal to the pairwise
+/// pair takes `own` (the line's graded rule). `eval(x₀s, y₀, prepared,
+/// out)` gives the kernel at a receiving box's x₀ to each line of the
+/// sending strip at once (a kernel may take them four at a time;
+/// [`each`] makes one of a pointwise kernel). Equal to the pairwise
 /// assembly with [`DoubletLine`]'s methods (tested); only faster.
 pub(crate) fn add_blocked<T, R>(
     d: &mut DMatrix<T>,
     grid: &Grid,
     rule: LineRule,
-    prep: impl Fn(f64) -> R,
-    eval: impl Fn(f64, f64, &R) -> T,
-    own: impl Fn(&DoubletLine, f64, f64) -> T,
+    prep: impl Fn(f64) -> R + Sync,
+    eval: impl Fn(&[f64], f64, &R, &mut [T]) + Sync,
+    own: impl Fn(&DoubletLine, f64, f64) -> T + Sync,
 ) where
-    T: nalgebra::Scalar + Copy + Default + std::ops::AddAssign + std::ops::Mul<f64, Output = T>,
+    T: nalgebra::Scalar
+        + Copy
+        + Default
+        + Send
+        + std::ops::AddAssign
+        + std::ops::Mul<f64, Output = T>,
 {
     let (boxes, nc) = (&grid.boxes[..], grid.chordwise);
     let n = boxes.len();
-    for rs in (0..n).step_by(nc) {
-        let y = boxes[rs].y_c;
-        for ss in (0..n).step_by(nc) {
+    if n == 0 {
+        return;
+    }
+    // each sending strip's columns (column-major: contiguous) in parallel
+    let strips = d.as_mut_slice().par_chunks_mut(n * nc);
+    strips.enumerate().for_each(|(k, columns)| {
+        let ss = k * nc;
+        // D[(i, j)], j in the strip ss..ss + nc
+        let mut add = |i: usize, j: usize, v: T| columns[(j - ss) * n + i] += v;
+        // one receiving box's x₀ to the strip's lines, their values, sums
+        let (mut xs, mut values, mut sums) = (
+            vec![0.0; nc],
+            vec![T::default(); nc],
+            vec![T::default(); nc],
+        );
+        for rs in (0..n).step_by(nc) {
+            let y = boxes[rs].y_c;
             for mirror in [false, true] {
                 let at = |j: usize| {
                     let l = boxes[j].line;
                     if mirror { l.mirrored() } else { l }
                 };
+                let receiving = boxes.iter().enumerate().skip(rs).take(nc);
                 if rs == ss && !mirror {
-                    for i in rs..rs + nc {
+                    for (i, b) in receiving {
                         for j in ss..ss + nc {
-                            d[(i, j)] += own(&at(j), boxes[i].x_c, y);
+                            add(i, j, own(&at(j), b.x_c, y));
                         }
                     }
                     continue;
                 }
                 let (stations, m) = strip_rule(y - at(ss).eta, at(ss).e, rule);
-                let prepared: Vec<R> = stations[..m].iter().map(|&(_, y0, _)| prep(y0)).collect();
-                for i in rs..rs + nc {
-                    for j in ss..ss + nc {
-                        let line = at(j);
-                        let xbar = boxes[i].x_c - line.xi;
-                        let mut acc = T::default();
-                        for (&(eta, y0, w), p) in stations[..m].iter().zip(&prepared) {
-                            acc += eval(xbar - eta * line.tan_sweep, y0, p) * w;
+                let prepared: ArrayVec<R, 5> =
+                    stations[..m].iter().map(|&(_, y0, _)| prep(y0)).collect();
+                for (i, b) in receiving {
+                    sums.fill(T::default());
+                    for (&(eta, y0, w), p) in stations[..m].iter().zip(&prepared) {
+                        for (j, x) in (ss..).zip(xs.iter_mut()) {
+                            let line = at(j);
+                            *x = (b.x_c - line.xi) - eta * line.tan_sweep;
                         }
-                        d[(i, j)] += acc * line.factor();
+                        eval(&xs, y0, p, &mut values);
+                        for (sum, &v) in sums.iter_mut().zip(&values) {
+                            *sum += v * w;
+                        }
+                    }
+                    for (j, &sum) in (ss..).zip(&sums) {
+                        add(i, j, sum * at(j).factor());
                     }
                 }
             }
+        }
+    });
+}
+
+/// [`add_blocked`]'s `eval` of a pointwise kernel `f(x₀, y₀, prepared)`.
+pub(crate) fn each<R, T>(
+    f: impl Fn(f64, f64, &R) -> T + Sync,
+) -> impl Fn(&[f64], f64, &R, &mut [T]) + Sync {
+    move |xs, y0, p, out| {
+        for (o, &x) in out.iter_mut().zip(xs) {
+            *o = f(x, y0, p);
         }
     }
 }
 
 /// Dᵢⱼ = d(line j) + d(mirror of line j) at collocation point i.
-pub(crate) fn matrix<T>(boxes: &[Box], d: impl Fn(&DoubletLine, f64, f64) -> T) -> DMatrix<T>
+pub(crate) fn matrix<T>(boxes: &[Box], d: impl Fn(&DoubletLine, f64, f64) -> T + Sync) -> DMatrix<T>
 where
-    T: nalgebra::Scalar + std::ops::Add<Output = T>,
+    T: nalgebra::Scalar + Copy + Default + Send + std::ops::Add<Output = T>,
 {
     let n = boxes.len();
-    DMatrix::from_fn(n, n, |i, j| {
-        let (x, y) = (boxes[i].x_c, boxes[i].y_c);
+    let mut out = DMatrix::from_element(n, n, T::default());
+    if n == 0 {
+        return out;
+    }
+    // column by column (contiguous), in parallel
+    let columns = out.as_mut_slice().par_chunks_mut(n);
+    columns.enumerate().for_each(|(j, column)| {
         let line = boxes[j].line;
-        d(&line, x, y) + d(&line.mirrored(), x, y)
-    })
+        for (i, slot) in column.iter_mut().enumerate() {
+            let (x, y) = (boxes[i].x_c, boxes[i].y_c);
+            *slot = d(&line, x, y) + d(&line.mirrored(), x, y);
+        }
+    });
+    out
 }
 
 #[cfg(test)]
@@ -389,7 +443,7 @@ mod tests {
             &l.grids()[0],
             rule,
             |_| (),
-            |x0, y0, _| kernel::first_order_numerator(x0, y0, flow.beta2),
+            each(|x0, y0, _| kernel::first_order_numerator(x0, y0, flow.beta2)),
             |line, x, y| line.first_order(x, y, flow.beta2, rule),
         );
         let pairwise = matrix(l.boxes(), |line, x, y| {

@@ -157,7 +157,7 @@ pub(super) fn first_order(blocks: &[Block], beta2: f64, rule: LineRule) -> DMatr
                 &b.grid,
                 rule,
                 |_| (),
-                |x0, y0, _| kernel::first_order_numerator(x0, y0, beta2),
+                solve::each(|x0, y0, _| kernel::first_order_numerator(x0, y0, beta2)),
                 |line, x, y| line.first_order(x, y, beta2, rule),
             );
             d

@@ -15,11 +15,12 @@
 //! by 8-point Gauss–Legendre. With supersonic trailing edges no point of
 //! the cone lies behind the trailing edge.
 
+use super::across::{SERIES_UP_TO, by_series};
 use super::influence::GAUSS_8;
 use super::influence::Pair;
 use crate::geometry::Trapezoid;
 use num_complex::Complex64;
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
 use wide::f64x4;
 
 /// The flow of one solve: β, σ, ν, and the rate's x̄ and c̄.
@@ -135,21 +136,45 @@ fn section(w: &Trapezoid, f: &Flow, t: f64, x: f64, y: f64, xi: f64) -> Complex6
     }
     let eta = half_width(w, t, xi);
     // η = y − r sin θ ∈ [−η_w, η_w]  ⇔  sin θ ∈ [(y − η_w)/r, (y + η_w)/r]
-    let lo = ((y - eta) / r).clamp(-1.0, 1.0).asin();
-    let hi = ((y + eta) / r).clamp(-1.0, 1.0).asin();
+    let sin_lo = ((y - eta) / r).clamp(-1.0, 1.0);
+    let sin_hi = ((y + eta) / r).clamp(-1.0, 1.0);
+    let (lo, hi) = (arcsine(sin_lo), arcsine(sin_hi));
     if hi <= lo {
         return Complex64::default();
     }
     let z = f.nu * (x - xi);
-    // z cos θ turns by at most z per unit θ
+    let inner = if z <= SERIES_UP_TO {
+        by_series(z, (lo, sin_lo), (hi, sin_hi))
+    } else {
+        by_rule(z, lo, hi)
+    };
+    Complex64::from_polar(inner, -f.sigma * (x - xi))
+}
+
+/// asin, ±π/2 at ±1 without the call: where the cone's chord lies within
+/// the wing's section (most points near the receiving one) both ends are
+/// clamped there.
+fn arcsine(s: f64) -> f64 {
+    if s == 1.0 {
+        FRAC_PI_2
+    } else if s == -1.0 {
+        -FRAC_PI_2
+    } else {
+        s.asin()
+    }
+}
+
+/// ∫_{lo}^{hi} cos(z cos θ) dθ by the 8-point rule on pieces of at most
+/// [`PHASE_PER_PIECE`] radians of z cos θ (which turns by at most z per
+/// unit θ).
+fn by_rule(z: f64, lo: f64, hi: f64) -> f64 {
     let n = pieces(z * (hi - lo));
     let width = (hi - lo) / n as f64;
     let half = 0.5 * width;
-    let inner: f64 = (0..n)
+    (0..n)
         .map(|k| across(z, lo + (k as f64 + 0.5) * width, half))
         .sum::<f64>()
-        * half;
-    Complex64::from_polar(inner, -f.sigma * (x - xi))
+        * half
 }
 
 /// Σ wₖ cos(z cos(mid + half·gₖ)) over the 8-point Gauss–Legendre rule

@@ -16,6 +16,7 @@
 
 use crate::geometry::Trapezoid;
 use arrayvec::ArrayVec;
+use rayon::prelude::*;
 
 /// Where a box's centre lies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -75,12 +76,22 @@ impl Grid {
         let rows = (x_end / dx).ceil() as usize;
         let columns = strips + rows;
         let edges = edges(wing);
-        let mut cells = Vec::with_capacity(rows * columns);
-        for i in 0..rows {
-            for j in 0..columns {
-                cells.push(cell(wing, &edges, dx, dy, i, j));
-            }
-        }
+        let mut cells = vec![
+            Cell {
+                kind: Kind::Undisturbed,
+                fraction: 0.0,
+                x_wing: 0.0,
+            };
+            rows * columns
+        ];
+        cells
+            .par_chunks_mut(columns.max(1))
+            .enumerate()
+            .for_each(|(i, row)| {
+                for (j, c) in row.iter_mut().enumerate() {
+                    *c = cell(wing, &edges, dx, dy, i, j);
+                }
+            });
         Grid {
             dx,
             dy,
@@ -125,8 +136,31 @@ fn cell(w: &Trapezoid, edges: &[(f64, f64, f64); 3], dx: f64, dy: f64, i: usize,
     };
     let (y0, y1) = ((yc - 0.5 * dy).max(0.0), yc + 0.5 * dy);
     let (x0, x1) = (i as f64 * dx, (i as f64 + 1.0) * dx);
+    let corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)];
+    let side = |(a, b, c): (f64, f64, f64), p: (f64, f64)| a * p.0 + b * p.1 - c;
+    // wholly outside one edge, or inside all: no clipping
+    if edges
+        .iter()
+        .any(|&e| corners.iter().all(|&p| side(e, p) >= 0.0))
+    {
+        return Cell {
+            kind,
+            fraction: 0.0,
+            x_wing: xc,
+        };
+    }
+    if edges
+        .iter()
+        .all(|&e| corners.iter().all(|&p| side(e, p) <= 0.0))
+    {
+        return Cell {
+            kind,
+            fraction: 1.0,
+            x_wing: 0.5 * (x0 + x1),
+        };
+    }
     let mut poly: ArrayVec<(f64, f64), 16> = ArrayVec::new();
-    poly.extend([(x0, y0), (x1, y0), (x1, y1), (x0, y1)]);
+    poly.extend(corners);
     for &e in edges {
         poly = clip(&poly, e);
     }

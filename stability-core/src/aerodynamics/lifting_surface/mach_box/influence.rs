@@ -21,9 +21,12 @@
 //! Y ∈ [n − ½, n + ½], inside the cone. Inner integral exactly regular by
 //! Y = X sin θ (dY/√(X² − Y²) = dθ); the outer one split where the cone's
 //! edges enter the box (square-root kinks, removed by X = p + (q − p)u²),
-//! each piece by 8-point Gauss–Legendre. C(m, −n) = C(m, n).
+//! each piece by 8-point Gauss–Legendre; the inner integral by its power
+//! series where ν̂X ≤ 4 ([`super::across`]). C(m, −n) = C(m, n).
 
+use super::across::{SERIES_UP_TO, by_series};
 use num_complex::Complex64;
+use rayon::prelude::*;
 
 /// The two right-hand sides: unit incidence, unit rate (x − x̄)/c̄.
 pub type Pair = [Complex64; 2];
@@ -49,14 +52,15 @@ pub struct Influence {
 }
 
 impl Influence {
-    /// The table for m up to `rows` at σ̂ = σΔx and ν̂ = νΔx.
+    /// The table for m up to `rows` at σ̂ = σΔx and ν̂ = νΔx, its rows in
+    /// parallel.
     pub fn new(rows: usize, sigma_hat: f64, nu_hat: f64) -> Influence {
         let mut c = vec![Complex64::default(); (rows + 1) * (rows + 1)];
-        for m in 0..=rows {
-            for n in 0..=m {
-                c[m * (rows + 1) + n] = coefficient(m, n, sigma_hat, nu_hat);
+        c.par_chunks_mut(rows + 1).enumerate().for_each(|(m, row)| {
+            for (n, slot) in row.iter_mut().enumerate().take(m + 1) {
+                *slot = coefficient(m, n, sigma_hat, nu_hat);
             }
-        }
+        });
         Influence { rows, c }
     }
 
@@ -114,11 +118,17 @@ pub fn coefficient(m: usize, n: usize, sigma_hat: f64, nu_hat: f64) -> Complex64
 
 /// ∫ cos(ν̂√(X² − Y²))/√(X² − Y²) dY over Y ∈ [a, b] ∩ [−X, X], by
 /// Y = X sin θ.
+/// Up to ν̂X = [`SERIES_UP_TO`] by its power series ([`by_series`], exact
+/// to rounding), beyond by one 8-point rule over the θ-range.
 fn inner(x: f64, a: f64, b: f64, nu_hat: f64) -> f64 {
-    let lo = (a.max(-x) / x).clamp(-1.0, 1.0).asin();
-    let hi = (b.min(x) / x).clamp(-1.0, 1.0).asin();
+    let sin_lo = (a.max(-x) / x).clamp(-1.0, 1.0);
+    let sin_hi = (b.min(x) / x).clamp(-1.0, 1.0);
+    let (lo, hi) = (sin_lo.asin(), sin_hi.asin());
     if hi <= lo {
         return 0.0;
+    }
+    if nu_hat * x <= SERIES_UP_TO {
+        return by_series(nu_hat * x, (lo, sin_lo), (hi, sin_hi));
     }
     let (mid, half) = (0.5 * (hi + lo), 0.5 * (hi - lo));
     GAUSS_8

@@ -53,6 +53,7 @@ pub fn march(
         nu_hat: flow.nu * grid.dx,
         c00: table.get(0, 0),
     };
+    let own = own_potentials(wing, grid, flow);
     let mut any_diaphragm = false;
     // each row's columns of non-zero sources (empty: lo > hi)
     let mut spans = vec![(usize::MAX, 0usize); grid.rows];
@@ -70,6 +71,7 @@ pub fn march(
         let earlier = Earlier {
             grid,
             table,
+            own: &own,
             source: &source,
             spans: &spans,
             summed: relaxed.as_ref().map(|_| &summed[..width]),
@@ -79,9 +81,9 @@ pub fn march(
         };
         // independent across the row (earlier rows only): in parallel, in
         // pieces of at least PARALLEL_PIECE boxes, once there are sources to
-        // sum (without, each box costs one quadrature: not worth a thread)
+        // sum (without, each box only copies its own potential)
         let row = &mut ahead[..width];
-        let at = |(j, slot): (usize, &mut [Pair; 2])| *slot = earlier.at(wing, flow, &edge, i, j);
+        let at = |(j, slot): (usize, &mut [Pair; 2])| *slot = earlier.at(wing, &edge, i, j);
         if any_diaphragm {
             row.par_iter_mut()
                 .with_min_len(PARALLEL_PIECE)
@@ -132,10 +134,34 @@ pub fn march(
     phi
 }
 
+/// The wing's own potential ([`wing_potential`]) at the centre of every
+/// wing and diaphragm box the march solves (zero elsewhere): independent
+/// of the march, so all of them at once, in parallel — most of a solve's
+/// work.
+fn own_potentials(wing: &Trapezoid, grid: &Grid, flow: &Flow) -> Vec<Pair> {
+    let zero = [Complex64::default(); 2];
+    (0..grid.cells.len())
+        .into_par_iter()
+        .with_min_len(PARALLEL_PIECE)
+        .map(|k| {
+            let (i, j) = (k / grid.columns, k % grid.columns);
+            let solved = matches!(grid.cells[k].kind, Kind::Wing | Kind::Diaphragm);
+            if solved && j < reach(grid, i) {
+                let (x, y) = grid.centre(i, j);
+                wing_potential(wing, flow, x, y)
+            } else {
+                zero
+            }
+        })
+        .collect()
+}
+
 /// What the boxes of a row see of the rows before it.
 struct Earlier<'a> {
     grid: &'a Grid,
     table: &'a Influence,
+    /// Every box's own potential ([`own_potentials`]).
+    own: &'a [Pair],
     source: &'a [Pair],
     spans: &'a [(usize, usize)],
     /// The earlier rows' sums of this row by [`Relaxed`] (else summed
@@ -151,7 +177,7 @@ impl Earlier<'_> {
     /// [own, before] of box (i, j): the wing's own potential at its centre
     /// and the earlier rows' sources' (zero for boxes neither on the wing
     /// nor in the diaphragm).
-    fn at(&self, wing: &Trapezoid, flow: &Flow, edge: &EdgeBoxes, i: usize, j: usize) -> [Pair; 2] {
+    fn at(&self, wing: &Trapezoid, edge: &EdgeBoxes, i: usize, j: usize) -> [Pair; 2] {
         let zero = [Complex64::default(); 2];
         let g = self.grid;
         if !matches!(
@@ -160,8 +186,7 @@ impl Earlier<'_> {
         ) {
             return [zero; 2];
         }
-        let (x, y) = g.centre(i, j);
-        let own = wing_potential(wing, flow, x, y);
+        let own = self.own[i * g.columns + j];
         if !self.any {
             return [own, zero];
         }

@@ -28,6 +28,8 @@
 //! from the potential itself (lift and moment by parts, [`march`]), not
 //! from differenced potentials.
 //!
+//! - [`across`]: the integral across the Mach cone both quadratures take,
+//!   by its power series;
 //! - [`influence`]: the box influence coefficients of the oscillatory
 //!   kernel e^{−iσX}cos(νR)/R;
 //! - [`grid`]: the characteristic grid, the boxes' classes and fractions;
@@ -66,6 +68,7 @@
 //! at ω̄ = 10⁻⁴ (the quadrature parts divided by ω̄; an O(ω̄²) error of
 //! 10⁻⁸).
 
+pub mod across;
 pub mod direct;
 pub mod edge;
 pub mod grid;
@@ -218,7 +221,7 @@ pub fn solve_by(
     let evaluated = omega_bar.max(QUASI_STEADY_EVALUATION);
     let one = |strips: usize| solve_grid(wing, (mach, beta), evaluated, strips, method);
     let mut s = if spec.richardson {
-        let (a, b) = (one(n), one(n / 2));
+        let (a, b) = rayon::join(|| one(n), || one(n / 2));
         let r = |x: f64, y: f64| (4.0 * x - y) / 3.0;
         Solution {
             lift_alpha: r(a.lift_alpha, b.lift_alpha),
