@@ -563,9 +563,55 @@ fn exchange(a: &Path, b: &Path) -> std::io::Result<()> {
     std::fs::rename(&via, a)
 }
 
+/// How long a computation runs before [`while_running`] shows its spinner.
+pub const SPINNER_AFTER: std::time::Duration = std::time::Duration::from_secs(1);
+
+/// `work()`, and — once it has run [`SPINNER_AFTER`] — a spinner on stderr
+/// that says `what` and the seconds elapsed until it ends (a solve near
+/// M = 1 or a sizing takes seconds; a quick one shows nothing). Drawn only
+/// where stderr is a terminal (indicatif's own test): piped or redirected
+/// output carries none of it.
+pub fn while_running<T>(what: &str, work: impl FnOnce() -> T) -> T {
+    use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+    let (done, ended) = std::sync::mpsc::channel::<()>();
+    std::thread::scope(|scope| {
+        scope.spawn(move || {
+            if ended.recv_timeout(SPINNER_AFTER).is_ok() {
+                return;
+            }
+            let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr())
+                .with_elapsed(SPINNER_AFTER);
+            bar.set_style(
+                ProgressStyle::with_template("{spinner} {msg} ({elapsed})")
+                    .unwrap_or_else(|_| ProgressStyle::default_spinner()),
+            );
+            bar.set_message(what.to_string());
+            bar.enable_steady_tick(std::time::Duration::from_millis(120));
+            let _ = ended.recv();
+            bar.finish_and_clear();
+        });
+        let out = work();
+        let _ = done.send(());
+        out
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The work's value comes back, and the spinner's thread ends with the
+    /// work whether it ended before the spinner showed or after (the work
+    /// here waits for the spinner's delay to pass; nothing is timed).
+    #[test]
+    fn while_running_returns_the_work_and_ends_its_spinner() {
+        assert_eq!(while_running("quick", || 7), 7);
+        let slow = while_running("slow", || {
+            std::thread::sleep(SPINNER_AFTER + std::time::Duration::from_millis(200));
+            "done"
+        });
+        assert_eq!(slow, "done");
+    }
 
     #[test]
     fn writes_whole_files_and_replaces_old_ones() {

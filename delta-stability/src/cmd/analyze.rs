@@ -68,7 +68,9 @@ pub fn run(args: &Args) -> Result<(), Failure> {
         outputs.push(crate::overwrite::Named::new("--write-derivatives", out));
     }
     crate::overwrite::refuse("CONFIG", path, &read, &outputs)?;
-    let res = results(&cfg, options.class())?;
+    let res = crate::output::while_running("solving the design point", || {
+        results(&cfg, options.class())
+    })?;
     for w in &res.result.warnings {
         crate::output::warn(&format!("warning: {w}"));
     }

@@ -63,7 +63,10 @@ pub fn run(o: &Args) -> Result<(), Failure> {
         SurfaceArg::Tailplane => SurfaceKind::Tailplane,
         SurfaceArg::Foreplane => SurfaceKind::Foreplane,
     };
-    let s = size_surface(&cfg.case, kind, &machs, o.max_area).map_err(|e| bad(e.to_string()))?;
+    let sized = crate::output::while_running(&format!("sizing the {}", kind.name()), || {
+        size_surface(&cfg.case, kind, &machs, o.max_area)
+    });
+    let s = sized.map_err(|e| bad(e.to_string()))?;
     // the page too: every number finite
     crate::output::finite(&o.config, &s)?;
     let format = Format::printed(o.json);
