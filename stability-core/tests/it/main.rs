@@ -57,6 +57,7 @@ mod supersonic_oscillatory;
 mod supersonic_oscillatory_cache;
 mod sweep;
 mod trapezoid;
+mod typical_section;
 mod uncertainty;
 mod uncertainty_batch;
 mod uncertainty_quasi;
