@@ -46,7 +46,6 @@ pub fn march(
     let mut wash = vec![zero; n];
     let mut phi = vec![zero; n];
     let mut near = vec![0.0; n];
-    let scale = grid.dy / PI;
     let edge = EdgeBoxes {
         singular: flow.beta < wing.sweep_le.tan(),
         sigma_hat: flow.sigma * grid.dx,
@@ -92,39 +91,13 @@ pub fn march(
         } else {
             row.iter_mut().enumerate().for_each(at);
         }
-        for pass in [Kind::Diaphragm, Kind::Wing] {
-            for (j, &[own, before]) in ahead.iter().enumerate().take(width) {
-                let k = i * grid.columns + j;
-                let cell = grid.cells[k];
-                if cell.kind != pass {
-                    continue;
-                }
-                let (q, s) = edge.weights(wing, grid, i, j, cell.fraction);
-                if edge.singular && edge.is_near(wing, grid, i, j) {
-                    near[k] = q;
-                }
-                if pass == Kind::Diaphragm {
-                    for r in 0..2 {
-                        wash[k][r] = if s.norm() > 0.0 {
-                            -(before[r] + own[r] / scale) / s
-                        } else {
-                            Complex64::default()
-                        };
-                        source[k][r] = wash[k][r] * q;
-                    }
-                } else {
-                    let beside = neighbour_wash(grid, &wash, i, j);
-                    wash[k] = beside;
-                    for r in 0..2 {
-                        source[k][r] = beside[r] * q;
-                        phi[k][r] = own[r] + (before[r] + beside[r] * s) * scale;
-                    }
-                }
-                if source[k].iter().any(|s| s.norm() > 0.0) {
-                    spans[i] = (spans[i].0.min(j), spans[i].1.max(j));
-                }
-            }
-        }
+        let boxes = Boxes {
+            source: &mut source,
+            wash: &mut wash,
+            phi: &mut phi,
+            near: &mut near,
+        };
+        spans[i] = boxes.settle_row(wing, grid, &edge, i, &ahead[..width]);
         any_diaphragm |= spans[i].0 <= spans[i].1;
         if method == Method::Relaxed && any_diaphragm {
             let r = relaxed.get_or_insert_with(|| Relaxed::new(grid, table));
@@ -132,6 +105,67 @@ pub fn march(
         }
     }
     phi
+}
+
+/// The march's unknowns, box by box: each box's source, normalwash,
+/// potential and edge weight q (zero off the edge).
+struct Boxes<'a> {
+    source: &'a mut [Pair],
+    wash: &'a mut [Pair],
+    phi: &'a mut [Pair],
+    near: &'a mut [f64],
+}
+
+impl Boxes<'_> {
+    /// Row i settled from its boxes' [own, before] (`ahead`): first the
+    /// diaphragm's, whose normalwash makes φ vanish at their centres, then
+    /// the wing's, whose potential follows. Returns the row's span of
+    /// columns with a non-zero source (empty: lo > hi).
+    fn settle_row(
+        self,
+        wing: &Trapezoid,
+        grid: &Grid,
+        edge: &EdgeBoxes,
+        i: usize,
+        ahead: &[[Pair; 2]],
+    ) -> (usize, usize) {
+        let scale = grid.dy / PI;
+        let mut span = (usize::MAX, 0usize);
+        for pass in [Kind::Diaphragm, Kind::Wing] {
+            for (j, &[own, before]) in ahead.iter().enumerate() {
+                let k = i * grid.columns + j;
+                let cell = grid.cells[k];
+                if cell.kind != pass {
+                    continue;
+                }
+                let (q, s) = edge.weights(wing, grid, i, j, cell.fraction);
+                if edge.singular && edge.is_near(wing, grid, i, j) {
+                    self.near[k] = q;
+                }
+                if pass == Kind::Diaphragm {
+                    for r in 0..2 {
+                        self.wash[k][r] = if s.norm() > 0.0 {
+                            -(before[r] + own[r] / scale) / s
+                        } else {
+                            Complex64::default()
+                        };
+                        self.source[k][r] = self.wash[k][r] * q;
+                    }
+                } else {
+                    let beside = neighbour_wash(grid, self.wash, i, j);
+                    self.wash[k] = beside;
+                    for r in 0..2 {
+                        self.source[k][r] = beside[r] * q;
+                        self.phi[k][r] = own[r] + (before[r] + beside[r] * s) * scale;
+                    }
+                }
+                if self.source[k].iter().any(|s| s.norm() > 0.0) {
+                    span = (span.0.min(j), span.1.max(j));
+                }
+            }
+        }
+        span
+    }
 }
 
 /// The wing's own potential ([`wing_potential`]) at the centre of every
