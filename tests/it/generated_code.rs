@@ -91,6 +91,13 @@ fn the_reviewed_quartic_code_is_the_compiled_code() {
             bits(r.quartic_coefficients()),
             bits(d.quartic_coefficients())
         );
+        // the generic program (the p-method's complex derivatives) over f64
+        assert_eq!(
+            bits(Reviewed::quartic_coefficients_of(d.quartic_input_values())),
+            bits(Derivatives::quartic_coefficients_of(
+                d.quartic_input_values()
+            ))
+        );
         let (rg, dg) = (r.quartic_gradient(), d.quartic_gradient());
         for (a, b) in rg.into_iter().zip(dg) {
             assert_eq!(bits(a), bits(b));
@@ -121,6 +128,10 @@ fn the_reviewed_dimensional_code_is_the_compiled_code() {
         assert_eq!(
             bits(r.quartic_coefficients()),
             bits(d.quartic_coefficients())
+        );
+        assert_eq!(
+            bits(Reviewed::quartic_coefficients_of(v)),
+            bits(DescriptorSystem::quartic_coefficients_of(v))
         );
         for (a, b) in r.quartic_gradient().into_iter().zip(d.quartic_gradient()) {
             assert_eq!(bits(a), bits(b));

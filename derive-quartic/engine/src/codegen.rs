@@ -470,17 +470,42 @@ fn constant(r: &BigRational) -> TokenStream {
     })
 }
 
+/// How a program's numbers are written: as `f64` literals, or in a generic
+/// function over a scalar `T` as `T::from(…)` (so that the same program
+/// evaluates over complex numbers).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scalar {
+    F64,
+    Generic,
+}
+
+impl Scalar {
+    fn literal(self, lit: TokenStream) -> TokenStream {
+        match self {
+            Scalar::F64 => lit,
+            Scalar::Generic => quote!(T::from(#lit)),
+        }
+    }
+}
+
 /// Tokens of a node.
 pub fn node_tokens(node: &Node) -> TokenStream {
+    node_tokens_in(node, Scalar::F64)
+}
+
+/// Tokens of a node, its numbers written as `scalar` says.
+pub fn node_tokens_in(node: &Node, scalar: Scalar) -> TokenStream {
+    let node_tokens = |n: &Node| node_tokens_in(n, scalar);
     match node {
         Node::Var(name) => {
             let i = ident(name);
             quote!(#i)
         }
-        Node::Const(r) => constant(r),
+        Node::Const(r) => scalar.literal(constant(r)),
         Node::Recip(name) => {
             let i = ident(name);
-            quote!(1.0 / #i)
+            let one = scalar.literal(quote!(1.0));
+            quote!(#one / #i)
         }
         Node::Mul(fs) => {
             let parts: Vec<TokenStream> = fs
@@ -537,9 +562,21 @@ pub fn statements(
         let i = ident(&input.name);
         ts.extend(quote!(let #i = #source.#i;));
     }
+    ts.extend(body_statements(program, Scalar::F64, output_name));
+    ts
+}
+
+/// The `let`s of a program and a `let` per non-zero output, its inputs
+/// already bound, numbers written as `scalar` says.
+pub fn body_statements(
+    program: &Program,
+    scalar: Scalar,
+    output_name: impl Fn(&str) -> String,
+) -> TokenStream {
+    let mut ts = TokenStream::new();
     for (name, node) in &program.lets {
         let i = ident(name);
-        let v = node_tokens(node);
+        let v = node_tokens_in(node, scalar);
         ts.extend(quote!(let #i = #v;));
     }
     for (name, node) in &program.outputs {
@@ -547,7 +584,7 @@ pub fn statements(
             continue;
         }
         let i = ident(&output_name(name));
-        let v = node_tokens(node);
+        let v = node_tokens_in(node, scalar);
         ts.extend(quote!(let #i = #v;));
     }
     ts
@@ -560,9 +597,19 @@ pub fn output_ref(
     index: usize,
     output_name: impl Fn(&str) -> String,
 ) -> TokenStream {
+    output_ref_in(program, index, Scalar::F64, output_name)
+}
+
+/// As [`output_ref`], a zero written as `scalar` says.
+pub fn output_ref_in(
+    program: &Program,
+    index: usize,
+    scalar: Scalar,
+    output_name: impl Fn(&str) -> String,
+) -> TokenStream {
     let (name, node) = &program.outputs[index];
     if matches!(node, Node::Const(c) if c.is_zero()) {
-        quote!(0.0)
+        scalar.literal(quote!(0.0))
     } else {
         let i = ident(&output_name(name));
         quote!(#i)

@@ -60,3 +60,89 @@ fn a_short_period_only_case_by_hand() {
     assert_eq!(dd, 0.0);
     assert_eq!(e, 0.0);
 }
+
+/// `quartic_coefficients_of` over complex inputs (the p-method's air forces
+/// at a complex frequency) against the determinant of eq (4) expanded by
+/// cofactors here, entry by entry as the spec writes its rows, at several
+/// complex λ; and over f64 it is `quartic_coefficients`, bit for bit.
+#[test]
+fn the_generic_coefficients_are_the_determinant_over_complex_numbers() {
+    use num_complex::Complex64 as C;
+    let real = [
+        -0.02, -0.01, 0.006, -0.003, -0.008, -2.3, 0.36, -0.58, 0.004, -0.58, 0.13, -0.43, 0.0125,
+        50.0, 0.08,
+    ];
+    let d = D {
+        x_u: real[0],
+        x_w: real[1],
+        x_wdot: real[2],
+        x_q: real[3],
+        z_u: real[4],
+        z_w: real[5],
+        z_wdot: real[6],
+        z_q: real[7],
+        m_u: real[8],
+        m_w: real[9],
+        m_wdot: real[10],
+        m_q: real[11],
+        c_l: real[12],
+        mu1: real[13],
+        i_b: real[14],
+    };
+    let same = D::quartic_coefficients_of(real).map(f64::to_bits);
+    assert_eq!(same, d.quartic_coefficients().map(f64::to_bits));
+    let mut v = real.map(|x| C::new(x, 0.0));
+    // complex damping derivatives, as at a complex frequency
+    v[6] = C::new(0.36, -0.05);
+    v[7] = C::new(-0.58, 0.02);
+    v[10] = C::new(0.13, 0.03);
+    v[11] = C::new(-0.43, -0.01);
+    let coefficients = D::quartic_coefficients_of(v);
+    let [
+        x_u,
+        x_w,
+        x_wdot,
+        x_q,
+        z_u,
+        z_w,
+        z_wdot,
+        z_q,
+        m_u,
+        m_w,
+        m_wdot,
+        m_q,
+        c_l,
+        mu1,
+        i_b,
+    ] = v;
+    for lam in [C::new(-3.0, 19.0), C::new(-0.01, 0.03), C::new(0.5, 0.0)] {
+        let m = [
+            [
+                lam - x_u,
+                -(x_w + x_wdot / mu1 * lam),
+                c_l - x_q / mu1 * lam,
+            ],
+            [
+                -z_u,
+                -(z_w + (z_wdot / mu1 - 1.0) * lam),
+                -(z_q / mu1 + 1.0) * lam,
+            ],
+            [
+                -mu1 / i_b * m_u,
+                -(mu1 / i_b * m_w + m_wdot / i_b * lam),
+                lam * lam - m_q / i_b * lam,
+            ],
+        ];
+        let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        let poly = coefficients
+            .iter()
+            .fold(C::new(0.0, 0.0), |acc, &c| acc * lam + c);
+        // eq (6) is the determinant itself (its λ⁴ coefficient A = 1 − z_ẇ/μ₁)
+        assert!(
+            (poly / det - 1.0).norm() < 1e-12,
+            "λ = {lam}: {poly} vs {det}"
+        );
+    }
+}

@@ -8,7 +8,7 @@
 //! compiler compiles.
 
 use super::model::QuarticModel;
-use crate::codegen::{self, Program};
+use crate::codegen::{self, Program, Scalar};
 use crate::poly::Poly;
 use crate::render;
 use proc_macro2::{Ident, Literal, Span, TokenStream};
@@ -54,12 +54,14 @@ pub fn quartic_impl(model: &QuarticModel, ty: &Ident) -> TokenStream {
     let names = names(model);
     let values = input_values(model);
     let coefficients = coefficients_fn(model);
+    let coefficients_of = coefficients_of_fn(model);
     let gradient = gradient_fn(model);
     quote! {
         impl #ty {
             #names
             #values
             #coefficients
+            #coefficients_of
             #gradient
         }
     }
@@ -127,6 +129,41 @@ fn coefficients_fn(model: &QuarticModel) -> TokenStream {
         #[inline]
         #[must_use]
         pub fn quartic_coefficients(&self) -> [f64; #n_coef] {
+            #body
+            [#(#refs),*]
+        }
+    }
+}
+
+/// `quartic_coefficients_of`: the same program over any scalar `T` (the
+/// p-method's complex derivatives), the inputs given as an array.
+fn coefficients_of_fn(model: &QuarticModel) -> TokenStream {
+    let n_in = usize_lit(model.inputs().len());
+    let n_coef = usize_lit(model.coefficients.len());
+    let program = coefficient_program(model);
+    let body = codegen::body_statements(&program, Scalar::Generic, coef_var);
+    let refs = (0..model.coefficients.len())
+        .map(|k| codegen::output_ref_in(&program, k, Scalar::Generic, coef_var));
+    let fields = fields(model);
+    quote! {
+        /// [`Self::quartic_coefficients`] over any scalar `T` (complex
+        /// derivatives: the air forces at a complex frequency, the
+        /// p-method), the inputs in the order of [`Self::QUARTIC_INPUTS`].
+        /// The same program, its numbers written `T::from(…)`.
+        #[inline]
+        #[must_use]
+        #[allow(unused_variables)]
+        pub fn quartic_coefficients_of<T>(values: [T; #n_in]) -> [T; #n_coef]
+        where
+            T: Copy
+                + ::core::convert::From<f64>
+                + ::core::ops::Add<Output = T>
+                + ::core::ops::Sub<Output = T>
+                + ::core::ops::Mul<Output = T>
+                + ::core::ops::Div<Output = T>
+                + ::core::ops::Neg<Output = T>,
+        {
+            let [#(#fields),*] = values;
             #body
             [#(#refs),*]
         }
