@@ -9,7 +9,7 @@ use clap::builder::PossibleValue;
 use stability_core::aerodynamics::models::aero::AeroModelName;
 use stability_core::criteria::cap::AirplaneClass;
 use stability_core::data::notation::Notation;
-use stability_core::design::case::DampingModel;
+use stability_core::design::case::{DampingModel, FrequencyMethod};
 use stability_core::numerics::display::Num;
 use stability_io::input::dimensional_notation::DIMENSIONAL;
 use std::sync::OnceLock;
@@ -39,6 +39,28 @@ pub struct ModelArgs {
     /// `[model] datcom`; its `[model.tables]` still win; docs/tables.md).
     #[arg(long, value_name = "FILE")]
     pub datcom: Option<String>,
+    /// How the roots take the air forces' dependence on frequency (for a
+    /// frequency-dependent damping model, `faired` among them): p, the
+    /// default, solves each root with the air forces at its own complex
+    /// frequency (exact); p-k with real derivatives at its own ω̄; k puts the
+    /// derivatives at the short period's ω̄ into the quartic (before).
+    #[arg(long = "frequency-method", value_enum)]
+    pub frequency_method: Option<FrequencyMethodArg>,
+}
+
+/// How the roots take the frequency (`--frequency-method`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrequencyMethodArg(pub FrequencyMethod);
+
+impl ValueEnum for FrequencyMethodArg {
+    fn value_variants<'a>() -> &'a [Self] {
+        static ALL: OnceLock<Vec<FrequencyMethodArg>> = OnceLock::new();
+        ALL.get_or_init(|| FrequencyMethod::ALL.map(FrequencyMethodArg).to_vec())
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(PossibleValue::new(self.0.name()).help(self.0.describe()))
+    }
 }
 
 impl ModelArgs {
@@ -49,6 +71,7 @@ impl ModelArgs {
             aero: self.aero.map(|a| a.0),
             omega_bar: self.omega_bar,
             datcom: self.datcom.clone(),
+            frequency_method: self.frequency_method.map(|m| m.0),
             ..Default::default()
         }
     }

@@ -145,6 +145,7 @@ def sweep(
     derivatives: bool = False,
     datcom: Optional[str] = None,
     iy: Axis = None,
+    frequency_method: Optional[str] = None,
 ) -> SweepResult:
     """Design points over a Cartesian grid of Mach number, leading-edge sweep
     (degrees), c.g. position h, relative density μ₁ and pitching inertia i_B:
@@ -161,9 +162,10 @@ def sweep(
     → the §8 standard and eq (41)'s margin. Points are in grid order, the last
     axis (i_B) varying fastest.
 
-    ``damping``, ``aero``, ``omega_bar`` and ``datcom`` override the config's
-    model as the command line's ``--damping``, ``--aero``, ``--omega-bar`` and
-    ``--datcom`` do (see :func:`analyze`). The aerodynamics are shared by the
+    ``damping``, ``aero``, ``omega_bar``, ``datcom`` and ``frequency_method``
+    override the config's model as the command line's ``--damping``,
+    ``--aero``, ``--omega-bar``, ``--datcom`` and ``--frequency-method`` do
+    (see :func:`analyze`). The aerodynamics are shared by the
     points that differ only in μ₁ and i_B unless the damping theory iterates
     ω̄ (eqs 39–40, the lattice's), the doublet lattice is solved once per
     planform and Mach number, and a point's frequency iteration interpolates in that wing's
@@ -197,6 +199,7 @@ def sweep(
         omega_bar=omega_bar,
         derivatives=derivatives,
         datcom=datcom,
+        frequency_method=frequency_method,
     )
     decode = {k: _np.array(list(v)) for k, v in raw["words"].items()}
     decode["error"] = _np.array(list(raw["messages"]) + [""], dtype=object)
@@ -219,6 +222,7 @@ def uncertainty(
     omega_bar: Optional[float] = None,
     sampling: Optional[str] = None,
     datcom: Optional[str] = None,
+    frequency_method: Optional[str] = None,
 ):  # -> pandas.DataFrame
     """The config's ``[uncertainty]`` study at each Mach number: what
     ``delta-stability uncertainty`` computes (docs/uncertainty.md), by the
@@ -236,8 +240,8 @@ def uncertainty(
     ``sampling="sobol"`` draws Owen-scrambled Sobol′ points (Burley 2020)
     instead of random ones (default: the config's ``sampling``, else
     ``"random"``), an error nearer 1/N than 1/√N. ``damping``, ``aero``,
-    ``omega_bar`` and ``datcom`` override the config's model as for
-    :func:`analyze`.
+    ``omega_bar``, ``datcom`` and ``frequency_method`` override the config's
+    model as for :func:`analyze`.
 
     Returns a ``pandas.DataFrame`` in long form, one row per Mach number and
     quantity: columns ``mach``, ``quantity`` (``p_standard_met``,
@@ -265,6 +269,7 @@ def uncertainty(
         omega_bar=omega_bar,
         sampling=sampling,
         datcom=datcom,
+        frequency_method=frequency_method,
     )
     df = pd.read_csv(io.StringIO(csv))
     df.attrs["results"] = json.loads(text)

@@ -204,10 +204,12 @@ def analyze(
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
     datcom: Optional[str] = None,
+    frequency_method: Optional[str] = None,
 ) -> Analysis:
     """A design point through §5–8: ``delta-stability analyze``, the keywords
     its ``--mach``, ``--cg``, ``--damping``, ``--aero`` (``default`` or
-    ``lifting-surface``), ``--omega-bar`` and ``--datcom``."""
+    ``lifting-surface``), ``--omega-bar``, ``--datcom`` and
+    ``--frequency-method`` (``p``, ``p-k`` or ``k``)."""
 
 def uncertainty_run(
     config: ConfigSource,
@@ -222,6 +224,7 @@ def uncertainty_run(
     omega_bar: Optional[float] = None,
     sampling: Optional[str] = None,
     datcom: Optional[str] = None,
+    frequency_method: Optional[str] = None,
 ) -> tuple[str, str]:
     """The raw result of ``delta_stability.uncertainty``: the JSON of
     ``delta-stability uncertainty --json`` and its long CSV."""
@@ -247,6 +250,7 @@ def sweep_columns(
     omega_bar: Optional[float] = None,
     derivatives: bool = False,
     datcom: Optional[str] = None,
+    frequency_method: Optional[str] = None,
 ) -> dict[str, Any]:
     """The raw columns of ``delta_stability.sweep`` (the library's grid,
     ``stability_core::design::sweep``): ``columns`` (the CSV's names, in order), each
@@ -315,6 +319,7 @@ def size_tail(
     aero: Optional[str] = None,
     omega_bar: Optional[float] = None,
     datcom: Optional[str] = None,
+    frequency_method: Optional[str] = None,
 ) -> dict[str, Any]:
     """The smallest tailplane (or foreplane) of the config's shape meeting the
     §8 standard at every Mach number (``delta-stability size-tail``)."""

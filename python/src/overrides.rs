@@ -1,7 +1,8 @@
 //! The command line's overrides of a config as keyword arguments:
-//! `analyze(…, mach=, cg=, damping=, aero=, omega_bar=, datcom=)` and
-//! `sweep(…, damping=, aero=, omega_bar=, datcom=)` are `--mach`, `--cg`,
-//! `--damping`, `--aero`, `--omega-bar` and `--datcom`, applied by the command line's own
+//! `analyze(…, mach=, cg=, damping=, aero=, omega_bar=, datcom=,
+//! frequency_method=)` and `sweep(…, damping=, aero=, omega_bar=, datcom=,
+//! frequency_method=)` are `--mach`, `--cg`, `--damping`, `--aero`,
+//! `--omega-bar`, `--datcom` and `--frequency-method`, applied by the command line's own
 //! [`stability_io::config::apply`] (each value within its range, the same
 //! messages).
 
@@ -9,7 +10,7 @@ use crate::errors::{argument, failure};
 use crate::inputs;
 use pyo3::prelude::*;
 use stability_core::aerodynamics::models::aero::AeroModelName;
-use stability_core::design::case::DampingModel;
+use stability_core::design::case::{DampingModel, FrequencyMethod};
 use stability_io::config::{Config, Overrides, apply};
 use stability_io::input::suggest::did_you_mean;
 
@@ -25,6 +26,23 @@ pub struct Model<'a> {
     pub omega_bar: Option<f64>,
     /// A DATCOM output's tables (`--datcom FILE`).
     pub datcom: Option<&'a str>,
+    /// `p` (the default), `p-k` or `k` (`--frequency-method`).
+    pub frequency_method: Option<&'a str>,
+}
+
+/// The frequency method named `name`.
+fn frequency_method(name: &str) -> PyResult<FrequencyMethod> {
+    FrequencyMethod::parse(name).ok_or_else(|| {
+        let names = FrequencyMethod::ALL.map(FrequencyMethod::name);
+        argument(
+            "frequency_method",
+            format!(
+                "unknown frequency method `{name}`{}; the methods: {}",
+                did_you_mean(name, names),
+                names.join(", ")
+            ),
+        )
+    })
 }
 
 /// The damping model named `name`.
@@ -66,6 +84,7 @@ pub fn overridden(
         aero: model.aero.map(aero).transpose()?,
         omega_bar: model.omega_bar,
         datcom: model.datcom.map(str::to_string),
+        frequency_method: model.frequency_method.map(frequency_method).transpose()?,
     };
     apply(&mut cfg, &o).map_err(failure)?;
     Ok(cfg)

@@ -713,10 +713,13 @@ impl Analysis {
 /// their exact Mach derivatives for eqs 25–29, M < 1) and `omega_bar`
 /// (--omega-bar: a frequency-dependent theory, eqs 39–40 or the lattice's,
 /// at ω̄ = W instead of iterated to the short period's s/μ₁) and `datcom`
-/// (--datcom: a Digital DATCOM output's tables, docs/tables.md). Raises
+/// (--datcom: a Digital DATCOM output's tables, docs/tables.md), and
+/// `frequency_method` (--frequency-method: `p`, the default, each root with
+/// the air forces at its own complex frequency; `p-k`; `k`, the derivatives
+/// at the short period's ω̄ in the quartic). Raises
 /// InputError with the command line's message.
 #[pyfunction]
-#[pyo3(signature = (config, /, *, mach=None, cg=None, damping=None, aero=None, omega_bar=None, datcom=None, class_=None))]
+#[pyo3(signature = (config, /, *, mach=None, cg=None, damping=None, aero=None, omega_bar=None, datcom=None, frequency_method=None, class_=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn analyze(
     py: Python<'_>,
@@ -727,6 +730,7 @@ pub fn analyze(
     aero: Option<&str>,
     omega_bar: Option<f64>,
     datcom: Option<&str>,
+    frequency_method: Option<&str>,
     class_: Option<&str>,
 ) -> PyResult<Analysis> {
     guard(|| {
@@ -735,6 +739,7 @@ pub fn analyze(
             aero,
             omega_bar,
             datcom,
+            frequency_method,
         };
         let cfg = overridden(config, mach, cg, model)?;
         let class = engineering::class(class_)?;

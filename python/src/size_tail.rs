@@ -25,7 +25,7 @@ use stability_io::diag::InputError;
 /// limit). `damping`, `aero`, `omega_bar`, `datcom` override the config as
 /// in `analyze`.
 #[pyfunction]
-#[pyo3(signature = (config, /, *, mach=None, surface="tailplane", max_area=None, damping=None, aero=None, omega_bar=None, datcom=None))]
+#[pyo3(signature = (config, /, *, mach=None, surface="tailplane", max_area=None, damping=None, aero=None, omega_bar=None, datcom=None, frequency_method=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn size_tail<'py>(
     py: Python<'py>,
@@ -37,6 +37,7 @@ pub fn size_tail<'py>(
     aero: Option<&str>,
     omega_bar: Option<f64>,
     datcom: Option<&str>,
+    frequency_method: Option<&str>,
 ) -> PyResult<Bound<'py, PyAny>> {
     guard(|| {
         let model = Model {
@@ -44,6 +45,7 @@ pub fn size_tail<'py>(
             aero,
             omega_bar,
             datcom,
+            frequency_method,
         };
         let cfg = overridden(config, None, None, model)?;
         let kind = match surface {

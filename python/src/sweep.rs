@@ -273,7 +273,7 @@ pub fn sweep_columns_doc() -> String {
 /// The sweep's columns as a dict of numpy arrays (see [`to_dict`]);
 /// `delta_stability.sweep` decodes the verdicts and errors.
 #[pyfunction]
-#[pyo3(signature = (config, *, mach=None, sweep=None, cg=None, mu1=None, i_b=None, altitude=None, mass=None, i_y=None, damping=None, aero=None, omega_bar=None, derivatives=false, datcom=None))]
+#[pyo3(signature = (config, *, mach=None, sweep=None, cg=None, mu1=None, i_b=None, altitude=None, mass=None, i_y=None, damping=None, aero=None, omega_bar=None, derivatives=false, datcom=None, frequency_method=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep_columns<'py>(
     py: Python<'py>,
@@ -291,6 +291,7 @@ pub fn sweep_columns<'py>(
     omega_bar: Option<f64>,
     derivatives: bool,
     datcom: Option<&str>,
+    frequency_method: Option<&str>,
 ) -> PyResult<Bound<'py, PyDict>> {
     guard(|| {
         let model = Model {
@@ -298,6 +299,7 @@ pub fn sweep_columns<'py>(
             aero,
             omega_bar,
             datcom,
+            frequency_method,
         };
         let cfg = overridden(config, None, None, model)?;
         let axes = AxisArgs {

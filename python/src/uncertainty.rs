@@ -22,7 +22,7 @@ use stability_io::uncertainty::{CSV_HEADER, UncertaintyJson, csv_rows};
 /// JSON (a str, `delta-stability uncertainty --json`'s) and the long CSV
 /// (mach, quantity, value, low, high).
 #[pyfunction]
-#[pyo3(signature = (config, /, *, mach, samples=10_000, seed=1, sobol=false, damping=None, aero=None, omega_bar=None, sampling=None, datcom=None))]
+#[pyo3(signature = (config, /, *, mach, samples=10_000, seed=1, sobol=false, damping=None, aero=None, omega_bar=None, sampling=None, datcom=None, frequency_method=None))]
 #[allow(clippy::too_many_arguments)] // the keywords of the Python function
 pub fn uncertainty_run(
     py: Python<'_>,
@@ -36,6 +36,7 @@ pub fn uncertainty_run(
     omega_bar: Option<f64>,
     sampling: Option<&str>,
     datcom: Option<&str>,
+    frequency_method: Option<&str>,
 ) -> PyResult<(String, String)> {
     guard(|| {
         let machs: Vec<f64> = match mach.extract::<String>() {
@@ -56,6 +57,7 @@ pub fn uncertainty_run(
             aero,
             omega_bar,
             datcom,
+            frequency_method,
         };
         let cfg = overridden(config, None, None, model)?;
         let study = stability_io::config::uncertainty::read(&cfg)

@@ -132,6 +132,19 @@ pub fn derivative_text(cfg: &Config, res: &Results, made_by: &str) -> String {
         ),
         "Every number reads back to the value analyze used: quartic, response, sensitivity and convert read it.".into(),
     ];
+    let mut header = header.to_vec();
+    if let Some(f) = &r.frequency
+        && f.method != stability_core::dynamics::p_method::FrequencyMethod::K
+    {
+        let cycles = |c: Option<f64>| c.map_or("—".to_string(), |x| sig(x, 4));
+        header.push(format!(
+            "Constant derivatives, at the short period's ω̄ = {}: their quartic's roots are the k-method's (short period {} cycles to half amplitude); analyze's are the {} ({} cycles).",
+            sig(f.converged, 6),
+            cycles(f.cycles_to_half_converged),
+            f.method.describe(),
+            cycles(f.cycles_to_half),
+        ));
+    }
     for line in header {
         let _ = writeln!(s, "# {}", comment(&line));
     }

@@ -113,7 +113,7 @@ pub const CONCLUSIONS: &[Conclusion] = &[
         claim: "Inadequately damped at transonic speeds (μ₁ = 50): a tailplane is needed “to correct the serious instability in the range 0.97 < M < 1.5”.",
         assess: transonic_45,
         depends_on: BOTH,
-        when_they_part: "The transonic short period rests on the damping derivatives between M = 0.9 and 1.2, where the note's Figs 19–24 were “plausible guides” faired through data we do not have. Ours come from one linear lifting-surface theory at the short period's own frequency through M = 1 (the lattice, its sonic point, the Mach box; stability_core::aerodynamics::models::faired), which the note could not afford; the note's own fairing of its theories (`faired-theories`) reproduces its verdict. The note's edges 0.97 and 1.5 are read off its lost Fig 33.",
+        when_they_part: "The transonic short period rests on the damping derivatives between M = 0.9 and 1.2, where the note's Figs 19–24 were “plausible guides” faired through data we do not have. Ours come from one linear lifting-surface theory through M = 1 (the lattice, its sonic point, the Mach box; stability_core::aerodynamics::models::faired), each root solved with the air forces at its own complex frequency (docs/exact-root.md), which the note could not afford; the note's own fairing of its theories (`faired-theories`) reproduces its verdict. The note's edges 0.97 and 1.5 are read off its lost Fig 33.",
     },
     Conclusion {
         id: "60-mu1-limit",

@@ -21,6 +21,7 @@ pub mod coefficients;
 pub mod conclusions;
 pub mod damping;
 pub mod lifting_surface;
+pub mod methods;
 pub mod quartic;
 pub mod readme;
 pub mod regimes;

@@ -172,7 +172,7 @@ fn figure_paragraph(f: &Findings, heavy: &Inadequate) -> String {
         .fold(0.0, f64::max);
     let within = (reach * 100.0).ceil() / 100.0;
     format!(
-        "Fig. 33 of the note, recomputed by one linear lifting-surface theory at the short period's own frequency (the default `faired` model: the doublet lattice below M = 1, its sonic extrapolation at M = 1, the Mach box above; joined only across the shaded band, within {within} of M = 1). At μ₁ = 50 the 45° tailless delta (blue) {}{least} — the note finds “serious instability in the range {lo} < M < {hi}” — and {diverges}. At μ₁ = 50 the 60° delta {}; at μ₁ = {HEAVY_MU1} it {}. {}",
+        "Fig. 33 of the note, recomputed by one linear lifting-surface theory, each root solved with the air forces at its own complex frequency (the p-method, docs/exact-root.md; the default `faired` model: the doublet lattice below M = 1, its sonic extrapolation at M = 1, the Mach box above; joined only across the shaded band, within {within} of M = 1). At μ₁ = 50 the 45° tailless delta (blue) {}{least} — the note finds “serious instability in the range {lo} < M < {hi}” — and {diverges}. At μ₁ = 50 the 60° delta {}; at μ₁ = {HEAVY_MU1} it {}. {}",
         against_standard(&inadequate(w45)),
         against_standard(&inadequate(w60)),
         against_standard(heavy),

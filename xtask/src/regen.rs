@@ -221,12 +221,21 @@ fn artefacts(root: &Path) -> Result<Vec<Artefact>, String> {
         part: Part::Between("models"),
         contents: models_table(),
     });
+    // The three frequency methods side by side on the note's wings.
+    out.push(Artefact {
+        path: EXACT_ROOT.into(),
+        part: Part::Between(stability_study::methods::METHODS_MARKER),
+        contents: stability_study::methods::methods_table(),
+    });
     Ok(out)
 }
 
 /// The document whose table of the default model's regimes the model
 /// writes.
 const DAMPING_THEORIES: &str = "docs/damping-theories.md";
+
+/// The document whose table of the frequency methods the study writes.
+const EXACT_ROOT: &str = "docs/exact-root.md";
 
 /// The document whose table of models the registry writes.
 const MODELS: &str = "docs/models.md";

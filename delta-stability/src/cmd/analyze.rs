@@ -13,7 +13,7 @@ use stability_core::aerodynamics::damping::Theory;
 use stability_core::aerodynamics::models::aero::{Coefficients, Origin};
 use stability_core::aerodynamics::models::derivative_tables::Mode;
 use stability_core::criteria::Margins;
-use stability_core::design::case::{CaseResult, DampingModel, FrequencyIteration};
+use stability_core::design::case::{CaseResult, DampingModel, FrequencyIteration, FrequencyMethod};
 use stability_core::design::flight::{FlightPoint, PhysicalFlight};
 use stability_core::numerics::display::sig;
 use stability_io::config::{self, Overrides, overridden};
@@ -349,6 +349,15 @@ fn frequency(s: &mut String, f: &FrequencyIteration) {
         f.cycles_to_half_initial.map_or("—".into(), |x| sig(x, 4)),
         f.cycles_to_half_converged.map_or("—".into(), |x| sig(x, 4)),
     );
+    if f.method != FrequencyMethod::K {
+        let _ = writeln!(
+            s,
+            "  roots by the {}: cycles to ½ {} (the k-method's above: {})",
+            f.method.describe(),
+            f.cycles_to_half.map_or("—".into(), |x| sig(x, 4)),
+            f.cycles_to_half_converged.map_or("—".into(), |x| sig(x, 4)),
+        );
+    }
 }
 
 /// The fifteen quartic inputs, five to a line.

@@ -84,10 +84,23 @@ fn a_config_and_its_derivative_file_give_the_same_roots() {
         ),
     ] {
         let out = dir.path().join("dp.toml");
+        // by default each root is at its own complex frequency (the
+        // p-method), which constant derivatives cannot give: the file says
+        // so, and its quartic's roots are the k-method's
+        let mut default = vec!["analyze", config, "--write-derivatives", path(&out)];
+        default.extend(&extra);
+        run_ok(&default);
+        let said = read(&out);
+        assert!(
+            said.contains("their quartic's roots are the k-method's"),
+            "{said}"
+        );
         let mut args = vec![
             "analyze",
             config,
             "--json",
+            "--frequency-method",
+            "k",
             "--write-derivatives",
             path(&out),
         ];
@@ -103,6 +116,7 @@ fn a_config_and_its_derivative_file_give_the_same_roots() {
         );
         assert!(text.contains(&hash), "{text}");
         assert!(text.contains(&format!("Written by `delta-stability analyze {config}")));
+        assert!(!text.contains("k-method's"), "{text}");
         for flag in &extra {
             assert!(text.lines().take(4).any(|l| l.contains(flag)), "{text}");
         }

@@ -14,7 +14,7 @@ use rand::{RngExt, SeedableRng};
 use rand_distr::{Distribution, Triangular};
 use stability_core::aerodynamics::lifting_surface::Harmonic;
 use stability_core::criteria::Verdict;
-use stability_core::design::case::{Case, DampingModel, evaluate_harmonic};
+use stability_core::design::case::{Case, DampingModel, FrequencyMethod, evaluate_harmonic};
 use stability_core::design::study::report_wing;
 use stability_study::certainty::{Answer, Claim, HEADLINES, SAMPLES, SEED};
 
@@ -77,6 +77,9 @@ fn plain_loop(deg: f64, mu1: f64, mach: f64, n: usize, claim: Claim) -> f64 {
             cl_m2: cl_m2.sample(&mut rng),
             h: cg.sample(&mut rng),
             damping,
+            // the uncertainty study judges each sample by its quartic (the
+            // k-method; docs/exact-root.md, limits)
+            frequency_method: FrequencyMethod::K,
             ..report_wing(deg, mach)
         };
         let r = evaluate_harmonic(&case, Harmonic::Interpolated).unwrap();

@@ -100,6 +100,18 @@ impl DampingDerivatives {
     }
 }
 
+/// The change with ω̄ of a frequency-dependent theory's in-phase incidence
+/// derivatives: Δz_w = z_w(ω̄) − z_w(0) and Δm_w = m_w(ω̄) − m_w(0) about
+/// the same c.g. (the drag's share does not change). The k-method leaves
+/// it out (its z_w and m_w are steady); the p-method's incidence response
+/// at a complex frequency takes it in
+/// ([`crate::dynamics::p_method`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct InPhase {
+    pub dz_w: f64,
+    pub dm_w: f64,
+}
+
 /// Why a theory cannot be applied.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum DampingError {
@@ -142,6 +154,9 @@ pub enum DampingError {
 pub struct Damping {
     pub theory: Theory,
     pub derivatives: DampingDerivatives,
+    /// The in-phase incidence derivatives' change from steady at this ω̄
+    /// (zero for a theory whose in-phase part does not depend on ω̄).
+    pub in_phase: InPhase,
     /// The functions of Fig 18, for the supersonic theory.
     pub fig18: Option<Fig18>,
     /// Validity limits approached (not errors).
@@ -187,6 +202,7 @@ pub fn damping_derivatives_with(
     let mut out = Damping {
         theory,
         derivatives: DampingDerivatives::default(),
+        in_phase: InPhase::default(),
         fig18: None,
         warnings: Warnings::default(),
     };
@@ -448,7 +464,22 @@ fn lifting_surface(
         out.warnings
             .push(Warning::LatticeHighFrequency { omega_bar: w });
     }
-    Ok(solution.derivatives(h, 0.0)?.damping())
+    let at_w = solution.derivatives(h, 0.0)?;
+    // (the sonic solution has no steady limit — it is verified only from
+    // ω̄ = 0.3 — so within the sonic band the in-phase change is not known
+    // and is taken as zero)
+    match mach_range::solution(&shape, mach, 0.0, harmonic) {
+        Ok(steady) if w > 0.0 => {
+            let steady = steady.solution.derivatives(h, 0.0)?;
+            out.in_phase = InPhase {
+                dz_w: at_w.z_w - steady.z_w,
+                dm_w: at_w.m_w - steady.m_w,
+            };
+        }
+        Err(LiftingSurfaceError::SonicFrequency { .. }) | Ok(_) => {}
+        Err(e) => return Err(e.into()),
+    }
+    Ok(at_w.damping())
 }
 
 /// Above this Mach number the default lattice's chordwise boxes are long

@@ -52,6 +52,9 @@ pub enum Warning {
     },
     /// The frequency iteration did not converge.
     FrequencyNotConverged { iterations: usize, last: f64 },
+    /// Roots whose own-frequency root (the p-method) was not found: these
+    /// keep the k-method's.
+    ExactRootNotConverged { kept: usize },
     /// The doublet lattice close to M = 1.
     LatticeNearSonic { mach: f64 },
     /// The doublet lattice at a frequency its boxes barely resolve.
@@ -146,6 +149,12 @@ impl fmt::Display for Warning {
             Warning::FrequencyNotConverged { iterations, last } => write!(
                 f,
                 "the frequency parameter did not converge in {iterations} iterations (last ω̄ = {last:.6})"
+            ),
+            Warning::ExactRootNotConverged { kept } => write!(
+                f,
+                "{kept} root{} (or pair) not found at {} own complex frequency (heavily damped: beyond the p-method's continuation): kept the k-method's (the derivatives at the short period's ω̄)",
+                if kept == 1 { "" } else { "s" },
+                if kept == 1 { "its" } else { "their" },
             ),
             Warning::LatticeNearSonic { .. }
             | Warning::LatticeHighFrequency { .. }

@@ -311,6 +311,21 @@ impl Analysis {
         Ok(Analysis::assemble(d, c, classical))
     }
 
+    /// This analysis with `roots` in place of its quartic's: the roots each
+    /// solved at its own frequency ([`crate::dynamics::p_method`]), whose
+    /// modes and verdict follow from them. The quartic, Routh's test and
+    /// the eq (7) check stay those of the derivatives at the short period's
+    /// ω̄ (the roots are not the quartic's, so they are not checked
+    /// against Routh's test).
+    /// `per_chord` as in [`Characteristic::of`] (μ₁ for roots in 1/τ).
+    pub fn with_roots(mut self, roots: [Complex64; 4], per_chord: f64) -> Analysis {
+        let c = &mut self.characteristic;
+        c.roots = roots;
+        c.modes = Modes::identify(&roots, per_chord);
+        c.verdict = Verdict::of(&c.modes);
+        self
+    }
+
     /// The analysis of `d` around its characteristic `c`.
     fn assemble(d: &Derivatives, c: Characteristic, classical: bool) -> Analysis {
         let classical = if classical { classical_check(&c) } else { None };

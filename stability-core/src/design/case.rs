@@ -26,11 +26,13 @@ use crate::aerodynamics::models::stiffness::{Stiffness, stiffness};
 use crate::aerodynamics::warnings::{Warning, Warnings};
 use crate::analysis::{Analysis, AnalysisError};
 use crate::design::shares::Shares;
+use crate::dynamics::p_method::{self, AtFrequency};
 use crate::geometry::Planform;
 use crate::numerics::invalid::{self, Invalid};
 use serde::Serialize;
 
 pub use crate::aerodynamics::models::damping_model::{DampingModel, UnknownDampingModel};
+pub use crate::dynamics::p_method::FrequencyMethod;
 
 /// A design point.
 #[derive(Debug, Clone, PartialEq)]
@@ -54,6 +56,10 @@ pub struct Case {
     pub omega_bar: Option<f64>,
     /// Iterate ω̄ to consistency (frequency-dependent theories only).
     pub iterate_frequency: bool,
+    /// How the air forces' frequency enters the roots
+    /// ([`FrequencyMethod`]: the exact p-method by default; frequency-dependent
+    /// theories only, with `iterate_frequency`).
+    pub frequency_method: FrequencyMethod,
 }
 
 /// The frequency iteration of a frequency-dependent theory.
@@ -71,6 +77,12 @@ pub struct FrequencyIteration {
     /// m_θ̇ at the initial and converged ω̄.
     pub m_thetadot_initial: f64,
     pub m_thetadot_converged: f64,
+    /// How the roots take the frequency: with `p` or `p-k` the analysis's
+    /// roots are each at its own frequency, and `cycles_to_half_converged`
+    /// above stays the k-method's.
+    pub method: FrequencyMethod,
+    /// Short-period cycles to half amplitude by `method`.
+    pub cycles_to_half: Option<f64>,
 }
 
 /// Everything a design point yields.
@@ -228,13 +240,30 @@ fn evaluate_with(
 ) -> Result<CaseResult, CaseError> {
     case.check()?;
     let point = Point::new(case, classical, harmonic)?;
-    let (run, frequency) = if case.damping.uses_frequency_at(case.mach) {
+    let (mut run, frequency) = if case.damping.uses_frequency_at(case.mach) {
         let (run, f) = point.iterate_frequency()?;
         (run, Some(f))
     } else {
         (point.run(point.omega_bar_estimate())?, None)
     };
+    let mut frequency = frequency;
     let mut warnings = run.damping.warnings.clone();
+    if let Some(f) = frequency.as_mut()
+        && f.converged_ok
+        && case.iterate_frequency
+        && f.method != FrequencyMethod::K
+    {
+        let (analysis, kept) = point.exact_roots(&run, f.method)?;
+        run.analysis = analysis;
+        if kept > 0 {
+            warnings.push(Warning::ExactRootNotConverged { kept });
+        }
+        f.cycles_to_half = run
+            .analysis
+            .modes
+            .short_period()
+            .and_then(|m| m.cycles_to_half);
+    }
     if let Some(f) = &frequency
         && !f.converged_ok
     {
@@ -370,7 +399,38 @@ impl<'a> Point<'a> {
         }
     }
 
-    fn run(&self, omega_bar: Option<f64>) -> Result<Run, CaseError> {
+    /// The aerodynamics at a real ω̄ as the p-method samples them
+    /// ([`crate::dynamics::p_method::AtFrequency`]).
+    fn at_frequency(&self, omega_bar: f64) -> Result<AtFrequency, CaseError> {
+        let (damping, derivatives, _, _) = self.aerodynamics(Some(omega_bar))?;
+        Ok(AtFrequency {
+            derivatives,
+            dz_w: damping.in_phase.dz_w,
+            dm_w: damping.in_phase.dm_w,
+        })
+    }
+
+    /// The analysis of `run` (the k-method's, at the short period's ω̄)
+    /// with its roots each solved at its own frequency by `method`
+    /// ([`p_method::roots`]), and how many kept the quartic's.
+    fn exact_roots(
+        &self,
+        run: &Run,
+        method: FrequencyMethod,
+    ) -> Result<(Analysis, usize), CaseError> {
+        let mut sample = |w: f64| self.at_frequency(w);
+        let mu1 = self.case.mu1;
+        let (roots, kept) = p_method::roots(&mut sample, run.analysis.roots, mu1, method)?;
+        Ok((run.analysis.clone().with_roots(roots, mu1), kept))
+    }
+
+    /// The damping, the derivative set and the tables' and configuration's
+    /// doings at ω̄.
+    #[allow(clippy::type_complexity)]
+    fn aerodynamics(
+        &self,
+        omega_bar: Option<f64>,
+    ) -> Result<(Damping, Derivatives, Vec<TableUse>, Option<Shares>), CaseError> {
         let mut damping = damping_at(self.case, &self.wing, omega_bar, self.harmonic)?;
         let configuration = self.add_configuration(&mut damping, omega_bar)?;
         let computed = self.derivatives(&damping.derivatives);
@@ -386,6 +446,11 @@ impl<'a> Point<'a> {
             m_q: derivatives.m_q,
             m_wdot: derivatives.m_wdot,
         };
+        Ok((damping, derivatives, tables, configuration))
+    }
+
+    fn run(&self, omega_bar: Option<f64>) -> Result<Run, CaseError> {
+        let (damping, derivatives, tables, configuration) = self.aerodynamics(omega_bar)?;
         let analysis = if self.classical {
             Analysis::of(&derivatives)?
         } else {
@@ -436,6 +501,8 @@ impl<'a> Point<'a> {
             cycles_to_half_converged: cycles(&current),
             m_thetadot_initial: first.damping.derivatives.m_thetadot(),
             m_thetadot_converged: current.damping.derivatives.m_thetadot(),
+            method: case.frequency_method,
+            cycles_to_half: cycles(&current),
         };
         Ok((current, f))
     }

@@ -24,6 +24,7 @@ pub fn report_wing(deg: f64, mach: f64) -> Case {
         damping: DampingModel::Faired,
         omega_bar: None,
         iterate_frequency: true,
+        frequency_method: Default::default(),
     }
 }
 

@@ -16,6 +16,7 @@ pub mod damp;
 pub mod linear;
 pub mod mode_shape;
 pub mod modes;
+pub mod p_method;
 pub mod quartic;
 pub mod response;
 pub mod sensitivity;

@@ -7,7 +7,7 @@ use super::stats::{Proportion, Quantiles};
 use crate::aerodynamics::lifting_surface::Harmonic;
 use crate::analysis::Analysis;
 use crate::criteria::{Category, Verdict, phugoid_level, short_period_level};
-use crate::design::case::{Case, DampingModel, evaluate_point_with};
+use crate::design::case::{Case, DampingModel, FrequencyMethod, evaluate_point_with};
 use crate::design::flight::{Air, Altitude, FlightCondition, Mass};
 use crate::numerics::roots::{Complex64, RootsError, solve_quartic};
 use crate::{Derivatives, Quartic};
@@ -353,9 +353,13 @@ impl Study {
         let cases: Vec<Case> = self
             .models
             .iter()
+            // each sample's quartic is solved (many at once): the k-method,
+            // the derivatives at the short period's ω̄, whatever the case's
+            // own method (docs/exact-root.md, limits)
             .map(|&damping| Case {
                 mach,
                 damping,
+                frequency_method: FrequencyMethod::K,
                 ..self.base.clone()
             })
             .collect();

@@ -32,7 +32,7 @@
 use serde_json::Value;
 use stability_core::aerodynamics::damping::Theory;
 use stability_core::analysis::Analysis;
-use stability_core::design::case::{DampingModel, evaluate};
+use stability_core::design::case::{Case, DampingModel, FrequencyMethod, evaluate};
 use stability_core::design::examples::{
     tailless_delta_45, tailless_delta_60, tailless_delta_60_flight,
 };
@@ -42,7 +42,7 @@ use stability_core::design::study::report_wing;
 /// Keys added since the fixtures were recorded (the overall verdict of
 /// issue 20: every root judged; the neutral point and static margin of its
 /// item 6).
-const ADDED: [&str; 6] = [
+const ADDED: [&str; 8] = [
     "modes[].natural_frequency_s",
     "aerodynamics.origin",
     "verdict",
@@ -50,6 +50,10 @@ const ADDED: [&str; 6] = [
     "derivative_tables",
     "criteria.margins.neutral_point",
     "criteria.margins.static_margin_pct",
+    // how the roots took the frequency, and their short period's cycles
+    // (issue 33: the p-method)
+    "damping.frequency.method",
+    "damping.frequency.cycles_to_half",
 ];
 
 fn fixture(name: &str) -> Value {
@@ -156,13 +160,18 @@ fn quartic_json_with_tau() {
 
 #[test]
 fn analyze_json() {
-    let case = report_wing(45.0, 0.7);
+    // the fixtures' roots are the k-method's (recorded before issue 33)
+    let case = Case {
+        frequency_method: FrequencyMethod::K,
+        ..report_wing(45.0, 0.7)
+    };
     let r = evaluate(&case).unwrap();
     // (`mode_shapes`: the command's engineering outputs, `Engineering`'s)
     let want = without(fixture("analyze-delta-45.json"), &["file", "mode_shapes"]);
     assert_same(serde_json::to_value(r.view(&case)).unwrap(), want);
 
     let mut case = report_wing(45.0, 1.0);
+    case.frequency_method = FrequencyMethod::K;
     case.damping = DampingModel::Theory(Theory::TransonicFrequency);
     let r = evaluate(&case).unwrap();
     let want = without(

@@ -47,6 +47,7 @@ mod mach_table;
 mod neutral_point;
 mod no_alloc;
 mod notation;
+mod p_method;
 mod roots_accuracy;
 mod roots_batch;
 mod roots_fuzz;

@@ -9,7 +9,9 @@
 use stability_core::aerodynamics::damping::Theory;
 use stability_core::aerodynamics::lifting_surface::Harmonic;
 use stability_core::aerodynamics::models::aero::{AeroModel, AeroModelName};
-use stability_core::design::case::{Case, DampingModel, evaluate_point, evaluate_point_with};
+use stability_core::design::case::{
+    Case, DampingModel, FrequencyMethod, evaluate_point, evaluate_point_with,
+};
 use stability_core::design::study::report_wing;
 use stability_core::design::sweep::{Axes, PointError, Points, Sweep, SweepError};
 
@@ -158,10 +160,14 @@ fn the_lattice_at_mach_one_is_an_error_at_those_points_only() {
 
 #[test]
 fn the_frequency_iteration_in_a_sweep() {
-    let b = base(
-        DampingModel::Theory(Theory::LiftingSurfaceFrequency),
-        AeroModelName::LiftingSurface,
-    );
+    // the k-method: the short period's ω̄ is the iteration's fixed point
+    let b = Case {
+        frequency_method: FrequencyMethod::K,
+        ..base(
+            DampingModel::Theory(Theory::LiftingSurfaceFrequency),
+            AeroModelName::LiftingSurface,
+        )
+    };
     let axes = Axes {
         mach: vec![0.7],
         mu1: vec![40.0, 200.0],

@@ -25,6 +25,8 @@
 //! omega_bar = 0.3       # lifting-surface: the ω̄ it is evaluated at (default 0, quasi-steady);
 //!                       # the iterated theories and faired: the starting ω̄ (default √(−m_w/(μ₁i_B)))
 //! iterate_frequency = true
+//! frequency_method = "p" # how the roots take the air forces' frequency: "p" (the default: each root
+//!                       # at its own complex frequency, exact), "p-k", or "k" (the derivatives at the short period's ω̄)
 //! datcom = "for006.dat" # optional: a DATCOM output's tables (docs/tables.md)
 //! [model.tables]        # optional: the user's curves instead of the defaults
 //! lift_slope = { mach = [0.5, 0.9, 1.2], value = [3.1, 3.6, 3.4] }
@@ -60,7 +62,7 @@ use stability_core::aerodynamics::damping::DampingError;
 use stability_core::aerodynamics::lifting_surface::LiftingSurfaceError;
 use stability_core::aerodynamics::models::aero::{AeroError, AeroModel, AeroModelName};
 use stability_core::criteria::cap::AirplaneClass;
-use stability_core::design::case::{Case, CaseError, DampingModel};
+use stability_core::design::case::{Case, CaseError, DampingModel, FrequencyMethod};
 use stability_core::geometry::{GeometryError, Planform, Size};
 use stability_core::numerics::display::{Num, sig};
 use std::ops::Range;
@@ -192,6 +194,7 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
         damping: DampingModel::Faired,
         omega_bar: None,
         iterate_frequency: true,
+        frequency_method: Default::default(),
     };
     let (tables, datcom) = match &raw.model {
         Some(m) => {
@@ -373,6 +376,24 @@ fn model(
     }
     if let Some(it) = m.iterate_frequency {
         case.iterate_frequency = it;
+    }
+    if let Some(fm) = &m.frequency_method {
+        r.spans.push(("[model] frequency_method".into(), fm.span()));
+        case.frequency_method = FrequencyMethod::parse(fm.get_ref()).ok_or_else(|| {
+            let names = FrequencyMethod::ALL.map(FrequencyMethod::name);
+            r.err(
+                fm.span(),
+                "[model] frequency_method",
+                format!(
+                    "unknown frequency method `{}`{}; the methods are: {}",
+                    quote(fm.get_ref()),
+                    crate::input::suggest::did_you_mean(fm.get_ref(), names),
+                    FrequencyMethod::ALL
+                        .map(|m| format!("{} ({})", m.name(), m.describe()))
+                        .join("; ")
+                ),
+            )
+        })?;
     }
     let user = match &m.tables {
         Some(t) => {

@@ -10,7 +10,7 @@ use crate::diag::InputError;
 use crate::input::datcom::Datcom;
 use crate::limits;
 use stability_core::aerodynamics::models::aero::{AeroModelName, Source};
-use stability_core::design::case::DampingModel;
+use stability_core::design::case::{DampingModel, FrequencyMethod};
 use stability_core::numerics::display::Num;
 
 /// Values that replace a config's.
@@ -26,6 +26,8 @@ pub struct Overrides {
     /// `--datcom FILE`: a DATCOM output's tables in place of the config's
     /// (`[model] datcom`); the config's own `[model.tables]` still win.
     pub datcom: Option<String>,
+    /// `--frequency-method`: how the roots take the air forces' frequency.
+    pub frequency_method: Option<FrequencyMethod>,
 }
 
 /// The config at `path` with `o` applied (`analyze`'s and `sweep`'s).
@@ -70,6 +72,13 @@ pub fn apply(cfg: &mut Config, o: &Overrides) -> Result<(), Failure> {
         }
         cfg.case.aero = cfg.case.aero.clone().with_name(a);
         cfg.overridden_by("[model] aero", format!("--aero {}", a.name()));
+    }
+    if let Some(m) = o.frequency_method {
+        cfg.case.frequency_method = m;
+        cfg.overridden_by(
+            "[model] frequency_method",
+            format!("--frequency-method {}", m.name()),
+        );
     }
     if let Some(w) = o.omega_bar {
         let w = limits::OMEGA_BAR

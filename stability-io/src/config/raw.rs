@@ -116,6 +116,7 @@ pub struct RawModel {
     pub aero: Option<Spanned<String>>,
     pub omega_bar: Option<Spanned<f64>>,
     pub iterate_frequency: Option<bool>,
+    pub frequency_method: Option<Spanned<String>>,
     /// A DATCOM output (`for006.dat`) whose tables the model takes.
     pub datcom: Option<Spanned<String>>,
     pub tables: Option<Spanned<RawTables>>,

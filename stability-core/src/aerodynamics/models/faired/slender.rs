@@ -49,6 +49,7 @@ pub fn damping(wing: &WingInput, h: f64, m: f64) -> Result<Damping, DampingError
             m_q: blend(a.m_q, b.m_q),
             m_wdot: blend(a.m_wdot, b.m_wdot),
         },
+        in_phase: Default::default(),
         fig18: sup.fig18,
         warnings,
     })

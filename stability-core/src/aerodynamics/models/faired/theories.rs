@@ -225,6 +225,8 @@ fn join(a: &End, b: &End, mach: f64) -> Damping {
     Damping {
         theory: nearer.damping.theory,
         derivatives,
+        // a fairing between theories has no in-phase change of its own
+        in_phase: Default::default(),
         fig18: nearer.damping.fig18,
         warnings,
     }
