@@ -52,8 +52,8 @@ pub enum Warning {
     },
     /// The frequency iteration did not converge.
     FrequencyNotConverged { iterations: usize, last: f64 },
-    /// Roots whose own-frequency root (the p-method) was not found: these
-    /// keep the k-method's.
+    /// Modes whose root at its own frequency (the p-method) was not found:
+    /// these keep the k-method's root.
     ExactRootNotConverged { kept: usize },
     /// The doublet lattice close to M = 1.
     LatticeNearSonic { mach: f64 },
@@ -152,9 +152,10 @@ impl fmt::Display for Warning {
             ),
             Warning::ExactRootNotConverged { kept } => write!(
                 f,
-                "{kept} root{} (or pair) not found at {} own complex frequency (heavily damped: beyond the p-method's continuation): kept the k-method's (the derivatives at the short period's ω̄)",
+                "{kept} mode{} not found at {} own complex frequency (heavily damped, beyond the p-method's continuation, or needing the theory at a frequency it refuses): {} the k-method's root (the derivatives at the short period's ω̄)",
                 if kept == 1 { "" } else { "s" },
                 if kept == 1 { "its" } else { "their" },
+                if kept == 1 { "it keeps" } else { "each keeps" },
             ),
             Warning::LatticeNearSonic { .. }
             | Warning::LatticeHighFrequency { .. }

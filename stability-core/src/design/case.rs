@@ -253,7 +253,7 @@ fn evaluate_with(
         && case.iterate_frequency
         && f.method != FrequencyMethod::K
     {
-        let (analysis, kept) = point.exact_roots(&run, f.method)?;
+        let (analysis, kept) = point.exact_roots(&run, f.method);
         run.analysis = analysis;
         if kept > 0 {
             warnings.push(Warning::ExactRootNotConverged { kept });
@@ -413,15 +413,11 @@ impl<'a> Point<'a> {
     /// The analysis of `run` (the k-method's, at the short period's ω̄)
     /// with its roots each solved at its own frequency by `method`
     /// ([`p_method::roots`]), and how many kept the quartic's.
-    fn exact_roots(
-        &self,
-        run: &Run,
-        method: FrequencyMethod,
-    ) -> Result<(Analysis, usize), CaseError> {
+    fn exact_roots(&self, run: &Run, method: FrequencyMethod) -> (Analysis, usize) {
         let mut sample = |w: f64| self.at_frequency(w);
         let mu1 = self.case.mu1;
-        let (roots, kept) = p_method::roots(&mut sample, run.analysis.roots, mu1, method)?;
-        Ok((run.analysis.clone().with_roots(roots, mu1), kept))
+        let (roots, kept) = p_method::roots(&mut sample, run.analysis.roots, mu1, method);
+        (run.analysis.clone().with_roots(roots, mu1), kept)
     }
 
     /// The damping, the derivative set and the tables' and configuration's

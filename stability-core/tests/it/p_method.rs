@@ -217,3 +217,26 @@ fn the_interpolated_air_forces_give_the_exact_root_of_the_direct_ones() {
         );
     }
 }
+
+/// Where the theory refuses the frequencies a stencil needs — the
+/// lifting surface's sonic solution is verified only from ω̄ = 0.3, and
+/// `lifting-surface-frequency` does not raise ω̄ as `faired` does — the
+/// design point is still evaluated: those modes keep the k-method's roots,
+/// with a warning saying how many (45° delta, M = 1).
+#[test]
+fn a_mode_the_continuation_cannot_reach_keeps_the_k_methods_root() {
+    use stability_core::aerodynamics::damping::Theory;
+    use stability_core::aerodynamics::warnings::Warning;
+    use stability_core::design::study::report_wing;
+    let mut c = report_wing(45.0, 1.0);
+    c.damping = DampingModel::Theory(Theory::LiftingSurfaceFrequency);
+    let p = evaluate(&c).unwrap();
+    c.frequency_method = FrequencyMethod::K;
+    let k = evaluate(&c).unwrap();
+    let kept = p.warnings.iter().find_map(|w| match w {
+        Warning::ExactRootNotConverged { kept } => Some(*kept),
+        _ => None,
+    });
+    assert_eq!(kept, Some(2), "{:?}", p.warnings);
+    assert_eq!(p.analysis.roots, k.analysis.roots);
+}
