@@ -196,6 +196,7 @@ OPTIONS = [
     ("examples/delta-60-physical.toml", {}),
     ("examples/delta-60-physical.toml", {"mach": 1.5, "damping": "faired-slender"}),
     ("examples/delta-60-physical.toml", {"mach": 0.6, "aero": "lifting-surface"}),
+    ("examples/delta-45.toml", {"mach": 1.3, "frequency_method": "p-k"}),
 ]
 
 

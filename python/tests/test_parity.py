@@ -39,6 +39,7 @@ PARITY = {
     ("analyze", "damping"): "damping",
     ("analyze", "aero"): "aero",
     ("analyze", "omega-bar"): "omega_bar",
+    ("analyze", "frequency-method"): "frequency_method",
     ("analyze", "datcom"): "datcom",
     ("analyze", "class"): "class_",
     ("analyze", "json"): ("Analysis", "to_dict"),
@@ -56,6 +57,7 @@ PARITY = {
     ("sweep", "damping"): "damping",
     ("sweep", "aero"): "aero",
     ("sweep", "omega-bar"): "omega_bar",
+    ("sweep", "frequency-method"): "frequency_method",
     ("sweep", "datcom"): "datcom",
     ("sweep", "output"): ("SweepResult", "to_pandas"),
     ("response", "input"): "input",
@@ -79,6 +81,7 @@ PARITY = {
     ("size-tail", "damping"): "damping",
     ("size-tail", "aero"): "aero",
     ("size-tail", "omega-bar"): "omega_bar",
+    ("size-tail", "frequency-method"): "frequency_method",
     ("size-tail", "datcom"): "datcom",
     ("size-tail", "json"): RETURNS,
     ("uncertainty", "mach"): "mach",
@@ -89,6 +92,7 @@ PARITY = {
     ("uncertainty", "damping"): "damping",
     ("uncertainty", "aero"): "aero",
     ("uncertainty", "omega-bar"): "omega_bar",
+    ("uncertainty", "frequency-method"): "frequency_method",
     ("uncertainty", "datcom"): "datcom",
     ("uncertainty", "json"): RETURNS,
     ("uncertainty", "output"): RETURNS,
@@ -99,7 +103,7 @@ GAPS = {
     ("response", "svg"): "the plot: the returned columns, drawn with matplotlib",
     **{
         ("report", flag): "report CONFIG (a design's report across Mach): the note's study only"
-        for flag in ["mach", "class", "damping", "aero", "omega-bar", "datcom"]
+        for flag in ["mach", "class", "damping", "aero", "omega-bar", "datcom", "frequency-method"]
     },
 }
 

@@ -57,9 +57,14 @@ impl Engineering {
         class: Option<AirplaneClass>,
     ) -> Result<Engineering, ResponseError> {
         let model = LinearModel::of_report(d, control)?;
+        // the mode shapes are the model's eigenvectors, so at the roots of
+        // the derivatives' own quartic: where the analysis's roots are each
+        // at its own frequency (the p-method), the k-method's
+        let own = Analysis::without_classical(d).ok();
+        let shaped = own.as_ref().unwrap_or(analysis);
         let Some(tau) = tau else {
             return Ok(Engineering {
-                mode_shapes: ModeShape::all(&model, &analysis.modes),
+                mode_shapes: ModeShape::all(&model, &shaped.modes),
                 model,
                 damp: None,
                 short_period_frequency: None,
@@ -67,12 +72,15 @@ impl Engineering {
             });
         };
         let roots = analysis.roots.map(|z| z / tau);
-        Ok(Engineering::of_model(
-            model.in_seconds(tau),
-            &roots,
-            Some(n_alpha(d.z_w, d.c_l)),
-            class,
-        ))
+        let model = model.in_seconds(tau);
+        let mode_shapes = ModeShape::all(
+            &model,
+            Damp::of_roots(&shaped.roots.map(|z| z / tau)).modes(),
+        );
+        Ok(Engineering {
+            mode_shapes,
+            ..Engineering::of_model(model, &roots, Some(n_alpha(d.z_w, d.c_l)), class)
+        })
     }
 
     /// A model in seconds with its four roots (1/s) and n/α (g/rad) when
