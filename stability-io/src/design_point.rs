@@ -104,6 +104,24 @@ fn comment(s: &str) -> String {
         .collect()
 }
 
+/// Where the design point's roots are each at its own frequency (the
+/// p-method), the header line saying that the file's constant derivatives
+/// give the k-method's roots instead.
+fn constant_derivatives_line(r: &stability_core::design::case::CaseResult) -> Option<String> {
+    let f = r.frequency.as_ref()?;
+    if f.method == stability_core::dynamics::p_method::FrequencyMethod::K {
+        return None;
+    }
+    let cycles = |c: Option<f64>| c.map_or("—".to_string(), |x| sig(x, 4));
+    Some(format!(
+        "Constant derivatives, at the short period's ω̄ = {}: their quartic's roots are the k-method's (short period {} cycles to half amplitude); analyze's are the {} ({} cycles).",
+        sig(f.converged, 6),
+        cycles(f.cycles_to_half_converged),
+        f.method.describe(),
+        cycles(f.cycles_to_half),
+    ))
+}
+
 /// The design point of `cfg` as a derivative file's text (report
 /// notation), with a comment header naming the config (its path, size and
 /// FNV-1a hash), the design point and `made_by` (the command that wrote
@@ -133,18 +151,7 @@ pub fn derivative_text(cfg: &Config, res: &Results, made_by: &str) -> String {
         "Every number reads back to the value analyze used: quartic, response, sensitivity and convert read it.".into(),
     ];
     let mut header = header.to_vec();
-    if let Some(f) = &r.frequency
-        && f.method != stability_core::dynamics::p_method::FrequencyMethod::K
-    {
-        let cycles = |c: Option<f64>| c.map_or("—".to_string(), |x| sig(x, 4));
-        header.push(format!(
-            "Constant derivatives, at the short period's ω̄ = {}: their quartic's roots are the k-method's (short period {} cycles to half amplitude); analyze's are the {} ({} cycles).",
-            sig(f.converged, 6),
-            cycles(f.cycles_to_half_converged),
-            f.method.describe(),
-            cycles(f.cycles_to_half),
-        ));
-    }
+    header.extend(constant_derivatives_line(r));
     for line in header {
         let _ = writeln!(s, "# {}", comment(&line));
     }

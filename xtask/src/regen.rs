@@ -187,6 +187,14 @@ fn artefacts(root: &Path) -> Result<Vec<Artefact>, String> {
         Comment::Html,
         docs::errata_markdown(&quartics, Some(&notation)),
     ));
+    out.extend(study_artefacts()?);
+    Ok(out)
+}
+
+/// The artefacts the study computes: the README's figure and text, the
+/// default model's regimes, the models' table and the frequency methods'.
+fn study_artefacts() -> Result<Vec<Artefact>, String> {
+    let mut out = Vec::new();
     // The README's figure, Fig 33 as the report draws it, and the text
     // under it: its numbers and the note's conclusions as the report judges
     // them.

@@ -225,6 +225,29 @@ pub fn parse(path: &str, text: &str) -> Result<Config, Failure> {
     })
 }
 
+/// `[model] frequency_method`, a frequency method by its name.
+fn frequency_method(
+    r: &mut Reader<'_>,
+    fm: &Spanned<String>,
+) -> Result<FrequencyMethod, InputError> {
+    r.spans.push(("[model] frequency_method".into(), fm.span()));
+    FrequencyMethod::parse(fm.get_ref()).ok_or_else(|| {
+        let names = FrequencyMethod::ALL.map(FrequencyMethod::name);
+        r.err(
+            fm.span(),
+            "[model] frequency_method",
+            format!(
+                "unknown frequency method `{}`{}; the methods are: {}",
+                quote(fm.get_ref()),
+                crate::input::suggest::did_you_mean(fm.get_ref(), names),
+                FrequencyMethod::ALL
+                    .map(|m| format!("{} ({})", m.name(), m.describe()))
+                    .join("; ")
+            ),
+        )
+    })
+}
+
 /// `[aircraft] class`, a MIL-F-8785C class by its name.
 fn class(r: &mut Reader<'_>, a: &raw::RawAircraft) -> Result<Option<AirplaneClass>, InputError> {
     let Some(c) = &a.class else {
@@ -378,22 +401,7 @@ fn model(
         case.iterate_frequency = it;
     }
     if let Some(fm) = &m.frequency_method {
-        r.spans.push(("[model] frequency_method".into(), fm.span()));
-        case.frequency_method = FrequencyMethod::parse(fm.get_ref()).ok_or_else(|| {
-            let names = FrequencyMethod::ALL.map(FrequencyMethod::name);
-            r.err(
-                fm.span(),
-                "[model] frequency_method",
-                format!(
-                    "unknown frequency method `{}`{}; the methods are: {}",
-                    quote(fm.get_ref()),
-                    crate::input::suggest::did_you_mean(fm.get_ref(), names),
-                    FrequencyMethod::ALL
-                        .map(|m| format!("{} ({})", m.name(), m.describe()))
-                        .join("; ")
-                ),
-            )
-        })?;
+        case.frequency_method = frequency_method(r, fm)?;
     }
     let user = match &m.tables {
         Some(t) => {
